@@ -1,0 +1,53 @@
+#pragma once
+/// \file Catalogue of the 2D continuum element types tether knows.
+///
+/// Plain data: node counts, topology, faces and default integration. The shape
+/// functions live in fem/; this table is what the deck reader and the model
+/// checks need.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace tether {
+
+/// Kinematic assumption of a 2D continuum element.
+enum class Family { PlaneStrain, PlaneStress, Axisymmetric };
+
+/// Reference shape of an element (ABAQUS node ordering: corners first,
+/// counter-clockwise, then mid-side nodes starting on edge 1-2).
+enum class Shape { Tri3, Quad4, Tri6, Quad8 };
+
+/// One row of the catalogue.
+struct ElementType {
+  std::string_view name;  ///< ABAQUS name, e.g. "CPE8R"
+  Family family;
+  Shape shape;
+  int n_nodes;
+  bool reduced;           ///< reduced integration (R suffix)
+};
+
+/// Looks up an ABAQUS element name (case-insensitive). Returns nothing for an
+/// unknown name. Reduced-integration 4-node types are listed (so the reader
+/// can refuse them with a clear reason) but flagged by is_supported().
+std::optional<ElementType> find_element_type(std::string_view name);
+
+/// Empty when the type is supported, else the reason it is refused.
+std::string unsupported_reason(const ElementType& type);
+
+/// Number of corner nodes (3 or 4).
+int n_corners(Shape shape);
+
+/// Number of faces (edges) of the 2D shape: 3 or 4.
+int n_faces(Shape shape);
+
+/// Local node numbers (0-based) of face `face` (0-based, S1 = 0): two corner
+/// nodes, then the mid-side node for quadratic shapes (-1 for linear ones).
+/// Order follows the element's counter-clockwise orientation.
+std::array<int, 3> face_nodes(Shape shape, int face);
+
+/// Nodes per face: 2 for linear shapes, 3 for quadratic ones.
+int n_face_nodes(Shape shape);
+
+}  // namespace tether

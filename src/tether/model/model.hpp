@@ -1,0 +1,181 @@
+#pragma once
+/// \file The analysis model as read from a deck: plain data, no algorithms.
+///
+/// Nodes and elements are stored densely and referenced by *index*; the user's
+/// labels (ids) are kept beside them for messages and output. Set, material and
+/// amplitude names are stored upper-case (ABAQUS names are case-insensitive).
+/// Every entry remembers where in the deck it was defined so later checks can
+/// report file:line.
+
+#include <Eigen/Core>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "tether/core/error.hpp"
+#include "tether/model/element_type.hpp"
+
+namespace tether {
+
+/// A continuum element of the mesh.
+struct Element {
+  int id = 0;                ///< user label
+  ElementType type;          ///< from the catalogue
+  std::vector<int> nodes;    ///< node indices (not labels), ABAQUS order
+  int section = -1;          ///< index into Model::sections, -1 until assigned
+  SourceLocation where;
+};
+
+/// An element face (edge in 2D), ABAQUS face id S1..S4 stored 0-based.
+struct ElementFace {
+  int element = 0;  ///< element index
+  int face = 0;     ///< 0 = S1, 1 = S2, ...
+};
+
+/// `*SURFACE`: element faces (TYPE=ELEMENT) or nodes (TYPE=NODE).
+struct Surface {
+  enum class Kind { ElementFaces, Nodes };
+  std::string name;
+  Kind kind = Kind::ElementFaces;
+  std::vector<ElementFace> faces;  ///< for ElementFaces
+  std::vector<int> nodes;          ///< node indices, for Nodes
+  SourceLocation where;
+};
+
+/// `*MATERIAL` with its sub-options. Exactly one of elastic / neo_hooke is set
+/// for a usable solid material.
+struct Material {
+  std::string name;
+  struct Elastic {
+    double young = 0;    ///< E [stress]
+    double poisson = 0;  ///< nu [-], -1 < nu < 0.5
+  };
+  struct NeoHooke {
+    double c10 = 0;  ///< C10 = mu/2 [stress]
+    double d1 = 0;   ///< D1 = 2/K [1/stress]; 0 means incompressible (refused)
+  };
+  std::optional<Elastic> elastic;
+  std::optional<NeoHooke> neo_hooke;
+  std::optional<double> density;  ///< [mass/volume]
+  SourceLocation where;
+};
+
+/// `*SOLID SECTION`.
+struct SolidSection {
+  std::string elset;     ///< element set name (upper case)
+  int material = -1;     ///< index into Model::materials
+  double thickness = 1;  ///< out-of-plane thickness (plane strain/stress); ignored for CAX
+  SourceLocation where;
+};
+
+/// `*AMPLITUDE` (tabular, piecewise linear, constant beyond the ends).
+struct Amplitude {
+  std::string name;
+  bool total_time = false;               ///< TIME=TOTAL TIME (default STEP TIME)
+  std::vector<double> times, values;     ///< strictly increasing times
+  SourceLocation where;
+};
+
+/// One prescribed displacement component: u(node, dof) = value (scaled by the
+/// amplitude, or ramped from the value at the start of the step when there is none).
+struct Prescribed {
+  int node = 0;               ///< node index
+  int dof = 0;                ///< 0 = x (or r), 1 = y (or z)
+  double value = 0;           ///< [length]
+  int amplitude = -1;         ///< index into Model::amplitudes or -1
+  SourceLocation where;
+};
+
+/// `*CLOAD` line: concentrated force on one node component.
+struct ConcentratedLoad {
+  int node = 0;
+  int dof = 0;                ///< 0 or 1
+  double magnitude = 0;       ///< [force]; for CAX: total over 2*pi
+  int amplitude = -1;
+  SourceLocation where;
+};
+
+/// `*DLOAD` / `*DSLOAD` pressure on an element face; positive pushes into the
+/// face. Follows the deformed face under NLGEOM.
+struct PressureLoad {
+  ElementFace face;
+  double magnitude = 0;       ///< [force/area]
+  int amplitude = -1;
+  SourceLocation where;
+};
+
+/// Convergence controls (`*CONTROLS, PARAMETERS=FIELD` and `TIME INCREMENTATION`),
+/// with ABAQUS's defaults.
+struct Controls {
+  double residual_tolerance = 5e-3;     ///< R_n^alpha: |r|_inf <= tol * average force
+  double correction_tolerance = 1e-2;   ///< C_n^alpha: |du|_inf <= tol * largest incremental displacement
+  double zero_force_tolerance = 1e-8;   ///< eps^alpha: average force below this counts as zero
+  int max_iterations = 16;              ///< iterations per attempt before a cut-back (I_A-like)
+  int max_cutbacks = 5;                 ///< consecutive cut-backs before the step is abandoned
+  double cutback_factor = 0.25;         ///< D_f
+  double growth_factor = 1.5;           ///< increase after two easy increments
+  int easy_iterations = 5;              ///< "easy" means converged in at most this many iterations
+  bool line_search = false;             ///< backtracking line search on the residual norm
+};
+
+/// `*NODE PRINT`, `*EL PRINT`, `*NODE FILE`, `*EL FILE` request.
+struct OutputRequest {
+  enum class Kind { NodePrint, ElementPrint, NodeFile, ElementFile };
+  Kind kind = Kind::NodePrint;
+  std::string set;                    ///< NSET/ELSET name (upper case); empty = all
+  std::vector<std::string> variables; ///< U, RF, S, E, ... (upper case)
+  int frequency = 1;                  ///< every n-th increment (0 = none); last always written
+  bool totals = false;                ///< TOTALS=YES/ONLY
+  bool totals_only = false;           ///< TOTALS=ONLY
+  SourceLocation where;
+};
+
+/// `*STEP` ... `*END STEP` with a `*STATIC` procedure.
+struct Step {
+  std::string name;
+  bool nlgeom = false;
+  int max_increments = 100;           ///< INC=
+  double initial_increment = 1;       ///< of the step period
+  double period = 1;                  ///< step time period
+  double min_increment = 0;           ///< 0 = default (1e-5 * period)
+  double max_increment = 0;           ///< 0 = no limit (period)
+  bool direct = false;                ///< fixed increments, no cut-back
+  Controls controls;
+  /// Complete lists in force during this step (OP=MOD/NEW already resolved by
+  /// the reader; model-level *BOUNDARY included).
+  std::vector<Prescribed> boundary;
+  std::vector<ConcentratedLoad> cloads;
+  std::vector<PressureLoad> pressures;
+  std::vector<OutputRequest> outputs;
+  SourceLocation where;
+};
+
+/// The whole model.
+struct Model {
+  std::string heading;
+  std::string deck_path;  ///< path of the main deck
+
+  // --- mesh ---
+  std::vector<int> node_ids;              ///< label of node i
+  std::vector<Eigen::Vector2d> coords;    ///< reference coordinates of node i (x,y) or (r,z)
+  std::unordered_map<int, int> node_index;     ///< label -> index
+  std::vector<Element> elements;
+  std::unordered_map<int, int> element_index;  ///< label -> index
+
+  // --- named things (keys upper case) ---
+  std::map<std::string, std::vector<int>> node_sets;     ///< node indices, sorted, unique
+  std::map<std::string, std::vector<int>> element_sets;  ///< element indices, sorted, unique
+  std::map<std::string, Surface> surfaces;
+  std::vector<Material> materials;
+  std::vector<SolidSection> sections;
+  std::vector<Amplitude> amplitudes;
+
+  std::vector<Step> steps;
+
+  [[nodiscard]] int n_nodes() const { return static_cast<int>(coords.size()); }
+  [[nodiscard]] int n_elements() const { return static_cast<int>(elements.size()); }
+};
+
+}  // namespace tether

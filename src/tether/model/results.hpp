@@ -1,0 +1,48 @@
+#pragma once
+/// \file Results of one converged increment: plain data handed to the writers.
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tether {
+
+/// Symmetric 2D-solid tensor in the order (xx, yy, zz, xy); zz is the
+/// out-of-plane (plane) or hoop (axisymmetric) component.
+using Tensor4 = std::array<double, 4>;
+
+/// Von Mises equivalent of a (xx, yy, zz, xy) tensor (xz = yz = 0).
+double von_mises(const Tensor4& s);
+
+/// Values at one integration point.
+struct PointValues {
+  Eigen::Vector2d x{0, 0};  ///< current position
+  Tensor4 stress{};         ///< Cauchy stress [force/area]
+  Tensor4 strain{};         ///< small strain, or Green-Lagrange strain under NLGEOM; tensor shear
+};
+
+/// Multiplier values owned by one constraint/contact object, for output.
+struct MultiplierValues {
+  std::string owner;               ///< e.g. "EQUATION 3"
+  std::vector<int> nodes;          ///< node indices it acts on (for VTU field data)
+  std::vector<double> value;       ///< lambda (one per multiplier)
+  std::vector<double> constraint;  ///< f(u) (one per multiplier)
+};
+
+/// Everything written for one converged increment.
+struct IncrementResults {
+  int step = 1;             ///< 1-based
+  int increment = 1;        ///< 1-based within the step
+  double step_time = 0;
+  double total_time = 0;
+  int iterations = 0;
+  std::vector<Eigen::Vector2d> displacement;  ///< per node
+  std::vector<Eigen::Vector2d> reaction;      ///< per node: internal minus applied force at constrained dofs
+  std::vector<Tensor4> nodal_stress;          ///< per node: average of extrapolated element values
+  std::vector<Tensor4> nodal_strain;          ///< per node, as above
+  std::vector<std::vector<PointValues>> points;  ///< per element, per integration point
+  std::vector<MultiplierValues> multipliers;
+};
+
+}  // namespace tether
