@@ -46,7 +46,7 @@ struct Surface {
 
 /// `*MATERIAL` with its sub-options. Exactly one of elastic / neo_hooke is set
 /// for a usable solid material.
-struct Material {
+struct MaterialData {
   std::string name;
   struct Elastic {
     double young = 0;    ///< E [stress]
@@ -168,7 +168,7 @@ struct Model {
   std::map<std::string, std::vector<int>> node_sets;     ///< node indices, sorted, unique
   std::map<std::string, std::vector<int>> element_sets;  ///< element indices, sorted, unique
   std::map<std::string, Surface> surfaces;
-  std::vector<Material> materials;
+  std::vector<MaterialData> materials;
   std::vector<SolidSection> sections;
   std::vector<Amplitude> amplitudes;
 
