@@ -1,0 +1,179 @@
+#include "tether/assembly/assembler.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cstdint>
+#include <exception>
+
+namespace tether {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+constexpr int kMaxColours = 64;
+
+}  // namespace
+
+Assembler::Assembler(std::vector<Contribution*> contributions, EquationMap equations)
+    : contributions_(std::move(contributions)), equations_(std::move(equations)) {
+  build_pattern();
+}
+
+void Assembler::set_equations(EquationMap equations) {
+  equations_ = std::move(equations);
+  build_pattern();
+}
+
+bool Assembler::update_connectivity(const EvaluationState& state) {
+  bool changed = false;
+  for (Contribution* c : contributions_) changed = c->update_connectivity(state) || changed;
+  if (changed) build_pattern();
+  return changed;
+}
+
+void Assembler::build_pattern() {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int n = equations_.n_equations();
+  const int n_contrib = static_cast<int>(contributions_.size());
+
+  // 1. Rows per column, with duplicates, then sorted and unique.
+  std::vector<std::int64_t> count(n + 1, 0);
+  for (const Contribution* c : contributions_) {
+    int free = 0;
+    for (int d : c->dofs()) free += equations_.equation(d) >= 0;
+    for (int d : c->dofs()) {
+      const int e = equations_.equation(d);
+      if (e >= 0) count[e + 1] += free;
+    }
+  }
+  for (int j = 0; j < n; ++j) count[j + 1] += count[j];
+  std::vector<int> rows(static_cast<std::size_t>(count[n]));
+  std::vector<std::int64_t> fill(count.begin(), count.end() - 1);
+  for (const Contribution* c : contributions_) {
+    for (int dj : c->dofs()) {
+      const int ej = equations_.equation(dj);
+      if (ej < 0) continue;
+      for (int di : c->dofs()) {
+        const int ei = equations_.equation(di);
+        if (ei >= 0) rows[fill[ej]++] = ei;
+      }
+    }
+  }
+  std::vector<int> outer(n + 1, 0);
+  std::vector<int> inner;
+  inner.reserve(rows.size() / 2);
+  for (int j = 0; j < n; ++j) {
+    auto b = rows.begin() + count[j], e = rows.begin() + count[j + 1];
+    std::sort(b, e);
+    e = std::unique(b, e);
+    inner.insert(inner.end(), b, e);
+    outer[j + 1] = static_cast<int>(inner.size());
+  }
+  rows.clear();
+  rows.shrink_to_fit();
+
+  pattern_ = SparseMatrix(n, n);
+  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
+  std::fill_n(pattern_.valuePtr(), inner.size(), 0.0);
+
+  // 2. Value positions of each contribution's local entries.
+  offsets_.assign(n_contrib + 1, 0);
+  for (int c = 0; c < n_contrib; ++c) {
+    const auto m = contributions_[c]->dofs().size();
+    offsets_[c + 1] = offsets_[c] + m * m;
+  }
+  positions_.assign(offsets_[n_contrib], -1);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (int c = 0; c < n_contrib; ++c) {
+    const auto dofs = contributions_[c]->dofs();
+    const std::size_t m = dofs.size();
+    for (std::size_t b = 0; b < m; ++b) {
+      const int ej = equations_.equation(dofs[b]);
+      if (ej < 0) continue;
+      const int* first = inner.data() + outer[ej];
+      const int* last = inner.data() + outer[ej + 1];
+      for (std::size_t a = 0; a < m; ++a) {
+        const int ei = equations_.equation(dofs[a]);
+        if (ei < 0) continue;
+        positions_[offsets_[c] + b * m + a] = static_cast<int>(std::lower_bound(first, last, ei) - inner.data());
+      }
+    }
+  }
+
+  // 3. Greedy colouring: no two contributions of a colour share a global dof.
+  std::vector<std::uint64_t> used(equations_.n_dofs(), 0);
+  colours_.assign(1, {});
+  std::vector<int> overflow;
+  for (int c = 0; c < n_contrib; ++c) {
+    std::uint64_t mask = 0;
+    for (int d : contributions_[c]->dofs()) mask |= used[d];
+    if (mask == ~std::uint64_t{0}) {
+      overflow.push_back(c);
+      continue;
+    }
+    const int colour = std::countr_one(mask);
+    for (int d : contributions_[c]->dofs()) used[d] |= std::uint64_t{1} << colour;
+    if (colour >= static_cast<int>(colours_.size())) colours_.resize(colour + 1);
+    colours_[colour].push_back(c);
+  }
+  last_colour_serial_ = !overflow.empty();
+  if (last_colour_serial_) colours_.push_back(std::move(overflow));
+  timing_.pattern = seconds_since(t0);
+}
+
+void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, SparseMatrix* tangent) {
+  const auto t0 = std::chrono::steady_clock::now();
+  residual.setZero(equations_.n_dofs());
+  if (tangent) {
+    if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows())
+      *tangent = pattern_;
+    std::fill_n(tangent->valuePtr(), tangent->nonZeros(), 0.0);
+  }
+  double* values = tangent ? tangent->valuePtr() : nullptr;
+  std::exception_ptr failure;
+  std::atomic<bool> failed{false};
+
+  for (std::size_t k = 0; k < colours_.size(); ++k) {
+    const std::vector<int>& colour = colours_[k];
+    const int count = static_cast<int>(colour.size());
+    const bool serial = last_colour_serial_ && k + 1 == colours_.size();
+#pragma omp parallel if (!serial)
+    {
+      LocalSystem local;
+#pragma omp for schedule(dynamic, 64)
+      for (int i = 0; i < count; ++i) {
+        if (failed.load(std::memory_order_relaxed)) continue;
+        const int c = colour[i];
+        const Contribution* contribution = contributions_[c];
+        const auto dofs = contribution->dofs();
+        const auto m = static_cast<Eigen::Index>(dofs.size());
+        try {
+          local.reset(m);
+          contribution->evaluate(state, local, values != nullptr);
+        } catch (...) {
+#pragma omp critical(tether_assembly_failure)
+          if (!failure) failure = std::current_exception();
+          failed = true;
+          continue;
+        }
+        for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
+        if (!values) continue;
+        const int* pos = positions_.data() + offsets_[c];
+        const double* ke = local.tangent.data();  // column-major, like pos
+        for (Eigen::Index e = 0; e < m * m; ++e)
+          if (pos[e] >= 0) values[pos[e]] += ke[e];
+      }
+    }
+    if (failure) std::rethrow_exception(failure);
+  }
+  timing_.evaluate = seconds_since(t0);
+}
+
+}  // namespace tether

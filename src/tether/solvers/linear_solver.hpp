@@ -1,0 +1,53 @@
+#pragma once
+/// \file One small interface in front of the sparse direct solvers.
+///
+/// The assembler produces a square compressed-column matrix over the free
+/// equations. A solver analyses its pattern once (fill-reducing ordering),
+/// factorizes it every Newton iteration and solves. A singular or numerically
+/// singular matrix is reported as a SolverError naming the equation whose
+/// pivot vanished, so the caller can name the node and dof.
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string>
+
+namespace tether {
+
+/// Global sparse matrix type: column-major, 32-bit indices (as UMFPACK's di_ routines).
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+/// Which factorization to use.
+enum class SolverKind {
+  Auto,      ///< CHOLMOD for symmetric systems (falls back to UMFPACK if not positive definite), UMFPACK otherwise
+  Umfpack,   ///< SuiteSparse UMFPACK: unsymmetric and symmetric-indefinite (saddle-point) systems
+  Cholmod,   ///< SuiteSparse CHOLMOD supernodal Cholesky: symmetric positive definite only
+  SparseLU,  ///< Eigen's SparseLU with COLAMD: fallback without SuiteSparse
+};
+
+/// Parses "auto", "umfpack", "cholmod", "sparselu" (case-insensitive); throws std::invalid_argument.
+SolverKind parse_solver_kind(const std::string& name);
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+
+  /// Symbolic analysis (ordering) of the pattern of `a`; call again when the pattern changes.
+  virtual void analyze(const SparseMatrix& a) = 0;
+
+  /// Numeric factorization of `a` (same pattern as analysed). `symmetric` is a
+  /// hint that `a` is symmetric (lets Auto pick Cholesky). Throws SolverError
+  /// for a singular matrix, naming the equation where a pivot vanished.
+  virtual void factorize(const SparseMatrix& a, bool symmetric) = 0;
+
+  /// Solves a x = b with the last factorization.
+  virtual void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+
+  /// Name of the factorization last used, e.g. "UMFPACK" (for logs).
+  [[nodiscard]] virtual std::string name() const = 0;
+};
+
+/// Creates a solver of the given kind.
+std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind = SolverKind::Auto);
+
+}  // namespace tether

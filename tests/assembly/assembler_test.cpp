@@ -1,0 +1,72 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "tether/assembly/assembler.hpp"
+
+using namespace tether;
+
+namespace {
+
+/// Linear spring of stiffness k between two scalar unknowns.
+class Spring final : public Contribution {
+ public:
+  Spring(int a, int b, double k) : dofs_{a, b}, k_(k) {}
+  std::span<const int> dofs() const override { return dofs_; }
+  void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override {
+    const double f = k_ * (s.u[dofs_[0]] - s.u[dofs_[1]]);
+    out.residual << f, -f;
+    if (need_tangent) out.tangent << k_, -k_, -k_, k_;
+  }
+  std::string describe() const override { return "spring"; }
+
+ private:
+  std::vector<int> dofs_;
+  double k_;
+};
+
+}  // namespace
+
+TEST(Assembler, MatchesDenseAssemblyOfSpringChain) {
+  const int n = 50;
+  std::vector<Spring> springs;
+  springs.reserve(n - 1);
+  for (int i = 0; i + 1 < n; ++i) springs.emplace_back(i, i + 1, 1.0 + i);
+  std::vector<Contribution*> list;
+  for (auto& s : springs) list.push_back(&s);
+  std::vector<bool> prescribed(n, false);
+  prescribed[0] = true;
+  Assembler assembler(list, EquationMap(prescribed));
+  EXPECT_LE(assembler.n_colours(), 2);
+
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(n, 0.0, 1.0).array().square();
+  EvaluationState state{u, u};
+  Eigen::VectorXd r;
+  SparseMatrix k;
+  assembler.assemble(state, r, &k);
+
+  Eigen::MatrixXd kd = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd rd = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i + 1 < n; ++i) {
+    const double ki = 1.0 + i, f = ki * (u[i] - u[i + 1]);
+    rd[i] += f;
+    rd[i + 1] -= f;
+    kd(i, i) += ki, kd(i + 1, i + 1) += ki, kd(i, i + 1) -= ki, kd(i + 1, i) -= ki;
+  }
+  EXPECT_LT((r - rd).norm(), 1e-12);
+  EXPECT_LT((Eigen::MatrixXd(k) - kd.bottomRightCorner(n - 1, n - 1)).norm(), 1e-12);
+}
+
+TEST(Assembler, PropagatesContributionFailure) {
+  class Broken final : public Contribution {
+   public:
+    std::span<const int> dofs() const override { return dofs_; }
+    void evaluate(const EvaluationState&, LocalSystem&, bool) const override { throw std::runtime_error("boom"); }
+    std::string describe() const override { return "broken"; }
+    std::vector<int> dofs_{0};
+  } broken;
+  Assembler assembler({&broken}, EquationMap(std::vector<bool>(1, false)));
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(1), r;
+  SparseMatrix k;
+  EXPECT_THROW(assembler.assemble(EvaluationState{u, u}, r, &k), std::runtime_error);
+}

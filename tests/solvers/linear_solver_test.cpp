@@ -1,0 +1,89 @@
+#include <gtest/gtest.h>
+
+#include "tether/core/error.hpp"
+#include "tether/solvers/linear_solver.hpp"
+
+using namespace tether;
+
+namespace {
+
+/// 1D Laplacian (SPD) of size n, optionally with a saddle-point row fixing u_0 - u_{n-1} = 0.
+SparseMatrix laplacian(int n, double anchor) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 2.0);
+    if (i + 1 < n) t.emplace_back(i, i + 1, -1.0), t.emplace_back(i + 1, i, -1.0);
+  }
+  t.emplace_back(0, 0, anchor - 1.0);  // anchor = 1 keeps it SPD; anchor = 0 makes it singular
+  t.emplace_back(n - 1, n - 1, -1.0);
+  SparseMatrix a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  a.makeCompressed();
+  return a;
+}
+
+SparseMatrix saddle_point() {
+  // [[2,-1, 1],[-1, 2, -1],[1,-1, 0]]: indefinite, regular
+  SparseMatrix a(3, 3);
+  std::vector<Eigen::Triplet<double>> t{{0, 0, 2}, {0, 1, -1}, {1, 0, -1}, {1, 1, 2}, {0, 2, 1}, {2, 0, 1}, {1, 2, -1}, {2, 1, -1}};
+  a.setFromTriplets(t.begin(), t.end());
+  a.makeCompressed();
+  return a;
+}
+
+}  // namespace
+
+class EverySolver : public ::testing::TestWithParam<SolverKind> {};
+
+TEST_P(EverySolver, SolvesSpdSystem) {
+  const SparseMatrix a = laplacian(200, 1.0);
+  Eigen::VectorXd x_exact = Eigen::VectorXd::LinSpaced(200, -1, 3), x;
+  const Eigen::VectorXd b = a * x_exact;
+  auto solver = make_linear_solver(GetParam());
+  solver->analyze(a);
+  solver->factorize(a, true);
+  solver->solve(b, x);
+  EXPECT_LT((x - x_exact).norm() / x_exact.norm(), 1e-12) << solver->name();
+}
+
+TEST_P(EverySolver, ReportsSingularMatrixWithEquation) {
+  const SparseMatrix a = laplacian(50, 0.0);  // pure Neumann: rigid mode
+  auto solver = make_linear_solver(GetParam());
+  solver->analyze(a);
+  try {
+    solver->factorize(a, true);
+    FAIL() << "singular matrix accepted by " << solver->name();
+  } catch (const SolverError& e) {
+    EXPECT_GE(e.equation(), 0) << e.what();
+    EXPECT_LT(e.equation(), 50);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, EverySolver,
+                         ::testing::Values(SolverKind::Auto, SolverKind::Umfpack, SolverKind::Cholmod, SolverKind::SparseLU));
+
+TEST(LinearSolver, AutoAndUmfpackSolveSaddlePoint) {
+  const SparseMatrix a = saddle_point();
+  const Eigen::Vector3d x_exact(1, 2, 3);
+  const Eigen::VectorXd b = a * x_exact;
+  for (auto kind : {SolverKind::Auto, SolverKind::Umfpack, SolverKind::SparseLU}) {
+    auto solver = make_linear_solver(kind);
+    solver->analyze(a);
+    solver->factorize(a, true);
+    Eigen::VectorXd x;
+    solver->solve(b, x);
+    EXPECT_LT((x - x_exact).norm(), 1e-12) << solver->name();
+  }
+}
+
+TEST(LinearSolver, CholmodRefusesIndefinite) {
+  const SparseMatrix a = saddle_point();
+  auto solver = make_linear_solver(SolverKind::Cholmod);
+  solver->analyze(a);
+  EXPECT_THROW(solver->factorize(a, true), SolverError);
+}
+
+TEST(LinearSolver, ParsesNames) {
+  EXPECT_EQ(parse_solver_kind("UMFPACK"), SolverKind::Umfpack);
+  EXPECT_THROW(parse_solver_kind("mumps"), std::invalid_argument);
+}
