@@ -18,17 +18,13 @@ void SparseLuSolver::factorize(const SparseMatrix& a, bool /*symmetric*/) {
     // SparseLU reports "THE MATRIX IS STRUCTURALLY SINGULAR ... COLUMN k" (1-based, permuted).
     int column = -1;
     const std::string msg = lu_.lastErrorMessage();
-    const auto pos = msg.find("COLUMN");
+    const auto pos = msg.find_last_of("0123456789");
     if (pos != std::string::npos) {
-      try {
-        const int k = std::stoi(msg.substr(pos + 6)) - 1;
-        const auto& q = lu_.colsPermutation().indices();
-        if (k >= 0 && k < q.size()) {
-          for (int j = 0; j < q.size(); ++j)
-            if (q[j] == k) column = j;
-        }
-      } catch (...) {
-      }
+      const auto start = msg.find_last_not_of("0123456789", pos) + 1;
+      const int k = std::stoi(msg.substr(start, pos - start + 1)) - 1;  // 1-based, permuted
+      const auto& q = lu_.colsPermutation().indices();
+      for (int j = 0; j < q.size(); ++j)
+        if (q[j] == k) column = j;
     }
     throw SolverError("the stiffness matrix is singular (SparseLU: " + msg + ")", column);
   }
