@@ -1,0 +1,74 @@
+#pragma once
+/// \file The one object the analysis talks to for output: ParaView files,
+/// the `.dat` report and the `.sta` status file of a job.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tether/model/model.hpp"
+#include "tether/model/results.hpp"
+#include "tether/output/dat_writer.hpp"
+#include "tether/output/pvd_writer.hpp"
+#include "tether/output/status_writer.hpp"
+#include "tether/output/vtu_writer.hpp"
+
+namespace tether {
+
+/// Choices of the result files.
+struct ResultWriterOptions {
+  VtuEncoding encoding = VtuEncoding::Base64;  ///< Ascii for debugging only
+  bool write_vtu = true;                       ///< false: no .vtu/.pvd at all
+};
+
+/// Writes all result files of one job into one directory:
+/// - `DIR/JOB_<step>_<increment>.vtu` per written increment and the
+///   collection `DIR/JOB.pvd` listing them with their total times (both
+///   replaced atomically, so the `.pvd` is valid at every moment);
+/// - `DIR/JOB.dat`: `*NODE PRINT` / `*EL PRINT` output in CalculiX's layout;
+/// - `DIR/JOB.sta`: one line per increment attempt and a final verdict.
+///
+/// A `.vtu` is written for every increment, unless the step's requests
+/// contain `*NODE FILE` / `*EL FILE` entries: then only when one of them is
+/// due (see is_due(); the last increment of a step always is, unless all
+/// have FREQUENCY=0). The `.vtu` always holds every field.
+///
+/// The constructor creates DIR when needed and truncates JOB.dat and JOB.sta.
+/// The Model must outlive the writer and not change. Errors: std::runtime_error
+/// (I/O), InputError (bad print request), std::invalid_argument (results
+/// sized wrongly for the mesh).
+class ResultWriter {
+ public:
+  ResultWriter(const Model& model, const std::filesystem::path& directory, const std::string& job,
+               ResultWriterOptions options = {});
+
+  /// Writes one converged increment. `requests` are the step's output
+  /// requests (Step::outputs); `last_in_step` marks the step's final
+  /// increment, which every request with FREQUENCY > 0 writes.
+  void write_increment(const IncrementResults& results, const std::vector<OutputRequest>& requests,
+                       bool last_in_step);
+
+  /// Appends one line to the `.sta` file (converged or cut-back attempt).
+  void write_status(const IncrementStatus& status);
+
+  /// Writes the final `.sta` line: completed, or why the analysis stopped
+  /// (`message`). Call once, also after an error; later calls do nothing.
+  void finish(bool completed, const std::string& message);
+
+  /// Path of the `.vtu` written for (step, increment).
+  [[nodiscard]] std::filesystem::path vtu_path(int step, int increment) const;
+  [[nodiscard]] const std::filesystem::path& pvd_path() const { return pvd_.file(); }
+  [[nodiscard]] const std::filesystem::path& dat_path() const { return dat_.file(); }
+  [[nodiscard]] const std::filesystem::path& sta_path() const { return status_.file(); }
+
+ private:
+  std::filesystem::path directory_;
+  std::string job_;
+  ResultWriterOptions options_;
+  VtuWriter vtu_;
+  PvdWriter pvd_;
+  DatWriter dat_;
+  StatusWriter status_;
+};
+
+}  // namespace tether
