@@ -1,0 +1,225 @@
+#include "tether/elements/continuum_element.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <numbers>
+
+#include "tether/fem/extrapolation.hpp"
+#include "tether/fem/shape_functions.hpp"
+
+namespace tether {
+
+ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vector<int> node_indices,
+                                   std::vector<Eigen::Vector2d> ref_coords,
+                                   const ConstitutiveModel& material, double thickness,
+                                   const DofMap& dofs)
+    : label_(label),
+      type_(type),
+      n_nodes_(n_nodes(type.shape)),
+      nodes_(std::move(node_indices)),
+      ref_coords_(std::move(ref_coords)),
+      material_(&material),
+      thickness_(thickness),
+      rule_(default_rule(type)),
+      n_points_(static_cast<int>(quadrature_points(rule_).size())) {
+  if (const std::string why = unsupported_reason(type); !why.empty())
+    throw ModelError(describe() + ": " + why);
+  if (static_cast<int>(nodes_.size()) != n_nodes_ || static_cast<int>(ref_coords_.size()) != n_nodes_)
+    throw ModelError(fmt::format("{}: expected {} nodes, got {}", describe(), n_nodes_, nodes_.size()));
+  const bool axisymmetric = type.family == Family::Axisymmetric;
+  if (!axisymmetric && !(thickness > 0))
+    throw ModelError(fmt::format("{}: thickness must be positive (got {:g})", describe(), thickness));
+
+  dofs_.reserve(2 * n_nodes_);
+  for (int node : nodes_) {
+    dofs_.push_back(dofs.displacement(node, 0));
+    dofs_.push_back(dofs.displacement(node, 1));
+  }
+
+  geometry_.resize(static_cast<std::size_t>(n_points_ * stride()));
+  ShapeVector N;
+  ShapeGradient dN;
+  const auto points = quadrature_points(rule_);
+  for (int q = 0; q < n_points_; ++q) {
+    shape_functions(type.shape, points[q].xi, N, dN);
+    Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // J(i,j) = dX_i/dxi_j
+    Eigen::Vector2d X = Eigen::Vector2d::Zero();
+    for (int a = 0; a < n_nodes_; ++a) {
+      J += ref_coords_[a] * dN.row(a);
+      X += N(a) * ref_coords_[a];
+    }
+    const double detJ = J.determinant();
+    if (!(detJ > 0))
+      throw ModelError(fmt::format(
+          "{}: Jacobian determinant {:.3g} <= 0 at integration point {} in the reference "
+          "configuration (distorted element or clockwise node order)",
+          describe(), detJ, q + 1));
+    if (axisymmetric && !(X.x() > 0))
+      throw ModelError(fmt::format("{}: integration point {} lies at r = {:.3g} <= 0", describe(),
+                                   q + 1, X.x()));
+    const ShapeGradient G = dN * J.inverse();  // dN/dX
+    double* d = geometry_.data() + q * stride();
+    for (int a = 0; a < n_nodes_; ++a) {
+      d[a] = N(a);
+      d[n_nodes_ + a] = G(a, 0);
+      d[2 * n_nodes_ + a] = G(a, 1);
+    }
+    const double measure = axisymmetric ? 2 * std::numbers::pi * X.x() : thickness;
+    d[3 * n_nodes_] = points[q].weight * detJ * measure;
+    d[3 * n_nodes_ + 1] = X.x();
+  }
+}
+
+std::string ContinuumElement::describe() const {
+  return fmt::format("element {} ({})", label_, type_.name);
+}
+
+void ContinuumElement::gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const {
+  for (int i = 0; i < 2 * n_nodes_; ++i) ue(i) = u(dofs_[i]);
+}
+
+void ContinuumElement::material_point(int q, const double* ue, bool nlgeom, MaterialPoint& mp) const {
+  const double* d = point_data(q);
+  const int n = n_nodes_;
+  Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
+  double ur = 0;
+  for (int a = 0; a < n; ++a) {
+    H(0, 0) += ue[2 * a] * d[n + a];
+    H(0, 1) += ue[2 * a] * d[2 * n + a];
+    H(1, 0) += ue[2 * a + 1] * d[n + a];
+    H(1, 1) += ue[2 * a + 1] * d[2 * n + a];
+    ur += ue[2 * a] * d[a];
+  }
+  const double hoop = ur / d[3 * n + 1];
+  if (nlgeom)
+    finite_strain_point(*material_, type_.family, H, hoop, mp);
+  else
+    small_strain_point(*material_, type_.family, H, hoop, mp);
+}
+
+template <int NN>
+void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalSystem& out,
+                                       bool need_tangent) const {
+  constexpr int ND = 2 * NN;
+  using Nodal = Eigen::Matrix<double, NN, 1>;
+  const Eigen::Map<const Eigen::Matrix<double, 2, NN>> U(ue_ptr);  // column a = displacement of node a
+  Eigen::Map<Eigen::Matrix<double, ND, 1>> r(out.residual.data());
+  Eigen::Map<Eigen::Matrix<double, ND, ND>> K(out.tangent.data());
+  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  MaterialPoint mp;
+  Eigen::Matrix<double, 4, ND> B;
+  for (int q = 0; q < n_points_; ++q) {
+    const double* d = point_data(q);
+    const Eigen::Map<const Nodal> N(d), Gx(d + NN), Gy(d + 2 * NN);
+    const double dV = d[3 * NN], R = d[3 * NN + 1];
+    Eigen::Matrix2d H;
+    H.col(0).noalias() = U * Gx;
+    H.col(1).noalias() = U * Gy;
+    const double hoop = axisymmetric ? U.row(0).dot(N) / R : 0.0;
+    if (nlgeom)
+      finite_strain_point(*material_, type_.family, H, hoop, mp);
+    else
+      small_strain_point(*material_, type_.family, H, hoop, mp);
+
+    // B: rows (11, 22, 33, 2*12) of the strain variation; F = I for small strain.
+    const Eigen::Matrix2d& F = mp.F;
+    const double f33_over_r = axisymmetric ? mp.F33 / R : 0.0;
+    for (int a = 0; a < NN; ++a) {
+      for (int i = 0; i < 2; ++i) {
+        B(0, 2 * a + i) = F(i, 0) * Gx(a);
+        B(1, 2 * a + i) = F(i, 1) * Gy(a);
+        B(3, 2 * a + i) = F(i, 0) * Gy(a) + F(i, 1) * Gx(a);
+      }
+      B(2, 2 * a) = f33_over_r * N(a);
+      B(2, 2 * a + 1) = 0;
+    }
+    const Eigen::Vector4d stress = mp.stress.head<4>() * dV;
+    r.noalias() += B.transpose() * stress;
+    if (!need_tangent) continue;
+
+    const Eigen::Matrix<double, 4, ND> DB = (mp.D.topLeftCorner<4, 4>() * dV) * B;
+    K.noalias() += B.transpose() * DB;
+    if (nlgeom) {  // geometric stiffness: delta(dE) : S
+      for (int a = 0; a < NN; ++a) {
+        const double sa0 = stress(0) * Gx(a) + stress(3) * Gy(a);
+        const double sa1 = stress(3) * Gx(a) + stress(1) * Gy(a);
+        const double hoop_a = axisymmetric ? stress(2) * N(a) / (R * R) : 0.0;
+        for (int b = 0; b < NN; ++b) {
+          const double g = sa0 * Gx(b) + sa1 * Gy(b);
+          K(2 * a, 2 * b) += g + hoop_a * N(b);
+          K(2 * a + 1, 2 * b + 1) += g;
+        }
+      }
+    }
+  }
+}
+
+void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const {
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2 * kMaxElementNodes, 1> ue(2 * n_nodes_);
+  gather(s.u, ue);
+  try {
+    switch (type_.shape) {
+      case Shape::Tri3: evaluate_kernel<3>(ue.data(), s.nlgeom, out, need_tangent); break;
+      case Shape::Quad4: evaluate_kernel<4>(ue.data(), s.nlgeom, out, need_tangent); break;
+      case Shape::Tri6: evaluate_kernel<6>(ue.data(), s.nlgeom, out, need_tangent); break;
+      case Shape::Quad8: evaluate_kernel<8>(ue.data(), s.nlgeom, out, need_tangent); break;
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+}
+
+double ContinuumElement::strain_energy(const EvaluationState& s) const {
+  Eigen::VectorXd ue(2 * n_nodes_);
+  gather(s.u, ue);
+  MaterialPoint mp;
+  double energy = 0;
+  try {
+    for (int q = 0; q < n_points_; ++q) {
+      material_point(q, ue.data(), s.nlgeom, mp);
+      energy += strain_energy_density(*material_, s.nlgeom, mp) * point_data(q)[3 * n_nodes_];
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+  return energy;
+}
+
+void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointValues>& out) const {
+  Eigen::VectorXd ue(2 * n_nodes_);
+  gather(s.u, ue);
+  out.resize(n_points_);
+  MaterialPoint mp;
+  try {
+    for (int q = 0; q < n_points_; ++q) {
+      material_point(q, ue.data(), s.nlgeom, mp);
+      const double* d = point_data(q);
+      Eigen::Vector2d x = Eigen::Vector2d::Zero();
+      for (int a = 0; a < n_nodes_; ++a)
+        x += d[a] * (ref_coords_[a] + Eigen::Vector2d(ue(2 * a), ue(2 * a + 1)));
+      const Eigen::Vector4d sigma = cauchy_stress(s.nlgeom, mp);
+      PointValues& pv = out[q];
+      pv.x = x;
+      pv.stress = {sigma(0), sigma(1), sigma(2), sigma(3)};
+      pv.strain = {mp.strain(0), mp.strain(1), mp.strain(2), 0.5 * mp.strain(3)};
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+}
+
+void ContinuumElement::extrapolate_to_nodes(const std::vector<PointValues>& points,
+                                            std::vector<Tensor4>& nodal_stress,
+                                            std::vector<Tensor4>& nodal_strain) const {
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  nodal_stress.assign(n_nodes_, Tensor4{});
+  nodal_strain.assign(n_nodes_, Tensor4{});
+  for (int a = 0; a < n_nodes_; ++a)
+    for (int q = 0; q < n_points_; ++q)
+      for (int c = 0; c < 4; ++c) {
+        nodal_stress[a][c] += E(a, q) * points[q].stress[c];
+        nodal_strain[a][c] += E(a, q) * points[q].strain[c];
+      }
+}
+
+}  // namespace tether

@@ -1,0 +1,91 @@
+#pragma once
+/// \file 2D continuum element (plane strain, plane stress, axisymmetric) of any
+/// supported shape, small strain or total Lagrangian finite strain.
+
+#include <Eigen/Core>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tether/assembly/contribution.hpp"
+#include "tether/dofs/dof_map.hpp"
+#include "tether/fem/quadrature.hpp"
+#include "tether/elements/material_point.hpp"
+#include "tether/materials/constitutive_model.hpp"
+#include "tether/model/element_type.hpp"
+#include "tether/model/results.hpp"
+
+namespace tether {
+
+/// Isoparametric displacement element. Residual r = f_int (internal force,
+/// integrated over the reference configuration), tangent dr/du including the
+/// geometric stiffness under NLGEOM. Axisymmetric forces are totals over
+/// 2 pi radians, as in ABAQUS. See docs/theory/elements.md.
+class ContinuumElement final : public Contribution {
+ public:
+  /// label: user id for messages; node_indices: mesh node indices (dofs via
+  /// DofMap::displacement), ABAQUS order; ref_coords: reference coordinates of
+  /// those nodes [length]; material: must outlive the element; thickness:
+  /// out-of-plane thickness [length] for plane strain/stress, ignored for
+  /// axisymmetry. Throws ModelError naming the element when the node count does
+  /// not match the type, the type is unsupported, the reference Jacobian is not
+  /// positive at an integration point (inverted or degenerate element, or
+  /// clockwise node order), an axisymmetric point lies at r <= 0, or the
+  /// thickness is not positive.
+  ContinuumElement(int label, const ElementType& type, std::vector<int> node_indices,
+                   std::vector<Eigen::Vector2d> ref_coords, const ConstitutiveModel& material,
+                   double thickness, const DofMap& dofs);
+
+  [[nodiscard]] std::span<const int> dofs() const override { return dofs_; }
+
+  /// Small strain when !s.nlgeom, total Lagrangian when s.nlgeom. Throws
+  /// ModelError naming the element when det F <= 0 at an integration point.
+  void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override;
+
+  /// "element 12 (CPE4)".
+  [[nodiscard]] std::string describe() const override;
+
+  [[nodiscard]] int label() const { return label_; }
+  [[nodiscard]] const ElementType& type() const { return type_; }
+  [[nodiscard]] int n_points() const { return n_points_; }
+  [[nodiscard]] const std::vector<int>& nodes() const { return nodes_; }
+
+  /// Stored strain energy [energy] (total over 2 pi for axisymmetry); its
+  /// gradient with respect to the element dofs is the residual.
+  [[nodiscard]] double strain_energy(const EvaluationState& s) const;
+
+  /// Values at the integration points, ABAQUS order: Cauchy stress; small
+  /// strain, or Green-Lagrange strain under NLGEOM (tensor shear); current
+  /// position X + u.
+  void point_values(const EvaluationState& s, std::vector<PointValues>& out) const;
+
+  /// Extrapolates point values to the element's nodes (stress and strain),
+  /// ABAQUS-like (see fem/extrapolation.hpp). `points` has n_points() entries.
+  void extrapolate_to_nodes(const std::vector<PointValues>& points, std::vector<Tensor4>& nodal_stress,
+                            std::vector<Tensor4>& nodal_strain) const;
+
+ private:
+  /// Doubles stored per integration point: N, dN/dX, dN/dY (n each), dV, R.
+  [[nodiscard]] int stride() const { return 3 * n_nodes_ + 2; }
+  [[nodiscard]] const double* point_data(int q) const { return geometry_.data() + q * stride(); }
+  /// Local displacement vector (u_0x, u_0y, u_1x, ...).
+  void gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const;
+  /// Evaluates point q from local displacements ue.
+  void material_point(int q, const double* ue, bool nlgeom, MaterialPoint& mp) const;
+  template <int NN>
+  void evaluate_kernel(const double* ue, bool nlgeom, LocalSystem& out, bool need_tangent) const;
+
+  int label_;
+  ElementType type_;
+  int n_nodes_;
+  std::vector<int> nodes_;
+  std::vector<int> dofs_;
+  std::vector<Eigen::Vector2d> ref_coords_;
+  const ConstitutiveModel* material_;
+  double thickness_;
+  QuadratureRule rule_;
+  int n_points_;
+  std::vector<double> geometry_;
+};
+
+}  // namespace tether

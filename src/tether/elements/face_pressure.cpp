@@ -1,0 +1,76 @@
+#include "tether/elements/face_pressure.hpp"
+
+#include <fmt/format.h>
+#include <numbers>
+
+#include "tether/core/error.hpp"
+#include "tether/fem/quadrature.hpp"
+#include "tether/fem/shape_functions.hpp"
+
+namespace tether {
+
+FacePressure::FacePressure(int element_label, const ElementType& type,
+                           std::vector<int> element_node_indices,
+                           std::vector<Eigen::Vector2d> element_ref_coords, int face,
+                           double thickness, const DofMap& dofs)
+    : element_label_(element_label), type_(type), face_(face), thickness_(thickness) {
+  if (face < 0 || face >= n_faces(type.shape))
+    throw ModelError(fmt::format("element {} ({}) has no face S{}", element_label, type.name, face + 1));
+  const int nn = n_nodes(type.shape);
+  if (static_cast<int>(element_node_indices.size()) != nn ||
+      static_cast<int>(element_ref_coords.size()) != nn)
+    throw ModelError(fmt::format("element {} ({}): expected {} nodes", element_label, type.name, nn));
+  const auto local = face_nodes(type.shape, face);
+  const int nf = n_face_nodes(type.shape);
+  for (int k = 0; k < nf; ++k) {
+    nodes_.push_back(element_node_indices[local[k]]);
+    ref_coords_.push_back(element_ref_coords[local[k]]);
+    dofs_.push_back(dofs.displacement(nodes_.back(), 0));
+    dofs_.push_back(dofs.displacement(nodes_.back(), 1));
+  }
+  if (!((ref_coords_[1] - ref_coords_[0]).norm() > 0))
+    throw ModelError(describe() + ": the face has zero length");
+  if (type.family != Family::Axisymmetric && !(thickness > 0))
+    throw ModelError(fmt::format("{}: thickness must be positive (got {:g})", describe(), thickness));
+}
+
+std::string FacePressure::describe() const {
+  return fmt::format("pressure on element {} ({}) face S{}", element_label_, type_.name, face_ + 1);
+}
+
+void FacePressure::evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const {
+  const int nf = static_cast<int>(nodes_.size());
+  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  Eigen::Matrix<double, 2, 3> x = Eigen::Matrix<double, 2, 3>::Zero();
+  for (int b = 0; b < nf; ++b) {
+    x.col(b) = ref_coords_[b];
+    if (s.nlgeom) x.col(b) += Eigen::Vector2d(s.u(dofs_[2 * b]), s.u(dofs_[2 * b + 1]));
+  }
+  const double p = pressure_;
+  Eigen::Vector3d N, dN;
+  for (const LinePoint& lp : line_points(nf)) {
+    face_shape_functions(nf, lp.s, N, dN);
+    const Eigen::Vector2d xs = x * dN;                       // dx/ds
+    const Eigen::Vector2d normal_ds(xs.y(), -xs.x());        // outward normal * |dx/ds|
+    const double measure = axisymmetric ? 2 * std::numbers::pi * x.row(0).dot(N) : thickness_;
+    const double w = p * lp.weight;
+    // residual = -f_ext = p * int N_a * n * measure ds
+    for (int a = 0; a < nf; ++a) out.residual.segment<2>(2 * a) += (w * measure * N(a)) * normal_ds;
+    if (!need_tangent || !s.nlgeom) continue;
+    // d(normal_ds)/du_b: x-component of u_b changes xs.x -> normal_ds.y by -dN_b;
+    // y-component changes xs.y -> normal_ds.x by +dN_b. d(measure)/du_bx = 2 pi N_b (CAX).
+    for (int a = 0; a < nf; ++a)
+      for (int b = 0; b < nf; ++b) {
+        const double c = w * N(a);
+        out.tangent(2 * a + 1, 2 * b) += -c * measure * dN(b);
+        out.tangent(2 * a, 2 * b + 1) += c * measure * dN(b);
+        if (axisymmetric) {
+          const double dm = 2 * std::numbers::pi * N(b);
+          out.tangent(2 * a, 2 * b) += c * dm * normal_ds.x();
+          out.tangent(2 * a + 1, 2 * b) += c * dm * normal_ds.y();
+        }
+      }
+  }
+}
+
+}  // namespace tether

@@ -1,0 +1,53 @@
+#include "tether/elements/material_point.hpp"
+
+#include <fmt/format.h>
+
+#include "tether/materials/plane_stress.hpp"
+
+namespace tether {
+
+void small_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
+                        double hoop_strain, MaterialPoint& mp) {
+  mp.strain << H(0, 0), H(1, 1), family == Family::Axisymmetric ? hoop_strain : 0.0,
+      H(0, 1) + H(1, 0), 0, 0;
+  if (family == Family::PlaneStress)
+    plane_stress_small_strain(material, mp.strain, mp.stress, mp.D);
+  else
+    material.small_strain(mp.strain, mp.stress, mp.D);
+}
+
+void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
+                         double hoop_strain, MaterialPoint& mp) {
+  mp.F = Eigen::Matrix2d::Identity() + H;
+  const double det2 = mp.F.determinant();
+  mp.F33 = family == Family::Axisymmetric ? 1 + hoop_strain : 1.0;
+  if (!(det2 > 0) || !(mp.F33 > 0))
+    throw ModelError(fmt::format("the deformation gradient is not invertible (in-plane det F = {:.3g}, "
+                                 "F33 = {:.3g}): the element is inverted",
+                                 det2, mp.F33));
+  mp.C.setZero();
+  mp.C.topLeftCorner<2, 2>().noalias() = mp.F.transpose() * mp.F;
+  mp.C(2, 2) = mp.F33 * mp.F33;
+  if (family == Family::PlaneStress) {
+    plane_stress_finite_strain(material, mp.C, mp.stress, mp.D);
+    mp.F33 = std::sqrt(mp.C(2, 2));
+  } else {
+    material.finite_strain(mp.C, mp.stress, mp.D);
+  }
+  mp.strain << 0.5 * (mp.C(0, 0) - 1), 0.5 * (mp.C(1, 1) - 1), 0.5 * (mp.C(2, 2) - 1), mp.C(0, 1), 0, 0;
+}
+
+double strain_energy_density(const ConstitutiveModel& material, bool nlgeom, const MaterialPoint& mp) {
+  return nlgeom ? material.finite_strain_energy(mp.C) : material.small_strain_energy(mp.strain);
+}
+
+Eigen::Vector4d cauchy_stress(bool nlgeom, const MaterialPoint& mp) {
+  if (!nlgeom) return mp.stress.head<4>();
+  Eigen::Matrix2d S;
+  S << mp.stress(0), mp.stress(3), mp.stress(3), mp.stress(1);
+  const double J = mp.F.determinant() * mp.F33;
+  const Eigen::Matrix2d sigma = mp.F * S * mp.F.transpose() / J;
+  return {sigma(0, 0), sigma(1, 1), mp.F33 * mp.F33 * mp.stress(2) / J, sigma(0, 1)};
+}
+
+}  // namespace tether

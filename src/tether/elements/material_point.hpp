@@ -1,0 +1,45 @@
+#pragma once
+/// \file Kinematics and constitutive response at one integration point of a 2D solid.
+///
+/// Pure functions of the displacement gradient: they know the element family
+/// (plane strain, plane stress, axisymmetric) but not the mesh. Coordinates
+/// are (x, y) or (r, z); the out-of-plane direction (index 2 in Voigt
+/// vectors) is z for plane problems and the hoop direction for axisymmetry.
+
+#include <Eigen/Core>
+
+#include "tether/materials/constitutive_model.hpp"
+#include "tether/model/element_type.hpp"
+
+namespace tether {
+
+/// State of one integration point.
+struct MaterialPoint {
+  Eigen::Matrix2d F = Eigen::Matrix2d::Identity();  ///< in-plane deformation gradient (identity for small strain)
+  double F33 = 1;                ///< out-of-plane / hoop stretch (finite strain); 1 for small strain
+  Eigen::Matrix3d C = Eigen::Matrix3d::Identity();  ///< right Cauchy-Green tensor (finite strain only)
+  Vec6 strain = Vec6::Zero();    ///< small strain or Green-Lagrange strain, engineering shear
+  Vec6 stress = Vec6::Zero();    ///< Cauchy (small strain) or PK2 (finite strain) stress [force/area]
+  Mat6 D = Mat6::Zero();         ///< d stress / d strain; plane stress: condensed (row/column 2 zero)
+};
+
+/// Small strain from the displacement gradient H (H(i,j) = du_i/dx_j) and, for
+/// axisymmetry, the hoop strain u_r / r (ignored otherwise). Plane stress
+/// solves eps_33 so that sigma_33 = 0. Throws ModelError if that fails.
+void small_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
+                        double hoop_strain, MaterialPoint& mp);
+
+/// Finite strain (total Lagrangian) from H = dU/dX and, for axisymmetry,
+/// U_r / R (hoop stretch F33 = 1 + U_r/R). Plane strain has F33 = 1; plane
+/// stress solves F33 so that S_33 = 0. Throws ModelError when det F <= 0.
+void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
+                         double hoop_strain, MaterialPoint& mp);
+
+/// Strain energy density [energy / reference volume] of an evaluated point.
+double strain_energy_density(const ConstitutiveModel& material, bool nlgeom, const MaterialPoint& mp);
+
+/// Cauchy stress (xx, yy, zz, xy) of an evaluated point: sigma itself for small
+/// strain, F S F^T / J for finite strain.
+Eigen::Vector4d cauchy_stress(bool nlgeom, const MaterialPoint& mp);
+
+}  // namespace tether

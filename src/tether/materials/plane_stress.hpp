@@ -1,0 +1,30 @@
+#pragma once
+/// \file Plane-stress condensation of a 3D constitutive model.
+///
+/// The out-of-plane normal stress is driven to zero by a local Newton
+/// iteration on the out-of-plane strain; the tangent returned is the
+/// condensed one, D_ab - D_a3 D_3b / D_33, so that in-plane strain increments
+/// map to stress increments with sigma_33 = 0 kept. Shear components 23 and 13
+/// are zero in 2D and left alone.
+
+#include "tether/materials/constitutive_model.hpp"
+
+namespace tether {
+
+/// Small strain. In: eps with the in-plane components 11, 22, 12 (index 0, 1,
+/// 3); eps(2) is the starting guess for eps_33 (0 is fine). Out: eps(2) such
+/// that sigma_33 = 0 to round-off, the stress (sigma(2) ~ 0) and the condensed
+/// tangent D (row and column 2 zero). Throws ModelError when the iteration does
+/// not converge in 50 steps.
+void plane_stress_small_strain(const ConstitutiveModel& model, Vec6& eps, Vec6& sigma, Mat6& D);
+
+/// Finite strain. In: C with the in-plane block set; C(2,2) is the starting
+/// guess for the squared out-of-plane stretch (1 is fine), C(0,2), C(1,2) must
+/// be zero. Out: C(2,2) with S_33 = 0 to round-off, S and the condensed tangent
+/// dS/dE (row and column 2 zero). Throws ModelError when the iteration fails.
+void plane_stress_finite_strain(const ConstitutiveModel& model, Eigen::Matrix3d& C, Vec6& S, Mat6& D);
+
+/// Removes row and column 2 (the 33 direction) by static condensation, in place.
+void condense_out_of_plane(Mat6& D);
+
+}  // namespace tether
