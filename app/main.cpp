@@ -1,1 +1,124 @@
-int main() { return 0; }
+// tether command-line program: parse arguments -> read deck -> run -> write -> exit code.
+//
+// Exit codes: 0 success, 1 bad input (deck or arguments), 2 the analysis did
+// not complete (non-convergence, singular model), 3 I/O or internal error.
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "progress_observer.hpp"
+#include "tether/analysis/static_analysis.hpp"
+#include "tether/core/error.hpp"
+#include "tether/io/deck_reader.hpp"
+#include "tether/output/result_writer.hpp"
+
+namespace fs = std::filesystem;
+using namespace tether;
+
+namespace {
+
+enum ExitCode { kOk = 0, kInput = 1, kNotCompleted = 2, kInternal = 3 };
+
+Model read_with_warnings(const std::string& deck) {
+  std::vector<DeckWarning> warnings;
+  Model model = read_deck(deck, &warnings);
+  for (const auto& w : warnings) fmt::print(stderr, "{}: warning: {}\n", w.where.str(), w.message);
+  return model;
+}
+
+int check(const std::string& deck) {
+  const Model model = read_with_warnings(deck);
+  Discretization discretization(model);  // materials and elements can be built
+  fmt::print("{}: OK: {} nodes, {} elements, {} step(s), {} dofs\n", deck, model.n_nodes(), model.n_elements(),
+             model.steps.size(), discretization.dofs().n_dofs());
+  return kOk;
+}
+
+int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool ascii, bool quiet) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Model model = read_with_warnings(deck);
+  const fs::path dir = output_dir.empty() ? fs::path(deck).parent_path() / fs::path(deck).stem() : fs::path(output_dir);
+  const std::string job = fs::path(deck).stem().string();
+
+  ResultWriterOptions writer_options;
+  if (ascii) writer_options.encoding = VtuEncoding::Ascii;
+  ResultWriter writer(model, dir, job, writer_options);
+  const bool progress = !quiet && isatty(fileno(stdout));
+  ProgressObserver observer(writer, progress);
+
+  AnalysisOptions options;
+  options.solver = parse_solver_kind(solver);
+  AnalysisSummary summary;
+  try {
+    StaticAnalysis analysis(model, observer, options);
+    summary = analysis.run();
+  } catch (const ModelError& e) {
+    writer.finish(false, e.what());
+    throw;
+  }
+  writer.finish(summary.completed, summary.message);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!quiet) {
+    fmt::print("{}: {} ({} increments, {} iterations, {} cut-backs, {:.2f} s)\n", job, summary.message,
+               summary.increments, summary.iterations, summary.cutbacks, seconds);
+    fmt::print("results: {}  {}  {}\n", writer.pvd_path().string(), writer.dat_path().string(),
+               writer.sta_path().string());
+  }
+  if (!summary.completed) {
+    fmt::print(stderr, "{}: error: {}\n", deck, summary.message);
+    return kNotCompleted;
+  }
+  return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"tether: nonlinear finite elements for 2D solids with constraints and contact"};
+  app.set_version_flag("--version", std::string("tether ") + TETHER_VERSION);
+  app.require_subcommand(1);
+
+  std::string deck, output_dir, solver = "auto";
+  bool ascii = false, quiet = false;
+  auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
+  run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
+  run_cmd->add_option("-o,--output", output_dir, "Output directory (default: next to the deck, named after it)");
+  run_cmd->add_option("--solver", solver, "Linear solver: auto, umfpack, cholmod or sparselu")
+      ->check(CLI::IsMember({"auto", "umfpack", "cholmod", "sparselu"}, CLI::ignore_case));
+  run_cmd->add_flag("--ascii", ascii, "Write ASCII instead of binary VTU (for debugging)");
+  run_cmd->add_flag("-q,--quiet", quiet, "Print nothing but errors");
+  auto* check_cmd = app.add_subcommand("check", "Read and validate a deck without solving it");
+  check_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
+  auto* keywords_cmd = app.add_subcommand("keywords", "Print the keyword reference (Markdown)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kOk : kInput;
+  }
+
+  try {
+    if (*keywords_cmd) {
+      fmt::print("{}", keyword_reference_markdown());
+      return kOk;
+    }
+    if (*check_cmd) return check(deck);
+    return run(deck, output_dir, solver, ascii, quiet);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return kInput;
+  } catch (const ModelError& e) {
+    fmt::print(stderr, "{}: error: {}\n", deck, e.what());
+    return kInput;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "{}: error: {}\n", deck, e.what());
+    return kInternal;
+  }
+}

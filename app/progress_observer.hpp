@@ -1,0 +1,52 @@
+#pragma once
+/// \file Connects the analysis' reports to the result files and the terminal.
+
+#include <fmt/core.h>
+
+#include "tether/analysis/analysis_observer.hpp"
+#include "tether/output/result_writer.hpp"
+
+namespace tether {
+
+/// Writes results and status lines; prints one progress line per increment
+/// attempt when `progress` is set (a terminal is attached).
+class ProgressObserver final : public AnalysisObserver {
+ public:
+  ProgressObserver(ResultWriter& writer, bool progress) : writer_(writer), progress_(progress) {}
+
+  void on_increment(const IncrementReport& r) override {
+    if (r.attempt == 1) iterations_this_increment_ = 0;
+    iterations_this_increment_ += r.iterations;
+    IncrementStatus s;
+    s.step = r.step;
+    s.increment = r.increment;
+    s.attempt = r.attempt;
+    s.converged = r.converged;
+    s.iterations = r.iterations;
+    s.total_iterations = iterations_this_increment_;
+    s.total_time = r.total_time;
+    s.step_time = r.step_time;
+    s.increment_size = r.increment_size;
+    s.residual_norm = r.residual;
+    writer_.write_status(s);
+    if (progress_)
+      fmt::print("step {} inc {:4d} att {} time {:.6g} dt {:.3g} iter {:2d} residual {:.3e} {}\n", r.step,
+                 r.increment, r.attempt, r.total_time, r.increment_size, r.iterations, r.residual,
+                 r.converged ? "" : "cut back: " + r.note);
+  }
+
+  void on_results(const IncrementResults& results, const Step& step, bool last_in_step) override {
+    writer_.write_increment(results, step.outputs, last_in_step);
+  }
+
+  void on_message(const std::string& message) override {
+    if (progress_) fmt::print("  {}\n", message);
+  }
+
+ private:
+  ResultWriter& writer_;
+  bool progress_;
+  int iterations_this_increment_ = 0;
+};
+
+}  // namespace tether

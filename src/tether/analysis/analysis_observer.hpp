@@ -1,0 +1,38 @@
+#pragma once
+/// \file What the analysis reports while it runs: increments, results, messages.
+
+#include <string>
+
+#include "tether/model/model.hpp"
+#include "tether/model/results.hpp"
+
+namespace tether {
+
+/// One line of the status log (an attempt of an increment).
+struct IncrementReport {
+  int step = 1;             ///< 1-based
+  int increment = 1;        ///< 1-based, counts converged increments in the step (+1 for the attempt)
+  int attempt = 1;          ///< 1 = first try; > 1 after cut-backs
+  int iterations = 0;       ///< Newton iterations (linear solves) of this attempt
+  int total_iterations = 0; ///< over the whole analysis so far
+  double step_time = 0;     ///< at the end of the increment
+  double total_time = 0;
+  double increment_size = 0;
+  double residual = 0;      ///< final max force residual
+  bool converged = false;
+  std::string note;         ///< why an attempt failed
+};
+
+/// Receives the analysis' progress. All methods have empty defaults.
+class AnalysisObserver {
+ public:
+  virtual ~AnalysisObserver() = default;
+  /// After each attempt (converged or cut back).
+  virtual void on_increment(const IncrementReport& /*report*/) {}
+  /// After each converged increment, with its results. `last_in_step` is true for the final one.
+  virtual void on_results(const IncrementResults& /*results*/, const Step& /*step*/, bool /*last_in_step*/) {}
+  /// A line of information or warning for the log.
+  virtual void on_message(const std::string& /*message*/) {}
+};
+
+}  // namespace tether

@@ -1,0 +1,39 @@
+#include "tether/analysis/convergence.hpp"
+
+#include <cmath>
+
+namespace tether {
+
+ConvergenceCriteria::ConvergenceCriteria(const Controls& controls, double length_scale)
+    : controls_(controls), length_scale_(length_scale) {}
+
+double ConvergenceCriteria::force_tolerance(double force_scale) const {
+  if (force_scale <= controls_.zero_force_tolerance) return controls_.zero_force_tolerance;
+  return controls_.residual_tolerance * force_scale;
+}
+
+bool ConvergenceCriteria::converged(const IterationNorms& n, int iteration, double force_scale) const {
+  if (!std::isfinite(n.force_residual) || !std::isfinite(n.multiplier_residual)) return false;
+  const double floor = 1e-12 * length_scale_;
+  const bool multipliers_ok = n.multiplier_residual <= controls_.correction_tolerance * n.increment + floor;
+  if (!multipliers_ok) return false;
+
+  const bool zero_load = force_scale <= controls_.zero_force_tolerance;
+  if (zero_load) return n.force_residual <= controls_.zero_force_tolerance && (iteration > 0 || n.increment == 0);
+
+  // A residual at round-off level: the increment is linear, accept it.
+  if (n.force_residual <= 1e-8 * force_scale) return true;
+  if (iteration == 0) return false;
+  if (n.force_residual > controls_.residual_tolerance * force_scale) return false;
+
+  const double allowed = controls_.correction_tolerance * n.increment + floor;
+  if (n.correction <= allowed) return true;
+  // Estimate of the next correction from the residual reduction (ABAQUS does the same).
+  if (n.previous_force_residual > 0) {
+    const double ratio = n.force_residual / n.previous_force_residual;
+    if (ratio < 1 && n.correction * ratio <= allowed) return true;
+  }
+  return false;
+}
+
+}  // namespace tether

@@ -1,0 +1,43 @@
+#pragma once
+/// \file ABAQUS-like convergence test for one Newton iteration.
+///
+/// Force rows: the largest residual must be below R_n times the time-averaged
+/// force q (ABAQUS's q-tilde). Displacement: the largest correction must be
+/// below C_n times the largest displacement increment of the increment, or
+/// the next correction estimated from the residual ratio must be. A residual
+/// below 1e-8 q is accepted at once (linear increment). Multiplier rows
+/// (constraint values, in their own units) must be below C_n times the
+/// largest displacement increment plus a round-off floor.
+
+#include <string>
+
+#include "tether/model/model.hpp"
+
+namespace tether {
+
+/// Norms of one iteration, gathered by the Newton loop.
+struct IterationNorms {
+  double force_residual = 0;       ///< max |r| over free displacement equations
+  double multiplier_residual = 0;  ///< max |r| over multiplier equations
+  double correction = 0;           ///< max |du| of the last correction (displacements)
+  double increment = 0;            ///< max |u - u_start| over displacement dofs
+  double previous_force_residual = 0;  ///< of the previous iteration (0 on the first)
+};
+
+class ConvergenceCriteria {
+ public:
+  ConvergenceCriteria(const Controls& controls, double length_scale);
+
+  /// True when the iteration is converged. `iteration` counts solves done so far
+  /// (0 = nothing solved yet) and `force_scale` is the time-averaged force q.
+  [[nodiscard]] bool converged(const IterationNorms& n, int iteration, double force_scale) const;
+
+  /// Force tolerance R_n * q (or the absolute floor when q is zero).
+  [[nodiscard]] double force_tolerance(double force_scale) const;
+
+ private:
+  Controls controls_;
+  double length_scale_;
+};
+
+}  // namespace tether

@@ -1,0 +1,46 @@
+#pragma once
+/// \file The model turned into contributions over global unknowns.
+///
+/// Owns the constitutive models and one ContinuumElement per mesh element, and
+/// builds the per-step loads. Later features (constraints, contact) add their
+/// contributions and multiplier blocks here, through the same DofMap.
+
+#include <memory>
+#include <vector>
+
+#include "tether/assembly/contribution.hpp"
+#include "tether/dofs/dof_map.hpp"
+#include "tether/elements/continuum_element.hpp"
+#include "tether/elements/face_pressure.hpp"
+#include "tether/materials/constitutive_model.hpp"
+#include "tether/model/model.hpp"
+
+namespace tether {
+
+class Discretization {
+ public:
+  /// Throws ModelError for a model that cannot be discretized (e.g. a material without data).
+  explicit Discretization(const Model& model);
+
+  [[nodiscard]] const Model& model() const { return model_; }
+  [[nodiscard]] const DofMap& dofs() const { return dofs_; }
+  [[nodiscard]] const std::vector<std::unique_ptr<ContinuumElement>>& elements() const { return elements_; }
+
+  /// One FacePressure per entry of `loads` (pressure set later with set_pressure).
+  [[nodiscard]] std::vector<std::unique_ptr<FacePressure>> make_pressures(const std::vector<PressureLoad>& loads) const;
+
+  /// Out-of-plane thickness of element e (1 for axisymmetric elements).
+  [[nodiscard]] double thickness(int element) const;
+
+  /// Diagonal of the reference bounding box (a length scale for tolerances).
+  [[nodiscard]] double length_scale() const { return length_scale_; }
+
+ private:
+  const Model& model_;
+  DofMap dofs_;
+  std::vector<std::unique_ptr<ConstitutiveModel>> materials_;
+  std::vector<std::unique_ptr<ContinuumElement>> elements_;
+  double length_scale_ = 1;
+};
+
+}  // namespace tether

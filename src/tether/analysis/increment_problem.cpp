@@ -1,0 +1,91 @@
+#include "tether/analysis/increment_problem.hpp"
+
+#include <cmath>
+
+namespace tether {
+
+IncrementProblem::IncrementProblem(Assembler& assembler, const DofMap& dofs, Eigen::VectorXd& u,
+                                   const Eigen::VectorXd& u_start, const Eigen::VectorXd& external,
+                                   std::vector<const Contribution*> loads, IncrementTime time, bool symmetric)
+    : assembler_(assembler),
+      dofs_(dofs),
+      u_(u),
+      u_start_(u_start),
+      external_(external),
+      loads_(std::move(loads)),
+      time_(time),
+      symmetric_(symmetric) {}
+
+EvaluationState IncrementProblem::state() const {
+  return EvaluationState{u_, u_start_, time_.step_time, time_.total_time, time_.dt, time_.nlgeom};
+}
+
+bool IncrementProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent, IterationNorms& norms,
+                                double& force_scale) {
+  const EvaluationState s = state();
+  const bool changed = assembler_.update_connectivity(s);
+  assembler_.assemble(s, full_, tangent);
+  full_ -= external_;
+
+  const EquationMap& eqs = assembler_.equations();
+  const int n_disp = dofs_.n_displacement_dofs();
+  residual.resize(eqs.n_equations());
+  norms.force_residual = 0;
+  norms.multiplier_residual = 0;
+  for (int e = 0; e < eqs.n_equations(); ++e) {
+    const int d = eqs.dof(e);
+    residual[e] = full_[d];
+    const double a = std::abs(full_[d]);
+    if (std::isnan(a)) {
+      norms.force_residual = NAN;
+      continue;
+    }
+    if (d < n_disp)
+      norms.force_residual = std::max(norms.force_residual, a);
+    else
+      norms.multiplier_residual = std::max(norms.multiplier_residual, a);
+  }
+  norms.increment = (u_.head(n_disp) - u_start_.head(n_disp)).cwiseAbs().maxCoeff();
+
+  // Force scale q: mean magnitude of the nonzero nodal forces (reactions at
+  // prescribed dofs, applied forces and pressure resultants elsewhere).
+  Eigen::VectorXd magnitude = external_.head(n_disp).cwiseAbs();
+  LocalSystem local;
+  for (const Contribution* load : loads_) {
+    const auto dofs = load->dofs();
+    local.reset(static_cast<Eigen::Index>(dofs.size()));
+    load->evaluate(s, local, false);
+    for (std::size_t a = 0; a < dofs.size(); ++a)
+      if (dofs[a] < n_disp) magnitude[dofs[a]] += std::abs(local.residual[static_cast<Eigen::Index>(a)]);
+  }
+  for (int d = 0; d < n_disp; ++d)
+    if (eqs.is_prescribed(d)) magnitude[d] = std::abs(full_[d]);
+  const double largest = magnitude.size() ? magnitude.maxCoeff() : 0.0;
+  double sum = 0;
+  int count = 0;
+  for (int d = 0; d < n_disp; ++d)
+    if (magnitude[d] > 1e-10 * largest) sum += magnitude[d], ++count;
+  force_scale = count ? sum / count : 0.0;
+  return changed;
+}
+
+void IncrementProblem::apply_correction(const Eigen::VectorXd& correction, double alpha) {
+  const EquationMap& eqs = assembler_.equations();
+  for (int e = 0; e < eqs.n_equations(); ++e) u_[eqs.dof(e)] += alpha * correction[e];
+}
+
+double IncrementProblem::displacement_norm(const Eigen::VectorXd& correction) const {
+  const EquationMap& eqs = assembler_.equations();
+  double m = 0;
+  for (int e = 0; e < eqs.n_equations(); ++e)
+    if (!dofs_.is_multiplier(eqs.dof(e))) m = std::max(m, std::abs(correction[e]));
+  return m;
+}
+
+std::string IncrementProblem::describe_equation(int eq) const {
+  const EquationMap& eqs = assembler_.equations();
+  if (eq < 0 || eq >= eqs.n_equations()) return "equation " + std::to_string(eq);
+  return dofs_.describe(eqs.dof(eq));
+}
+
+}  // namespace tether

@@ -1,0 +1,52 @@
+#pragma once
+/// \file The equations of one increment, as Newton sees them.
+
+#include <vector>
+
+#include "tether/analysis/newton.hpp"
+#include "tether/assembly/assembler.hpp"
+#include "tether/dofs/dof_map.hpp"
+
+namespace tether {
+
+/// Time data of the increment being solved.
+struct IncrementTime {
+  double step_time = 0;
+  double total_time = 0;
+  double dt = 0;
+  bool nlgeom = false;
+};
+
+class IncrementProblem final : public NewtonProblem {
+ public:
+  /// `u` holds the current iterate (prescribed values already set) and is
+  /// updated in place; `u_start` the converged state; `external` the applied
+  /// nodal forces over all dofs; `loads` the load contributions (pressures),
+  /// also assembled by `assembler`, used only to size the force scale.
+  IncrementProblem(Assembler& assembler, const DofMap& dofs, Eigen::VectorXd& u, const Eigen::VectorXd& u_start,
+                   const Eigen::VectorXd& external, std::vector<const Contribution*> loads, IncrementTime time,
+                   bool symmetric);
+
+  bool evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent, IterationNorms& norms, double& force_scale) override;
+  void apply_correction(const Eigen::VectorXd& correction, double alpha) override;
+  [[nodiscard]] double displacement_norm(const Eigen::VectorXd& correction) const override;
+  [[nodiscard]] bool symmetric() const override { return symmetric_; }
+  [[nodiscard]] std::string describe_equation(int eq) const override;
+
+  /// Residual over all global dofs from the last evaluate (reactions at prescribed dofs).
+  [[nodiscard]] const Eigen::VectorXd& full_residual() const { return full_; }
+  [[nodiscard]] EvaluationState state() const;
+
+ private:
+  Assembler& assembler_;
+  const DofMap& dofs_;
+  Eigen::VectorXd& u_;
+  const Eigen::VectorXd& u_start_;
+  const Eigen::VectorXd& external_;
+  std::vector<const Contribution*> loads_;
+  IncrementTime time_;
+  bool symmetric_;
+  Eigen::VectorXd full_;
+};
+
+}  // namespace tether

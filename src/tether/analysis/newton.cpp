@@ -1,0 +1,96 @@
+#include "tether/analysis/newton.hpp"
+
+#include <cmath>
+
+#include "tether/core/error.hpp"
+
+namespace tether {
+
+NewtonSolver::NewtonSolver(LinearSolver& solver, const Controls& controls, double length_scale)
+    : solver_(solver), controls_(controls), criteria_(controls, length_scale) {}
+
+NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force, int n_averaged,
+                                  const IterationListener& listener) {
+  NewtonOutcome out;
+  Eigen::VectorXd residual, correction;
+  SparseMatrix tangent;
+  IterationNorms norms;
+  double previous = 0, before_previous = 0;
+
+  for (int iteration = 0;; ++iteration) {
+    double q = 0;
+    try {
+      if (problem.evaluate(residual, &tangent, norms, q)) analysed_ = false;
+    } catch (const ModelError& e) {
+      out.status = NewtonOutcome::Status::ElementFailure;
+      out.message = e.what();
+      out.iterations = iteration;
+      return out;
+    }
+    const double scale = (averaged_force * n_averaged + q) / (n_averaged + 1);
+    norms.previous_force_residual = previous;
+    out.iterations = iteration;
+    out.force_residual = norms.force_residual;
+    out.force_scale = scale;
+    if (listener) listener(iteration, norms);
+
+    if (criteria_.converged(norms, iteration, scale)) return out;
+
+    if (!std::isfinite(norms.force_residual) || !std::isfinite(norms.multiplier_residual)) {
+      out.status = NewtonOutcome::Status::Diverged;
+      out.message = "the residual is not finite (NaN or Inf)";
+      return out;
+    }
+    if (iteration >= 4 && norms.force_residual > previous && previous > before_previous) {
+      out.status = NewtonOutcome::Status::Diverged;
+      out.message = "the residual grew in two consecutive iterations";
+      return out;
+    }
+    if (iteration >= controls_.max_iterations) {
+      out.status = NewtonOutcome::Status::TooManyIterations;
+      out.message = "no convergence in " + std::to_string(controls_.max_iterations) + " iterations";
+      return out;
+    }
+
+    try {
+      if (!analysed_) solver_.analyze(tangent), analysed_ = true;
+      solver_.factorize(tangent, problem.symmetric());
+      solver_.solve(-residual, correction);
+    } catch (const SolverError& e) {
+      out.status = NewtonOutcome::Status::SingularMatrix;
+      out.singular_at_start = iteration == 0;
+      out.message = e.what();
+      if (e.equation() >= 0) out.message += " at " + problem.describe_equation(e.equation());
+      return out;
+    }
+    if (!correction.allFinite()) {
+      out.status = NewtonOutcome::Status::Diverged;
+      out.message = "the linear solve returned a non-finite correction";
+      return out;
+    }
+
+    double alpha = 1.0;
+    problem.apply_correction(correction, alpha);
+    if (controls_.line_search) {
+      // Backtrack while the residual grows; at most 5 halvings.
+      Eigen::VectorXd trial;
+      IterationNorms trial_norms;
+      double trial_q = 0;
+      for (int k = 0; k < 5; ++k) {
+        try {
+          problem.evaluate(trial, nullptr, trial_norms, trial_q);
+        } catch (const ModelError&) {
+          trial_norms.force_residual = INFINITY;
+        }
+        if (trial.norm() <= (1 - 1e-4 * alpha) * residual.norm()) break;
+        problem.apply_correction(correction, -0.5 * alpha);
+        alpha *= 0.5;
+      }
+    }
+    before_previous = previous;
+    previous = norms.force_residual;
+    norms.correction = alpha * problem.displacement_norm(correction);
+  }
+}
+
+}  // namespace tether

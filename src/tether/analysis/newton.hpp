@@ -1,0 +1,67 @@
+#pragma once
+/// \file Newton–Raphson iterations for one increment attempt.
+///
+/// Newton sees the problem only through NewtonProblem (assemble, apply a
+/// correction, norms). Convergence is judged by ConvergenceCriteria; an
+/// optional backtracking line search shortens a correction that increases the
+/// residual.
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+
+#include "tether/analysis/convergence.hpp"
+#include "tether/solvers/linear_solver.hpp"
+
+namespace tether {
+
+/// The nonlinear system of one increment, in terms of its free equations.
+class NewtonProblem {
+ public:
+  virtual ~NewtonProblem() = default;
+  /// Residual over the free equations and, when `tangent` is not null, the
+  /// tangent. Returns true when the matrix pattern changed since the last call.
+  /// Fills `norms` (all but correction / previous residual) and the force scale q.
+  virtual bool evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent, IterationNorms& norms,
+                        double& force_scale) = 0;
+  /// u_free += alpha * correction.
+  virtual void apply_correction(const Eigen::VectorXd& correction, double alpha) = 0;
+  /// Largest |correction| over displacement equations.
+  [[nodiscard]] virtual double displacement_norm(const Eigen::VectorXd& correction) const = 0;
+  /// True when the tangent is known to be symmetric (lets the solver use Cholesky).
+  [[nodiscard]] virtual bool symmetric() const = 0;
+  /// Names the unknown of free equation `eq` for messages ("node 12 dof 2").
+  [[nodiscard]] virtual std::string describe_equation(int eq) const = 0;
+};
+
+/// How an attempt ended.
+struct NewtonOutcome {
+  enum class Status { Converged, Diverged, TooManyIterations, SingularMatrix, ElementFailure };
+  Status status = Status::Converged;
+  int iterations = 0;          ///< linear solves done
+  double force_residual = 0;   ///< final max |r| over force rows
+  double force_scale = 0;      ///< q used for the final test
+  std::string message;         ///< why it failed (names the node/dof/element)
+  bool singular_at_start = false;  ///< singular already at the first iteration
+};
+
+/// Called after each iteration (iteration number, norms) for logs.
+using IterationListener = std::function<void(int, const IterationNorms&)>;
+
+class NewtonSolver {
+ public:
+  NewtonSolver(LinearSolver& solver, const Controls& controls, double length_scale);
+
+  /// Iterates from the problem's current state. `averaged_force` is the time
+  /// average of q over earlier increments (0 when none); `n_averaged` how many.
+  NewtonOutcome solve(NewtonProblem& problem, double averaged_force, int n_averaged,
+                      const IterationListener& listener = {});
+
+ private:
+  LinearSolver& solver_;
+  Controls controls_;
+  ConvergenceCriteria criteria_;
+  bool analysed_ = false;
+};
+
+}  // namespace tether

@@ -1,0 +1,63 @@
+#pragma once
+/// \file The step loop of a static analysis: increments with automatic cut-back and growth.
+///
+/// For every `*STEP` the prescribed displacements and loads are ramped (or
+/// scaled by their amplitudes) over the step period; each increment is solved
+/// by Newton. A failed attempt is cut back by the controls' factor; growth
+/// follows two easy increments. When the increment would fall below the minimum,
+/// or the model is singular, the analysis stops: the last converged increment
+/// has already been reported and the summary says why it stopped.
+
+#include <Eigen/Core>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "tether/analysis/analysis_observer.hpp"
+#include "tether/analysis/discretization.hpp"
+#include "tether/solvers/linear_solver.hpp"
+
+namespace tether {
+
+struct AnalysisOptions {
+  SolverKind solver = SolverKind::Auto;
+};
+
+struct AnalysisSummary {
+  bool completed = false;   ///< every step reached its end
+  std::string message;      ///< "analysis complete" or why it stopped
+  int steps = 0;            ///< steps completed
+  int increments = 0;       ///< converged increments in all steps
+  int iterations = 0;       ///< Newton iterations in all attempts
+  int cutbacks = 0;         ///< failed attempts
+};
+
+class StaticAnalysis {
+ public:
+  /// The model must outlive the analysis. Throws ModelError if it cannot be discretized.
+  StaticAnalysis(const Model& model, AnalysisObserver& observer, AnalysisOptions options = {});
+  ~StaticAnalysis();
+
+  /// Runs all steps. Never throws for a model that fails to converge: the
+  /// summary reports it.
+  AnalysisSummary run();
+
+  /// Global unknowns at the last converged increment.
+  [[nodiscard]] const Eigen::VectorXd& solution() const { return u_; }
+  [[nodiscard]] const Discretization& discretization() const { return *discretization_; }
+
+ private:
+  struct StepRun;
+  bool run_step(int index, AnalysisSummary& summary);
+
+  const Model& model_;
+  AnalysisObserver& observer_;
+  AnalysisOptions options_;
+  std::unique_ptr<Discretization> discretization_;
+  Eigen::VectorXd u_;
+  double total_time_ = 0;
+  std::map<std::pair<int, int>, double> cload_end_;     ///< (node, dof) -> magnitude at the end of the last step
+  std::map<std::pair<int, int>, double> pressure_end_;  ///< (element, face) -> magnitude at the end of the last step
+};
+
+}  // namespace tether

@@ -1,0 +1,56 @@
+#include "tether/analysis/step_loads.hpp"
+
+#include "tether/dofs/dof_map.hpp"
+
+namespace tether {
+
+StepLoads make_step_loads(const Step& step, const Eigen::VectorXd& u,
+                          const std::map<std::pair<int, int>, double>& cload_end,
+                          const std::map<std::pair<int, int>, double>& pressure_end) {
+  StepLoads loads;
+  std::map<int, RampedValue> prescribed;
+  for (const Prescribed& p : step.boundary) {
+    const int dof = kDofsPerNode * p.node + p.dof;
+    prescribed[dof] = RampedValue{u[dof], p.value, p.amplitude};
+  }
+  loads.prescribed.assign(prescribed.begin(), prescribed.end());
+
+  std::map<std::pair<int, int>, RampedValue> forces;
+  for (const ConcentratedLoad& c : step.cloads) {
+    const auto key = std::make_pair(c.node, c.dof);
+    auto [it, fresh] = forces.try_emplace(key);
+    if (fresh) {
+      const auto prev = cload_end.find(key);
+      it->second.start = prev == cload_end.end() ? 0.0 : prev->second;
+    }
+    it->second.target += c.magnitude;  // repeated lines on one dof add up
+    it->second.amplitude = c.amplitude;
+  }
+  for (const auto& [key, value] : cload_end)
+    if (!forces.count(key) && value != 0) forces[key] = RampedValue{value, 0.0, -1};
+  for (const auto& [key, value] : forces) loads.forces.emplace_back(kDofsPerNode * key.first + key.second, value);
+
+  std::map<std::pair<int, int>, std::size_t> seen;
+  for (const PressureLoad& p : step.pressures) {
+    const auto key = std::make_pair(p.face.element, p.face.face);
+    const auto prev = pressure_end.find(key);
+    const double start = prev == pressure_end.end() ? 0.0 : prev->second;
+    if (auto it = seen.find(key); it != seen.end()) {
+      loads.pressure_values[it->second].target += p.magnitude;
+      continue;
+    }
+    seen[key] = loads.pressures.size();
+    loads.pressures.push_back(p);
+    loads.pressure_values.push_back(RampedValue{start, p.magnitude, p.amplitude});
+  }
+  for (const auto& [key, value] : pressure_end) {
+    if (seen.count(key) || value == 0) continue;
+    PressureLoad removed;
+    removed.face = ElementFace{key.first, key.second};
+    loads.pressures.push_back(removed);
+    loads.pressure_values.push_back(RampedValue{value, 0.0, -1});
+  }
+  return loads;
+}
+
+}  // namespace tether

@@ -1,0 +1,36 @@
+#pragma once
+/// \file Prescribed values and loads of one step, with their start and target values.
+
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "tether/model/model.hpp"
+
+namespace tether {
+
+/// A magnitude ramped from `start` to `target` over the step, or `target`
+/// times an amplitude.
+struct RampedValue {
+  double start = 0;
+  double target = 0;
+  int amplitude = -1;
+};
+
+/// Everything that varies with time in one step.
+struct StepLoads {
+  std::vector<std::pair<int, RampedValue>> prescribed;  ///< global dof -> value
+  std::vector<std::pair<int, RampedValue>> forces;      ///< global dof -> concentrated force
+  std::vector<PressureLoad> pressures;                  ///< faces loaded in this step (incl. ones being removed)
+  std::vector<RampedValue> pressure_values;             ///< parallel to pressures
+};
+
+/// Builds the step's loads. `u` is the state at the start of the step (start
+/// values of prescribed dofs); `cload_end` and `pressure_end` hold the
+/// magnitudes at the end of the previous step (loads no longer listed are
+/// ramped down to zero, as ABAQUS does in a static step).
+StepLoads make_step_loads(const Step& step, const Eigen::VectorXd& u,
+                          const std::map<std::pair<int, int>, double>& cload_end,
+                          const std::map<std::pair<int, int>, double>& pressure_end);
+
+}  // namespace tether
