@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds tether (Release) and runs the demo deck:
+# the Lame thick cylinder, compared with the exact solution.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --parallel
+./build/bin/tether run examples/lame/lame.inp -o out/lame
+/usr/bin/python3 tools/lame_summary.py out/lame/lame.dat
+echo "ParaView: paraview out/lame/lame.pvd"

@@ -1,0 +1,43 @@
+"""Reader for `.dat` files in CalculiX's block layout (tether writes the same layout).
+
+A block is a header line `<title> for set <SET> and time <T>` followed by rows
+of whitespace-separated numbers. `read(path)` returns a list of dicts with
+keys title, set, time and rows (lists of floats).
+"""
+import re
+
+_HEADER = re.compile(r"^\s*(?P<title>\S.*?)\s+for\s*set\s+(?P<set>\S+)\s+and\s+time\s+(?P<time>\S+)\s*$")
+
+
+def _number(token):
+    return float(token.replace("D", "E").replace("d", "e"))
+
+
+def parse(text):
+    """Blocks of a .dat text, in file order."""
+    blocks, current = [], None
+    for number, line in enumerate(text.splitlines(), start=1):
+        if not line.strip():
+            continue
+        header = _HEADER.match(line)
+        if header:
+            current = {"title": header["title"], "set": header["set"], "time": _number(header["time"]), "rows": []}
+            blocks.append(current)
+            continue
+        if current is None:
+            raise ValueError(f"line {number}: data before any block header: {line!r}")
+        current["rows"].append([_number(t) for t in line.split()])
+    return blocks
+
+
+def read(path):
+    with open(path) as f:
+        return parse(f.read())
+
+
+def last_block(blocks, title_start, set_name):
+    """The last block whose title starts with `title_start` for set `set_name` (case-insensitive)."""
+    found = [b for b in blocks if b["title"].lower().startswith(title_start.lower()) and b["set"].upper() == set_name.upper()]
+    if not found:
+        raise KeyError(f"no '{title_start}' block for set {set_name}")
+    return found[-1]
