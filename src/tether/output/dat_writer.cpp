@@ -17,6 +17,9 @@ namespace {
 
 using Out = std::back_insert_iterator<std::string>;
 
+/// -0.0 prints as 0.0 (x + 0.0 is +0.0 for x = -0.0 under round-to-nearest).
+double unsigned_zero(double x) { return x + 0.0; }
+
 bool is_print(const OutputRequest& r) {
   return r.kind == OutputRequest::Kind::NodePrint || r.kind == OutputRequest::Kind::ElementPrint;
 }
@@ -58,13 +61,14 @@ void write_nodal(Out out, const Model& model, const Selection& sel, const std::v
     write_header(out, what, sel.name, time);
     for (const int i : sel.indices)
       fmt::format_to(out, "{:10d} {:13.6E} {:13.6E} {:13.6E}\n", model.node_ids[static_cast<std::size_t>(i)],
-                     v[static_cast<std::size_t>(i)].x(), v[static_cast<std::size_t>(i)].y(), 0.0);
+                     unsigned_zero(v[static_cast<std::size_t>(i)].x()),
+                     unsigned_zero(v[static_cast<std::size_t>(i)].y()), 0.0);
   }
   if (totals) {
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     for (const int i : sel.indices) sum += v[static_cast<std::size_t>(i)];
     write_header(out, "total force (fx,fy,fz)", sel.name, time);
-    fmt::format_to(out, "       {:13.6E} {:13.6E} {:13.6E}\n", sum.x(), sum.y(), 0.0);
+    fmt::format_to(out, "       {:13.6E} {:13.6E} {:13.6E}\n", unsigned_zero(sum.x()), unsigned_zero(sum.y()), 0.0);
   }
 }
 
@@ -83,7 +87,7 @@ void write_points(Out out, const Model& model, const Selection& sel, const Incre
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Tensor4& t = stress ? points[k].stress : points[k].strain;
       fmt::format_to(out, "{:10d}{:4d} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}\n", label, k + 1,
-                     t[0], t[1], t[2], t[3], 0.0, 0.0);
+                     unsigned_zero(t[0]), unsigned_zero(t[1]), unsigned_zero(t[2]), unsigned_zero(t[3]), 0.0, 0.0);
     }
   }
 }
