@@ -1,0 +1,93 @@
+#include "tether/io/deck_state.hpp"
+
+#include <algorithm>
+
+#include "tether/io/numbers.hpp"
+
+namespace tether::deck {
+
+void DeckState::warn(const SourceLocation& where, std::string message) const {
+  if (warnings) warnings->push_back({where, std::move(message)});
+}
+
+int DeckState::node(int label, const SourceLocation& where) const {
+  const auto it = model.node_index.find(label);
+  if (it == model.node_index.end())
+    throw InputError(where, "undefined node " + std::to_string(label) + ": expected a node defined by *NODE");
+  return it->second;
+}
+
+int DeckState::element(int label, const SourceLocation& where) const {
+  const auto it = model.element_index.find(label);
+  if (it == model.element_index.end())
+    throw InputError(where, "undefined element " + std::to_string(label) +
+                                ": expected an element defined by *ELEMENT");
+  return it->second;
+}
+
+const std::vector<int>& DeckState::node_set(std::string_view name, const SourceLocation& where) const {
+  const auto it = model.node_sets.find(to_upper(name));
+  if (it == model.node_sets.end())
+    throw InputError(where, "undefined node set '" + std::string(name) +
+                                "': expected a node label or a set defined earlier by *NSET or NSET=");
+  return it->second;
+}
+
+const std::vector<int>& DeckState::element_set(std::string_view name, const SourceLocation& where) const {
+  const auto it = model.element_sets.find(to_upper(name));
+  if (it == model.element_sets.end())
+    throw InputError(where, "undefined element set '" + std::string(name) +
+                                "': expected an element label or a set defined earlier by *ELSET or ELSET=");
+  return it->second;
+}
+
+std::vector<int> DeckState::nodes_of(std::string_view token, const SourceLocation& where) const {
+  if (is_integer_token(token)) return {node(parse_label(token, where, "node label"), where)};
+  return node_set(token, where);
+}
+
+std::vector<int> DeckState::elements_of(std::string_view token, const SourceLocation& where) const {
+  if (is_integer_token(token)) return {element(parse_label(token, where, "element label"), where)};
+  return element_set(token, where);
+}
+
+int DeckState::amplitude(std::string_view name, const SourceLocation& where) const {
+  if (name.empty()) return -1;
+  const std::string key = to_upper(name);
+  for (std::size_t i = 0; i < model.amplitudes.size(); ++i)
+    if (model.amplitudes[i].name == key) return static_cast<int>(i);
+  throw InputError(where, "undefined amplitude '" + std::string(name) +
+                              "': expected the name of an *AMPLITUDE defined earlier in the deck");
+}
+
+std::vector<std::string> data_fields(const DataLine& line, std::size_t min_fields, std::size_t max_fields,
+                                     std::string_view what) {
+  std::vector<std::string> f = split_data_line(line.text).fields;
+  while (f.size() > min_fields && f.back().empty()) f.pop_back();
+  if (f.size() < min_fields || (min_fields > 0 && f[0].empty()) ||
+      (max_fields > 0 && f.size() > max_fields))
+    throw InputError(line.where(), "expected " + std::string(what) + " but found '" + line.text + "'");
+  return f;
+}
+
+void require_data(const KeywordBlock& block, std::string_view what) {
+  if (block.data.empty())
+    throw InputError(block.where, "*" + block.keyword + " needs a data line: expected " + std::string(what));
+}
+
+/// Face id "S1".."S4" (0-based result), checked against the element's shape.
+int parse_face_id(const std::string& token, const Element& e, const SourceLocation& at, char prefix) {
+  const std::string t = to_upper(token);
+  const int n = n_faces(e.type.shape);
+  if (t.size() == 2 && t[0] == prefix && t[1] >= '1' && t[1] <= '0' + n) return t[1] - '1';
+  throw InputError(at, "bad face '" + token + "' for element " + std::to_string(e.id) + " (" +
+                           std::string(e.type.name) + "): expected " + prefix + "1.." + prefix +
+                           std::to_string(n));
+}
+
+void sort_unique(std::vector<int>& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+
+}  // namespace tether::deck

@@ -1,0 +1,80 @@
+#pragma once
+/// \file The reader's working state while keyword handlers run, and the
+/// lookups they share (nodes, elements, sets, amplitudes by label or name).
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tether/io/deck_reader.hpp"
+#include "tether/io/line_reader.hpp"
+#include "tether/model/model.hpp"
+
+namespace tether::deck {
+
+/// Everything the keyword handlers read and write.
+struct DeckState {
+  Model model;
+  std::vector<DeckWarning>* warnings = nullptr;
+
+  // --- position in the deck ---
+  int material = -1;         ///< material being defined (material options allowed), else -1
+  bool in_step = false;      ///< between *STEP and *END STEP
+  bool seen_step = false;    ///< a *STEP has been read (model data is over)
+  bool step_has_procedure = false;
+
+  // --- history data in force (OP=MOD/NEW resolved), copied into each step at *END STEP ---
+  std::vector<Prescribed> boundary;
+  std::vector<ConcentratedLoad> cloads;
+  std::vector<PressureLoad> dloads;   ///< from *DLOAD
+  std::vector<PressureLoad> dsloads;  ///< from *DSLOAD
+  Controls controls;                  ///< carried from step to step until *CONTROLS, RESET
+  /// Kinds ("BOUNDARY", "CLOAD", ...) already cleared by OP=NEW in the current step.
+  std::vector<std::string> cleared_this_step;
+
+  // --- *OUTPUT block (for *NODE OUTPUT / *ELEMENT OUTPUT) ---
+  bool output_active = false;
+  bool output_field = true;  ///< FIELD (file) or HISTORY (print)
+  int output_frequency = 1;
+
+  // --- resolved after the whole deck is read ---
+  std::vector<std::string> section_material;  ///< material name of each section (upper case)
+
+  /// Records a warning.
+  void warn(const SourceLocation& where, std::string message) const;
+
+  /// The step being read (precondition: in_step).
+  Step& step() { return model.steps.back(); }
+
+  /// Node index of a label; InputError "undefined node N" otherwise.
+  [[nodiscard]] int node(int label, const SourceLocation& where) const;
+  /// Element index of a label; InputError "undefined element N" otherwise.
+  [[nodiscard]] int element(int label, const SourceLocation& where) const;
+  /// Node indices of a data token: a node label or the name of a node set.
+  [[nodiscard]] std::vector<int> nodes_of(std::string_view token, const SourceLocation& where) const;
+  /// Element indices of a data token: an element label or the name of an element set.
+  [[nodiscard]] std::vector<int> elements_of(std::string_view token, const SourceLocation& where) const;
+  /// Members of a named node set (upper-cased); InputError if undefined.
+  [[nodiscard]] const std::vector<int>& node_set(std::string_view name, const SourceLocation& where) const;
+  /// Members of a named element set (upper-cased); InputError if undefined.
+  [[nodiscard]] const std::vector<int>& element_set(std::string_view name, const SourceLocation& where) const;
+  /// Amplitude index by name, -1 for an empty name; InputError if undefined.
+  [[nodiscard]] int amplitude(std::string_view name, const SourceLocation& where) const;
+};
+
+/// Fields of a data line, with at least `min_fields` of them (InputError
+/// "expected <what>" otherwise) and at most `max_fields` (0 = no limit).
+std::vector<std::string> data_fields(const DataLine& line, std::size_t min_fields, std::size_t max_fields,
+                                     std::string_view what);
+
+/// Throws InputError at the keyword line when the block has no data line.
+void require_data(const KeywordBlock& block, std::string_view what);
+
+/// Face id `<prefix>1..<prefix>n` ("S2", "P3"; case-insensitive) of element
+/// `e`, returned 0-based; InputError naming the allowed range otherwise.
+int parse_face_id(const std::string& token, const Element& e, const SourceLocation& at, char prefix);
+
+/// Sorts and removes duplicates.
+void sort_unique(std::vector<int>& v);
+
+}  // namespace tether::deck

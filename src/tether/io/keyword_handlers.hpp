@@ -1,0 +1,48 @@
+#pragma once
+/// \file One handler per supported keyword (see keyword_table.cpp for the
+/// declarations of their parameters). Each reads one keyword block into the
+/// DeckState and throws InputError (file:line) on bad input.
+
+#include "tether/io/keyword_table.hpp"
+
+namespace tether::deck {
+
+#define TETHER_DECK_HANDLER(name) void name(DeckState&, const KeywordBlock&, const ParameterValues&)
+
+// mesh_keywords.cpp
+TETHER_DECK_HANDLER(handle_heading);
+TETHER_DECK_HANDLER(handle_node);
+TETHER_DECK_HANDLER(handle_element);
+// set_keywords.cpp
+TETHER_DECK_HANDLER(handle_nset);
+TETHER_DECK_HANDLER(handle_elset);
+TETHER_DECK_HANDLER(handle_surface);
+// material_keywords.cpp
+TETHER_DECK_HANDLER(handle_material);
+TETHER_DECK_HANDLER(handle_elastic);
+TETHER_DECK_HANDLER(handle_hyperelastic);
+TETHER_DECK_HANDLER(handle_density);
+TETHER_DECK_HANDLER(handle_solid_section);
+// load_keywords.cpp
+TETHER_DECK_HANDLER(handle_amplitude);
+TETHER_DECK_HANDLER(handle_boundary);
+TETHER_DECK_HANDLER(handle_cload);
+TETHER_DECK_HANDLER(handle_dload);
+TETHER_DECK_HANDLER(handle_dsload);
+// step_keywords.cpp
+TETHER_DECK_HANDLER(handle_step);
+TETHER_DECK_HANDLER(handle_static);
+TETHER_DECK_HANDLER(handle_controls);
+TETHER_DECK_HANDLER(handle_end_step);
+// output_keywords.cpp
+TETHER_DECK_HANDLER(handle_node_print);
+TETHER_DECK_HANDLER(handle_el_print);
+TETHER_DECK_HANDLER(handle_node_file);
+TETHER_DECK_HANDLER(handle_el_file);
+TETHER_DECK_HANDLER(handle_output);
+TETHER_DECK_HANDLER(handle_node_output);
+TETHER_DECK_HANDLER(handle_element_output);
+
+#undef TETHER_DECK_HANDLER
+
+}  // namespace tether::deck

@@ -1,0 +1,221 @@
+// The declaration table of every keyword the reader knows. Adding a keyword:
+// one entry here + one handler in the matching *_keywords.cpp file.
+#include "tether/io/keyword_table.hpp"
+
+#include <stdexcept>
+
+#include "tether/io/keyword_handlers.hpp"
+
+namespace tether::deck {
+
+namespace {
+
+using PT = ParameterType;
+
+ParameterSpec flag(std::string_view name, std::string_view description) {
+  return {name, PT::Flag, "", {}, false, "", description};
+}
+ParameterSpec name(std::string_view name, std::string_view description, bool required = false) {
+  return {name, PT::Name, "", {}, required, "", description};
+}
+ParameterSpec integer(std::string_view name, std::string_view default_value, std::string_view description) {
+  return {name, PT::Integer, default_value, {}, false, "", description};
+}
+ParameterSpec choice(std::string_view name, std::string_view default_value,
+                     std::vector<std::string_view> choices, std::string_view description,
+                     std::string_view flag_value = "") {
+  return {name, PT::Choice, default_value, std::move(choices), false, flag_value, description};
+}
+
+ParameterSpec amplitude_param() {
+  return name("AMPLITUDE", "Amplitude scaling the values over the step; without it the value is ramped "
+                           "linearly over the step from the previous step's value.");
+}
+ParameterSpec op_param() {
+  return choice("OP", "MOD", {"MOD", "NEW"},
+                "MOD: add to / replace entries with the same node and dof (or face); NEW (in a step): "
+                "first remove all entries of this kind inherited from model data and earlier steps.");
+}
+ParameterSpec frequency_param() {
+  return integer("FREQUENCY", "1", "Write every n-th increment (0: never); the last increment of the step "
+                                   "is always written.");
+}
+
+std::vector<KeywordSpec> build_table() {
+  constexpr unsigned kAnyStep = kStep;
+  constexpr std::string_view kLater = "planned for a later version of tether";
+  return {
+      // --- lexer ---
+      {"INCLUDE", kModelData | kMaterial | kStep | kBetweenSteps,
+       "Reads another file in place of this line (relative to the including file).", "",
+       {{"INPUT", PT::Text, "", {}, true, "", "Path of the file to read."}}, nullptr, ""},
+      // --- model data: mesh ---
+      {"HEADING", kModelData, "Title of the analysis; the data lines are kept as the model heading.",
+       "free text lines", {}, handle_heading, ""},
+      {"NODE", kModelData, "Defines nodes by label and coordinates.",
+       "`label, x, y[, z]` (z must be 0 or absent; (r, z) for axisymmetric models)",
+       {name("NSET", "Also add the nodes to this node set.")}, handle_node, ""},
+      {"ELEMENT", kModelData, "Defines 2D continuum elements of one type.",
+       "`label, n1, n2, ...` in ABAQUS node order; a line ending with ',' continues on the next",
+       {name("TYPE", "Element type: CPE3/4/6/8/8R, CPS3/4/6/8/8R, CAX3/4/6/8/8R.", true),
+        name("ELSET", "Also add the elements to this element set.")},
+       handle_element, ""},
+      {"NSET", kModelData, "Defines or extends a node set.",
+       "node labels or names of node sets; with GENERATE: `first, last[, increment]`",
+       {name("NSET", "Name of the set.", true), flag("GENERATE", "Data lines are `first, last[, increment]`.")},
+       handle_nset, ""},
+      {"ELSET", kModelData, "Defines or extends an element set.",
+       "element labels or names of element sets; with GENERATE: `first, last[, increment]`",
+       {name("ELSET", "Name of the set.", true),
+        flag("GENERATE", "Data lines are `first, last[, increment]`.")},
+       handle_elset, ""},
+      {"SURFACE", kModelData, "Defines a surface from element faces or from nodes.",
+       "TYPE=ELEMENT: `element_or_elset, S1..S4`; TYPE=NODE: `node_or_nset`",
+       {name("NAME", "Name of the surface.", true),
+        choice("TYPE", "ELEMENT", {"ELEMENT", "NODE"}, "Element-face surface or node surface.")},
+       handle_surface, ""},
+      // --- model data: materials and sections ---
+      {"MATERIAL", kModelData, "Starts a material; the material options (*ELASTIC, ...) follow it.", "",
+       {name("NAME", "Name of the material.", true)}, handle_material, ""},
+      {"ELASTIC", kMaterial, "Isotropic linear elasticity (small strain; St. Venant-Kirchhoff under NLGEOM).",
+       "`E, nu` with E > 0 and -1 < nu < 0.5",
+       {choice("TYPE", "ISOTROPIC", {"ISOTROPIC"}, "Only isotropic elasticity is supported.")}, handle_elastic,
+       ""},
+      {"HYPERELASTIC", kMaterial, "Compressible neo-Hookean hyperelasticity.", "`C10, D1` with C10 > 0, D1 > 0",
+       {flag("NEO HOOKE", "Neo-Hookean strain energy (required; the only model supported).")},
+       handle_hyperelastic, ""},
+      {"DENSITY", kMaterial, "Mass density (kept for dynamics; unused by static steps).", "`rho`", {},
+       handle_density, ""},
+      {"SOLID SECTION", kModelData, "Assigns a material (and thickness) to an element set.",
+       "optional `thickness` (default 1; ignored for axisymmetric elements)",
+       {name("ELSET", "Element set the section applies to.", true),
+        name("MATERIAL", "Name of the material.", true)},
+       handle_solid_section, ""},
+      {"AMPLITUDE", kModelData | kStep, "Piecewise-linear time function, constant beyond its ends.",
+       "pairs `t, a` (any number per line, over as many lines as needed), times strictly increasing",
+       {name("NAME", "Name of the amplitude.", true),
+        choice("TIME", "STEP TIME", {"STEP TIME", "TOTAL TIME"}, "Time measure of the table."),
+        choice("DEFINITION", "TABULAR", {"TABULAR"}, "Only tabular amplitudes are supported.")},
+       handle_amplitude, ""},
+      // --- boundary conditions and loads (model data for *BOUNDARY, else history data) ---
+      {"BOUNDARY", kModelData | kAnyStep, "Prescribes displacement components.",
+       "`node_or_nset, first_dof[, last_dof[, value]]` or `node_or_nset, TYPE` with TYPE one of ENCASTRE, "
+       "PINNED, XSYMM, YSYMM, XASYMM, YASYMM, ZASYMM (mapped onto dofs 1-2). Dof 3 with value 0 is "
+       "ignored with a warning (2D); dofs 4-6 in a range starting at 1-3 are ignored with a warning; "
+       "other dofs are errors",
+       {amplitude_param(), op_param(),
+        choice("TYPE", "DISPLACEMENT", {"DISPLACEMENT"}, "Only displacement boundary conditions are supported.")},
+       handle_boundary, ""},
+      {"CLOAD", kAnyStep, "Concentrated nodal forces.", "`node_or_nset, dof (1 or 2), magnitude`",
+       {amplitude_param(), op_param()}, handle_cload, ""},
+      {"DLOAD", kAnyStep, "Pressure on element faces (positive pushes into the face).",
+       "`element_or_elset, P1..P4, magnitude` (Pn = pressure on face Sn)",
+       {amplitude_param(), op_param()}, handle_dload, ""},
+      {"DSLOAD", kAnyStep, "Pressure on an element-face surface (positive pushes into the face).",
+       "`surface, P, magnitude`", {amplitude_param(), op_param()}, handle_dsload, ""},
+      // --- steps ---
+      {"STEP", kModelData | kBetweenSteps, "Starts a step; ends with *END STEP.", "",
+       {choice("NLGEOM", "NO", {"YES", "NO"}, "Geometric nonlinearity (bare NLGEOM means YES).", "YES"),
+        integer("INC", "100", "Maximum number of increments."), name("NAME", "Name of the step.")},
+       handle_step, ""},
+      {"STATIC", kAnyStep, "Static procedure with automatic (or fixed, DIRECT) incrementation.",
+       "`initial, period, min, max` (defaults 1, 1, 1e-5*period, period)",
+       {flag("DIRECT", "Fixed increments of the initial size, no cut-back."),
+        name("SOLVER", "Accepted for CalculiX compatibility and ignored (tether chooses the linear solver).")},
+       handle_static, ""},
+      {"CONTROLS", kAnyStep,
+       "Convergence and incrementation controls; they stay in force for later steps until RESET.",
+       "FIELD: `R_n, C_n, q0, qu, R_P, eps, C_eps, R_l` (R_n, C_n and eps are used); TIME INCREMENTATION: "
+       "line 1 `I0, IR, IP, IC, IL, IG, IS, IA, IJ, IT` (IC = max iterations per attempt, IG = easy "
+       "iterations, IA = max cut-backs are used), line 2 `Df, DC, DB, DA, DS, DH, DD, WG` (Df = cut-back "
+       "factor, DD = growth factor are used); LINE SEARCH: `N_ls` (0 turns it off). Other values are "
+       "ignored with a warning",
+       {choice("PARAMETERS", "", {"FIELD", "TIME INCREMENTATION", "LINE SEARCH"}, "Which controls the data set."),
+        flag("RESET", "Restore all controls to their defaults."),
+        choice("FIELD", "GLOBAL", {"GLOBAL", "DISPLACEMENT"}, "Field the FIELD controls apply to (tether has "
+                                                               "only displacements).")},
+       handle_controls, ""},
+      {"END STEP", kAnyStep, "Ends the current step.", "", {}, handle_end_step, ""},
+      // --- output requests (apply to their step only) ---
+      {"NODE PRINT", kAnyStep, "Nodal values in the text report.", "variables: U, RF",
+       {name("NSET", "Node set (default: all nodes)."), frequency_param(),
+        choice("TOTALS", "NO", {"YES", "ONLY", "NO"}, "Also (YES) or only (ONLY) print the sums over the set.")},
+       handle_node_print, ""},
+      {"EL PRINT", kAnyStep, "Element integration-point values in the text report.", "variables: S, E",
+       {name("ELSET", "Element set (default: all elements)."), frequency_param()}, handle_el_print, ""},
+      {"NODE FILE", kAnyStep, "Nodal values in the result files (VTU).", "variables: U, RF",
+       {name("NSET", "Node set (default: all nodes)."), frequency_param(),
+        name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
+       handle_node_file, ""},
+      {"EL FILE", kAnyStep, "Element values in the result files (VTU).", "variables: S, E",
+       {name("ELSET", "Element set (default: all elements)."), frequency_param(),
+        name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
+       handle_el_file, ""},
+      {"OUTPUT", kAnyStep, "Starts an ABAQUS output block: FIELD (result files) or HISTORY (text report).", "",
+       {flag("FIELD", "Field output: *NODE OUTPUT / *ELEMENT OUTPUT go to the result files."),
+        flag("HISTORY", "History output: they go to the text report."), frequency_param(),
+        choice("VARIABLE", "", {"PRESELECT", "ALL"}, "Request U, RF, S and E for the whole model.")},
+       handle_output, ""},
+      {"NODE OUTPUT", kAnyStep, "Nodal variables of the current *OUTPUT block.", "variables: U, RF",
+       {name("NSET", "Node set (default: all nodes).")}, handle_node_output, ""},
+      {"ELEMENT OUTPUT", kAnyStep, "Element variables of the current *OUTPUT block.", "variables: S, E",
+       {name("ELSET", "Element set (default: all elements).")}, handle_element_output, ""},
+      // --- recognised, not supported yet: a clear error, never silently dropped ---
+      {"EQUATION", kModelData | kAnyStep, "Linear multi-point constraint.", "", {}, nullptr, kLater},
+      {"MPC", kModelData | kAnyStep, "Multi-point constraint.", "", {}, nullptr, kLater},
+      {"TIE", kModelData, "Tie constraint between surfaces.", "", {}, nullptr, kLater},
+      {"CONTACT PAIR", kModelData | kAnyStep, "Contact between two surfaces.", "", {}, nullptr, kLater},
+      {"SURFACE INTERACTION", kModelData, "Contact property.", "", {}, nullptr, kLater},
+      {"SURFACE BEHAVIOR", kModelData, "Pressure-overclosure law.", "", {}, nullptr, kLater},
+      {"FRICTION", kModelData, "Friction law.", "", {}, nullptr, kLater},
+      {"CONTACT PRINT", kAnyStep, "Contact output in the text report.", "", {}, nullptr, kLater},
+      {"CONTACT FILE", kAnyStep, "Contact output in the result files.", "", {}, nullptr, kLater},
+      {"CONTACT OUTPUT", kAnyStep, "Contact output request.", "", {}, nullptr, kLater},
+      {"DYNAMIC", kAnyStep, "Implicit dynamic procedure.", "", {}, nullptr, kLater},
+      {"INITIAL CONDITIONS", kModelData, "Initial values of state variables.", "", {}, nullptr, kLater},
+      {"PLASTIC", kMaterial, "Metal plasticity.", "", {}, nullptr, "tether's materials are elastic only"},
+      {"EXPANSION", kMaterial, "Thermal expansion.", "", {}, nullptr, "tether has no thermal analysis"},
+      {"ORIENTATION", kModelData, "Local material directions.", "", {}, nullptr,
+       "tether's materials are isotropic"},
+      {"TRANSFORM", kModelData, "Local nodal directions.", "", {}, nullptr, kLater},
+      {"FREQUENCY", kAnyStep, "Eigenfrequency procedure.", "", {}, nullptr, "tether solves static problems"},
+      {"BUCKLE", kAnyStep, "Buckling procedure.", "", {}, nullptr, "tether solves static problems"},
+      {"HEAT TRANSFER", kAnyStep, "Heat-transfer procedure.", "", {}, nullptr, "tether has no thermal analysis"},
+      {"TEMPERATURE", kAnyStep, "Prescribed temperatures.", "", {}, nullptr, "tether has no thermal analysis"},
+  };
+}
+
+}  // namespace
+
+const std::vector<KeywordSpec>& keyword_table() {
+  static const std::vector<KeywordSpec> table = build_table();
+  return table;
+}
+
+const KeywordSpec* lookup_keyword(std::string_view name) {
+  for (const KeywordSpec& k : keyword_table())
+    if (k.name == name) return &k;
+  return nullptr;
+}
+
+const KeywordSpec& find_keyword(std::string_view name) {
+  const KeywordSpec* k = lookup_keyword(name);
+  if (!k) throw std::out_of_range("keyword table has no *" + std::string(name));
+  return *k;
+}
+
+std::string context_text(unsigned where) {
+  std::string out;
+  const auto add = [&](unsigned bit, const char* text) {
+    if (!(where & bit)) return;
+    if (!out.empty()) out += ", ";
+    out += text;
+  };
+  add(kModelData, "model data (before the first *STEP)");
+  add(kMaterial, "material data (after *MATERIAL)");
+  add(kStep, "inside a step (*STEP ... *END STEP)");
+  add(kBetweenSteps, "between steps");
+  return out;
+}
+
+}  // namespace tether::deck

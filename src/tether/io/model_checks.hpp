@@ -1,0 +1,20 @@
+#pragma once
+/// \file Checks of the whole model after the last keyword: section and
+/// material resolution, element orientation. Each failure is an InputError
+/// at the deck line of the offending definition.
+
+#include "tether/io/deck_state.hpp"
+
+namespace tether::deck {
+
+/// Resolves section materials, assigns a section to every element and
+/// validates the model (every element in exactly one section, every material
+/// with elastic data, no inverted or degenerate element, r >= 0 for
+/// axisymmetric elements).
+void check_model(DeckState& state);
+
+/// Determinant of the isoparametric Jacobian at each corner of `e` (in
+/// corner order), from the reference coordinates of the model.
+std::vector<double> corner_jacobians(const Model& model, const Element& e);
+
+}  // namespace tether::deck

@@ -1,0 +1,175 @@
+// *STEP, *STATIC, *CONTROLS, *END STEP.
+#include <algorithm>
+#include <optional>
+
+#include "tether/io/deck_state.hpp"
+#include "tether/io/keyword_handlers.hpp"
+#include "tether/io/numbers.hpp"
+
+namespace tether::deck {
+
+namespace {
+
+/// Field i of a data line as a number, or nullopt when absent/blank.
+std::optional<double> real_field(const std::vector<std::string>& f, std::size_t i, const SourceLocation& at,
+                                 std::string_view what) {
+  if (i >= f.size() || f[i].empty()) return std::nullopt;
+  return parse_real(f[i], at, what);
+}
+
+std::optional<int> int_field(const std::vector<std::string>& f, std::size_t i, const SourceLocation& at,
+                             std::string_view what) {
+  if (i >= f.size() || f[i].empty()) return std::nullopt;
+  const int v = parse_int(f[i], at, what);
+  if (v <= 0) throw InputError(at, std::string(what) + " = " + f[i] + ": expected a positive integer");
+  return v;
+}
+
+/// Warns about non-blank fields tether reads but does not use.
+void warn_unused(DeckState& state, const std::vector<std::string>& f, const std::vector<std::size_t>& used,
+                 const std::vector<std::string_view>& names, const SourceLocation& at) {
+  std::string ignored;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (f[i].empty() || std::find(used.begin(), used.end(), i) != used.end()) continue;
+    ignored += (ignored.empty() ? "" : ", ") + (i < names.size() ? std::string(names[i]) : "field " + std::to_string(i + 1));
+  }
+  if (!ignored.empty()) state.warn(at, "*CONTROLS values not used by tether ignored: " + ignored);
+}
+
+void read_field_controls(DeckState& state, const KeywordBlock& block, Controls& c) {
+  require_data(block, "`R_n, C_n, q0, qu, R_P, eps, C_eps, R_l`");
+  const DataLine& line = block.data[0];
+  const SourceLocation at = line.where();
+  const auto f = data_fields(line, 0, 8, "`R_n, C_n, q0, qu, R_P, eps, C_eps, R_l`");
+  const auto positive = [&](std::size_t i, std::string_view what, double& target) {
+    if (const auto v = real_field(f, i, at, what)) {
+      if (!(*v > 0)) throw InputError(at, std::string(what) + " = " + f[i] + ": expected a value > 0");
+      target = *v;
+    }
+  };
+  positive(0, "R_n", c.residual_tolerance);
+  positive(1, "C_n", c.correction_tolerance);
+  positive(5, "eps", c.zero_force_tolerance);
+  warn_unused(state, f, {0, 1, 5}, {"R_n", "C_n", "q0", "qu", "R_P", "eps", "C_eps", "R_l"}, at);
+  for (std::size_t i = 1; i < block.data.size(); ++i)
+    state.warn(block.data[i].where(), "further *CONTROLS, PARAMETERS=FIELD lines are not used by tether: ignored");
+}
+
+void read_time_controls(DeckState& state, const KeywordBlock& block, Controls& c) {
+  require_data(block, "`I0, IR, IP, IC, IL, IG, IS, IA, IJ, IT`");
+  if (block.data.size() > 2)
+    throw InputError(block.data[2].where(), "*CONTROLS, PARAMETERS=TIME INCREMENTATION has at most two data "
+                                            "lines: expected `I0, ..., IT` and `Df, DC, ..., WG`");
+  const DataLine& line1 = block.data[0];
+  const auto f1 = data_fields(line1, 0, 10, "`I0, IR, IP, IC, IL, IG, IS, IA, IJ, IT`");
+  if (const auto v = int_field(f1, 3, line1.where(), "IC")) c.max_iterations = *v;
+  if (const auto v = int_field(f1, 5, line1.where(), "IG")) c.easy_iterations = *v;
+  if (const auto v = int_field(f1, 7, line1.where(), "IA")) c.max_cutbacks = *v;
+  warn_unused(state, f1, {3, 5, 7}, {"I0", "IR", "IP", "IC", "IL", "IG", "IS", "IA", "IJ", "IT"}, line1.where());
+  if (block.data.size() < 2) return;
+  const DataLine& line2 = block.data[1];
+  const SourceLocation at = line2.where();
+  const auto f2 = data_fields(line2, 0, 8, "`Df, DC, DB, DA, DS, DH, DD, WG`");
+  if (const auto v = real_field(f2, 0, at, "Df")) {
+    if (!(*v > 0 && *v < 1)) throw InputError(at, "Df = " + f2[0] + ": expected a cut-back factor 0 < Df < 1");
+    c.cutback_factor = *v;
+  }
+  if (const auto v = real_field(f2, 6, at, "DD")) {
+    if (!(*v > 1)) throw InputError(at, "DD = " + f2[6] + ": expected a growth factor DD > 1");
+    c.growth_factor = *v;
+  }
+  warn_unused(state, f2, {0, 6}, {"Df", "DC", "DB", "DA", "DS", "DH", "DD", "WG"}, at);
+}
+
+}  // namespace
+
+void handle_step(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  Step s;
+  s.name = params.given("NAME") ? params.text("NAME") : "Step-" + std::to_string(state.model.steps.size() + 1);
+  s.nlgeom = params.name("NLGEOM") == "YES";
+  s.max_increments = params.integer("INC");
+  if (s.max_increments <= 0)
+    throw InputError(block.where, "INC=" + params.text("INC") + ": expected a positive number of increments");
+  s.where = block.where;
+  if (!block.data.empty())
+    state.warn(block.data[0].where(), "*STEP data lines (a step title) are ignored");
+  state.model.steps.push_back(std::move(s));
+  state.in_step = true;
+  state.seen_step = true;
+  state.step_has_procedure = false;
+  state.cleared_this_step.clear();
+  state.output_active = false;
+}
+
+void handle_static(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  if (state.step_has_procedure)
+    throw InputError(block.where, "second procedure in step " + state.step().name +
+                                      ": expected one *STATIC per step");
+  if (params.given("SOLVER")) state.warn(block.where, "SOLVER=" + params.text("SOLVER") + " ignored");
+  Step& s = state.step();
+  s.direct = params.given("DIRECT");
+  if (block.data.size() > 1)
+    throw InputError(block.data[1].where(), "*STATIC has one data line: expected `initial, period, min, max`");
+  if (!block.data.empty()) {
+    const DataLine& line = block.data[0];
+    const SourceLocation at = line.where();
+    const auto f = data_fields(line, 0, 4, "`initial, period, min, max`");
+    const auto initial = real_field(f, 0, at, "initial increment");
+    if (const auto v = real_field(f, 1, at, "step period")) s.period = *v;
+    if (!(s.period > 0)) throw InputError(at, "step period " + f[1] + ": expected a period > 0");
+    s.initial_increment = initial.value_or(s.period);
+    if (!(s.initial_increment > 0 && s.initial_increment <= s.period))
+      throw InputError(at, "initial increment " + f[0] + ": expected 0 < initial <= period (" +
+                               std::to_string(s.period) + ")");
+    if (const auto v = real_field(f, 2, at, "minimum increment")) s.min_increment = *v;
+    if (const auto v = real_field(f, 3, at, "maximum increment")) s.max_increment = *v;
+    if (s.min_increment < 0 || s.min_increment > s.initial_increment)
+      throw InputError(at, "minimum increment " + f[2] + ": expected 0 <= min <= initial increment");
+    if (s.max_increment != 0 && s.max_increment < s.initial_increment)
+      throw InputError(at, "maximum increment " + f[3] + ": expected max >= initial increment");
+  }
+  state.step_has_procedure = true;
+}
+
+void handle_controls(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  Controls& c = state.controls;
+  if (params.given("RESET")) c = Controls{};
+  const std::string kind = params.name("PARAMETERS");
+  if (kind.empty()) {
+    if (!params.given("RESET"))
+      throw InputError(block.where, "*CONTROLS needs PARAMETERS=FIELD, TIME INCREMENTATION or LINE SEARCH, or RESET");
+    if (!block.data.empty()) throw InputError(block.data[0].where(), "*CONTROLS, RESET takes no data lines");
+    return;
+  }
+  if (kind == "FIELD") {
+    read_field_controls(state, block, c);
+  } else if (kind == "TIME INCREMENTATION") {
+    read_time_controls(state, block, c);
+  } else {  // LINE SEARCH
+    c.line_search = true;
+    if (!block.data.empty()) {
+      const auto f = data_fields(block.data[0], 0, 5, "`N_ls, ...`");
+      if (!f.empty() && !f[0].empty())
+        c.line_search = parse_int(f[0], block.data[0].where(), "N_ls") > 0;
+      warn_unused(state, f, {0}, {"N_ls", "s_max", "s_min", "f_s", "eta_ls"}, block.data[0].where());
+    }
+  }
+}
+
+void handle_end_step(DeckState& state, const KeywordBlock& block, const ParameterValues&) {
+  if (!state.step_has_procedure)
+    throw InputError(state.step().where, "step " + state.step().name +
+                                             " has no procedure: expected *STATIC between *STEP and *END STEP");
+  if (!block.data.empty())
+    throw InputError(block.data[0].where(), "*END STEP takes no data lines: expected a keyword line");
+  Step& s = state.step();
+  s.controls = state.controls;
+  s.boundary = state.boundary;
+  s.cloads = state.cloads;
+  s.pressures = state.dloads;
+  s.pressures.insert(s.pressures.end(), state.dsloads.begin(), state.dsloads.end());
+  state.in_step = false;
+  state.output_active = false;
+}
+
+}  // namespace tether::deck
