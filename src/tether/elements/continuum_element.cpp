@@ -1,5 +1,6 @@
 #include "tether/elements/continuum_element.hpp"
 
+#include <Eigen/LU>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>

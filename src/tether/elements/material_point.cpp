@@ -1,5 +1,7 @@
 #include "tether/elements/material_point.hpp"
 
+#include <Eigen/LU>
+#include <cmath>
 #include <fmt/format.h>
 
 #include "tether/materials/plane_stress.hpp"
