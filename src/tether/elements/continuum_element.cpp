@@ -1,6 +1,7 @@
 #include "tether/elements/continuum_element.hpp"
 
 #include <Eigen/LU>
+#include <cassert>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
@@ -102,6 +103,7 @@ template <int NN>
 void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalSystem& out,
                                        bool need_tangent) const {
   constexpr int ND = 2 * NN;
+  assert(out.residual.size() == ND && (!need_tangent || out.tangent.rows() == ND));
   using Nodal = Eigen::Matrix<double, NN, 1>;
   const Eigen::Map<const Eigen::Matrix<double, 2, NN>> U(ue_ptr);  // column a = displacement of node a
   Eigen::Map<Eigen::Matrix<double, ND, 1>> r(out.residual.data());
