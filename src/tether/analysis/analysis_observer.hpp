@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "tether/analysis/convergence.hpp"
 #include "tether/model/model.hpp"
 #include "tether/model/results.hpp"
 
@@ -27,6 +28,9 @@ struct IncrementReport {
 class AnalysisObserver {
  public:
   virtual ~AnalysisObserver() = default;
+  /// After each Newton iteration: `iteration` counts the solves done so far
+  /// (0 = the residual of the starting state).
+  virtual void on_iteration(int /*iteration*/, const IterationNorms& /*norms*/) {}
   /// After each attempt (converged or cut back).
   virtual void on_increment(const IncrementReport& /*report*/) {}
   /// After each converged increment, with its results. `last_in_step` is true for the final one.

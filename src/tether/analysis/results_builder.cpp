@@ -21,7 +21,7 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   const int n_elements = static_cast<int>(elements.size());
   r.points.resize(n_elements);
   std::vector<std::vector<Tensor4>> element_stress(n_elements), element_strain(n_elements);
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (n_elements >= 2048)
   for (int e = 0; e < n_elements; ++e) {
     elements[e]->point_values(state, r.points[e]);
     elements[e]->extrapolate_to_nodes(r.points[e], element_stress[e], element_strain[e]);

@@ -117,7 +117,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     NewtonOutcome outcome;
     int iterations = 0;
     for (int pass = 0; pass < kMaxAcceptancePasses; ++pass) {
-      outcome = newton.solve(problem, averaged_force, n_averaged);
+      outcome = newton.solve(problem, averaged_force, n_averaged,
+                             [this](int it, const IterationNorms& n) { observer_.on_iteration(it, n); });
       iterations += outcome.iterations;
       if (outcome.status != NewtonOutcome::Status::Converged) break;
       bool again = false;

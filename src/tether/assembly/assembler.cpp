@@ -15,7 +15,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-constexpr int kMaxColours = 64;
+/// Below this many contributions a colour is assembled on one thread: thread
+/// start-up costs more than it saves.
+constexpr int kParallelThreshold = 2048;
 
 }  // namespace
 
@@ -90,7 +92,7 @@ void Assembler::build_pattern() {
     offsets_[c + 1] = offsets_[c] + m * m;
   }
   positions_.assign(offsets_[n_contrib], -1);
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (n_contrib >= kParallelThreshold)
   for (int c = 0; c < n_contrib; ++c) {
     const auto dofs = contributions_[c]->dofs();
     const std::size_t m = dofs.size();
@@ -143,7 +145,7 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   for (std::size_t k = 0; k < colours_.size(); ++k) {
     const std::vector<int>& colour = colours_[k];
     const int count = static_cast<int>(colour.size());
-    const bool serial = last_colour_serial_ && k + 1 == colours_.size();
+    const bool serial = (last_colour_serial_ && k + 1 == colours_.size()) || count < kParallelThreshold;
 #pragma omp parallel if (!serial)
     {
       LocalSystem local;

@@ -1,0 +1,61 @@
+#pragma once
+// Test helper: runs a deck given as text and records what the analysis reports.
+
+#include <string>
+#include <vector>
+
+#include "tether/analysis/static_analysis.hpp"
+#include "tether/io/deck_reader.hpp"
+
+namespace tether::testing {
+
+/// Records every report of an analysis.
+class Recorder final : public AnalysisObserver {
+ public:
+  void on_iteration(int iteration, const IterationNorms& norms) override {
+    if (iteration == 0) residuals.emplace_back();
+    residuals.back().push_back(norms.force_residual);
+  }
+  void on_increment(const IncrementReport& r) override { increments.push_back(r); }
+  void on_results(const IncrementResults& r, const Step&, bool) override { results.push_back(r); }
+
+  std::vector<std::vector<double>> residuals;  ///< per attempt, per iteration
+  std::vector<IncrementReport> increments;
+  std::vector<IncrementResults> results;
+};
+
+struct Run {
+  Model model;
+  AnalysisSummary summary;
+  Recorder recorder;
+  /// Results of the last converged increment.
+  [[nodiscard]] const IncrementResults& last() const { return recorder.results.back(); }
+  /// Index of the node with label `id`.
+  [[nodiscard]] int node(int id) const { return model.node_index.at(id); }
+  /// Sum of the reactions over a node set, component c.
+  [[nodiscard]] double reaction_sum(const std::string& set, int c) const {
+    double s = 0;
+    for (int n : model.node_sets.at(set)) s += last().reaction[n][c];
+    return s;
+  }
+};
+
+/// Reads `text` (named "test.inp") and runs it.
+inline Run run_deck_text(const std::string& text, AnalysisOptions options = {}) {
+  Run run;
+  run.model = read_deck_string(text, "test.inp");
+  StaticAnalysis analysis(run.model, run.recorder, options);
+  run.summary = analysis.run();
+  return run;
+}
+
+/// Reads a deck file and runs it.
+inline Run run_deck_file(const std::string& path, AnalysisOptions options = {}) {
+  Run run;
+  run.model = read_deck(path);
+  StaticAnalysis analysis(run.model, run.recorder, options);
+  run.summary = analysis.run();
+  return run;
+}
+
+}  // namespace tether::testing

@@ -1,0 +1,189 @@
+// Whole-analysis tests on small decks with exact answers.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "run_deck.hpp"
+
+using namespace tether;
+using tether::testing::run_deck_text;
+
+namespace {
+
+/// A strip [0, L] x [0, H] of nx x ny 4-node elements of the given type, nodes
+/// numbered row by row from 1; sets LEFT, RIGHT, CORNER (node 1), ALL.
+std::string strip_mesh(int nx, int ny, double length, double height, const std::string& type) {
+  std::ostringstream d;
+  d << "*NODE, NSET=ALL\n";
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i)
+      d << j * (nx + 1) + i + 1 << ", " << length * i / nx << ", " << height * j / ny << "\n";
+  d << "*ELEMENT, TYPE=" << type << ", ELSET=EALL\n";
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int n1 = j * (nx + 1) + i + 1;
+      d << j * nx + i + 1 << ", " << n1 << ", " << n1 + 1 << ", " << n1 + nx + 2 << ", " << n1 + nx + 1 << "\n";
+    }
+  d << "*NSET, NSET=LEFT\n";
+  for (int j = 0; j <= ny; ++j) d << j * (nx + 1) + 1 << (j < ny ? ", " : "\n");
+  d << "*NSET, NSET=RIGHT\n";
+  for (int j = 0; j <= ny; ++j) d << (j + 1) * (nx + 1) << (j < ny ? ", " : "\n");
+  d << "*NSET, NSET=CORNER\n1\n";
+  return d.str();
+}
+
+}  // namespace
+
+TEST(StaticAnalysis, BarUnderEndLoadMatchesExactSolution) {
+  // Plane stress, thickness 0.5: u(L) = F L / (E A) with A = H t; sigma_xx = F / A.
+  const double length = 4, height = 1, thickness = 0.5, young = 1000, force = 10;
+  std::ostringstream deck;
+  deck << strip_mesh(4, 2, length, height, "CPS4")
+       << "*MATERIAL, NAME=M\n*ELASTIC\n" << young << ", 0.25\n"
+       << "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n" << thickness << "\n"
+       << "*BOUNDARY\nLEFT, 1\nCORNER, 2\n"
+       << "*STEP\n*STATIC\n*CLOAD\n5, 1, 2.5\n10, 1, 5.\n15, 1, 2.5\n*END STEP\n";
+  const auto run = run_deck_text(deck.str());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const double exact = force * length / (young * height * thickness);
+  for (int id : {5, 10, 15}) EXPECT_NEAR(run.last().displacement[run.node(id)].x(), exact, 1e-12 * exact);
+  EXPECT_NEAR(run.reaction_sum("LEFT", 0), -force, 1e-10 * force);
+  for (const auto& element : run.last().points)
+    for (const auto& p : element) {
+      EXPECT_NEAR(p.stress[0], force / (height * thickness), 1e-9);
+      EXPECT_NEAR(p.stress[1], 0, 1e-9);
+      EXPECT_NEAR(p.stress[2], 0, 1e-12);  // plane stress
+    }
+  EXPECT_EQ(run.recorder.increments.size(), 1u);
+  EXPECT_EQ(run.recorder.increments[0].iterations, 1);  // linear: one solve
+}
+
+TEST(StaticAnalysis, FloatingBodyIsReportedNamingNodeAndDof) {
+  std::ostringstream deck;
+  deck << strip_mesh(2, 1, 2, 1, "CPE4") << "*MATERIAL, NAME=M\n*ELASTIC\n1000, 0.3\n"
+       << "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n"
+       << "*BOUNDARY\nLEFT, 1\n"  // y is free everywhere: rigid translation
+       << "*STEP\n*STATIC\n*CLOAD\n3, 1, 1.\n*END STEP\n";
+  const auto run = run_deck_text(deck.str());
+  EXPECT_FALSE(run.summary.completed);
+  EXPECT_NE(run.summary.message.find("singular"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("dof 2"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("node "), std::string::npos) << run.summary.message;
+  EXPECT_TRUE(run.recorder.results.empty());
+}
+
+TEST(StaticAnalysis, SecondStepContinuesFromFirst) {
+  // Prescribed end displacement 0.01, then 0.03: the reaction triples, the
+  // displacement ramps from the first step's value.
+  std::ostringstream deck;
+  deck << strip_mesh(3, 1, 3, 1, "CPE4") << "*MATERIAL, NAME=M\n*ELASTIC\n1000, 0.3\n"
+       << "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n"
+       << "*BOUNDARY\nLEFT, 1\nCORNER, 2\n"
+       << "*STEP\n*STATIC\n0.5, 1.\n*BOUNDARY\nRIGHT, 1, 1, 0.01\n*END STEP\n"
+       << "*STEP\n*STATIC\n0.5, 1.\n*BOUNDARY\nRIGHT, 1, 1, 0.03\n*END STEP\n";
+  const auto run = run_deck_text(deck.str());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_EQ(run.recorder.results.size(), 4u);
+  const auto& r = run.recorder.results;
+  const int tip = run.node(8);
+  EXPECT_NEAR(r[0].displacement[tip].x(), 0.005, 1e-14);
+  EXPECT_NEAR(r[1].displacement[tip].x(), 0.01, 1e-14);
+  EXPECT_NEAR(r[2].displacement[tip].x(), 0.02, 1e-14);
+  EXPECT_NEAR(r[3].displacement[tip].x(), 0.03, 1e-14);
+  EXPECT_NEAR(r[3].total_time, 2.0, 1e-14);
+  double f1 = 0, f2 = 0;
+  for (int n : run.model.node_sets.at("LEFT")) f1 += r[1].reaction[n].x(), f2 += r[3].reaction[n].x();
+  EXPECT_LT(f1, 0);
+  EXPECT_NEAR(f2, 3 * f1, 1e-10 * std::abs(f1));
+}
+
+namespace {
+
+/// Cauchy stress of a compressible neo-Hookean bar in uniaxial stress at
+/// stretch `lambda` (lateral stretches equal, found by bisection).
+double neo_hooke_uniaxial_stress(double lambda, double c10, double d1, double* lateral) {
+  auto lateral_stress = [&](double mu) {
+    const double j = lambda * mu * mu, i1 = lambda * lambda + 2 * mu * mu;
+    return 2 * c10 / j * std::pow(j, -2.0 / 3.0) * (mu * mu - i1 / 3) + 2 / d1 * (j - 1);
+  };
+  double lo = 0.2, hi = 1.5;
+  for (int k = 0; k < 200; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (lateral_stress(mid) > 0 ? hi : lo) = mid;
+  }
+  const double mu = 0.5 * (lo + hi), j = lambda * mu * mu, i1 = lambda * lambda + 2 * mu * mu;
+  *lateral = mu;
+  return 2 * c10 / j * std::pow(j, -2.0 / 3.0) * (lambda * lambda - i1 / 3) + 2 / d1 * (j - 1);
+}
+
+std::string neo_hooke_strip(double stretch, const std::string& extra_step_lines) {
+  std::ostringstream deck;
+  deck << strip_mesh(2, 2, 2, 1, "CPS4") << "*MATERIAL, NAME=RUBBER\n*HYPERELASTIC, NEO HOOKE\n1.0, 0.1\n"
+       << "*SOLID SECTION, ELSET=EALL, MATERIAL=RUBBER\n1.\n"
+       << "*BOUNDARY\nLEFT, 1\nCORNER, 2\n"
+       << "*STEP, NLGEOM, INC=200\n" << extra_step_lines << "*BOUNDARY\nRIGHT, 1, 1, " << 2 * (stretch - 1)
+       << "\n*END STEP\n";
+  return deck.str();
+}
+
+}  // namespace
+
+TEST(StaticAnalysis, NeoHookeanUniaxialStretchMatchesClosedForm) {
+  const double stretch = 2.0;
+  const auto run = run_deck_text(neo_hooke_strip(stretch, "*STATIC\n0.25, 1.\n*CONTROLS, PARAMETERS=FIELD\n1e-9, 1e-9\n"));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  double lateral = 0;
+  const double sigma = neo_hooke_uniaxial_stress(stretch, 1.0, 0.1, &lateral);
+  // Reaction = Cauchy stress times the current cross-section H*mu * t*mu.
+  EXPECT_NEAR(-run.reaction_sum("LEFT", 0), sigma * lateral * lateral, 1e-7 * sigma);
+  EXPECT_NEAR(run.last().displacement[run.node(9)].y(), lateral - 1, 1e-8);
+  for (const auto& element : run.last().points)
+    for (const auto& p : element) EXPECT_NEAR(p.stress[0], sigma, 1e-7 * sigma);
+}
+
+TEST(StaticAnalysis, NewtonConvergesQuadraticallyOnFiniteStrain) {
+  const auto run = run_deck_text(neo_hooke_strip(1.6, "*STATIC\n1., 1.\n*CONTROLS, PARAMETERS=FIELD\n1e-12, 1e-12\n"));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_FALSE(run.recorder.residuals.empty());
+  const auto& r = run.recorder.residuals.back();
+  ASSERT_GE(r.size(), 4u);
+  // Order estimate p = log(r3/r2) / log(r2/r1) over the last three iterations
+  // before round-off: p close to 2 for a consistent tangent.
+  std::vector<double> useful;
+  for (double v : r)
+    if (v > 1e-11 * r.front()) useful.push_back(v);
+  ASSERT_GE(useful.size(), 3u);
+  const std::size_t n = useful.size();
+  const double order = std::log(useful[n - 1] / useful[n - 2]) / std::log(useful[n - 2] / useful[n - 3]);
+  EXPECT_GT(order, 1.8) << "residual history ends " << useful[n - 3] << " " << useful[n - 2] << " " << useful[n - 1];
+}
+
+TEST(StaticAnalysis, LargeIncrementCutsBackAndAgreesWithSmallIncrements) {
+  const std::string controls = "*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n";
+  // Compression to a third of the length in one increment: Newton's first
+  // iterates invert elements, so the increment must be cut back.
+  const auto coarse = run_deck_text(neo_hooke_strip(0.3, "*STATIC\n1., 1.\n" + controls));
+  const auto fine = run_deck_text(neo_hooke_strip(0.3, "*STATIC, DIRECT\n0.02, 1.\n" + controls));
+  ASSERT_TRUE(coarse.summary.completed) << coarse.summary.message;
+  ASSERT_TRUE(fine.summary.completed) << fine.summary.message;
+  EXPECT_EQ(fine.recorder.results.size(), 50u);
+  const double a = coarse.reaction_sum("LEFT", 0), b = fine.reaction_sum("LEFT", 0);
+  EXPECT_NEAR(a, b, 1e-8 * std::abs(b));
+  EXPECT_GT(coarse.summary.cutbacks, 0);
+}
+
+TEST(StaticAnalysis, StopsBelowMinimumIncrementAndKeepsLastState) {
+  // An element inverted by a huge compression cannot converge: the run must
+  // stop with a message, after writing the converged increments.
+  std::ostringstream deck;
+  deck << strip_mesh(2, 1, 2, 1, "CPE4") << "*MATERIAL, NAME=M\n*HYPERELASTIC, NEO HOOKE\n1.0, 0.1\n"
+       << "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n*BOUNDARY\nLEFT, 1\nCORNER, 2\n"
+       << "*STEP, NLGEOM\n*STATIC\n0.5, 1., 0.01\n*BOUNDARY\nRIGHT, 1, 1, -2.5\n*END STEP\n";
+  const auto run = run_deck_text(deck.str());
+  EXPECT_FALSE(run.summary.completed);
+  EXPECT_NE(run.summary.message.find("last converged increment has been written"), std::string::npos)
+      << run.summary.message;
+  EXPECT_GT(run.summary.cutbacks, 0);
+}
