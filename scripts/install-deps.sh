@@ -9,7 +9,7 @@ packages=(
   libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gmsh calculix-ccx
-  python3 python3-numpy python3-matplotlib python3-meshio
+  python3 python3-numpy python3-matplotlib python3-meshio python3-vtk9
 )
 
 missing=()

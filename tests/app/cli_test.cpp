@@ -1,0 +1,147 @@
+// The tether command line: exit codes, messages, files written.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string out;  ///< stdout and stderr together
+};
+
+/// Runs the tether program with `args` (stdout is a pipe, so not a terminal).
+Result tether(const std::string& args) {
+  const std::string command = std::string(TETHER_CLI) + " " + args + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) r.out += buffer.data();
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(TETHER_BINARY_DIR) / "tests" / "app" / "scratch" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+const char* kGoodDeck = R"(*HEADING
+one CPE4 under tension
+*NODE, NSET=ALL
+1, 0, 0
+2, 1, 0
+3, 1, 1
+4, 0, 1
+*ELEMENT, TYPE=CPE4, ELSET=E
+1, 1, 2, 3, 4
+*NSET, NSET=LEFT
+1, 4
+*MATERIAL, NAME=M
+*ELASTIC
+1000, 0.3
+*SOLID SECTION, ELSET=E, MATERIAL=M
+*BOUNDARY
+LEFT, 1
+1, 2
+*STEP
+*STATIC
+0.5, 1.
+*CLOAD
+2, 1, 1.
+3, 1, 1.
+*NODE PRINT, NSET=ALL
+U
+*END STEP
+)";
+
+}  // namespace
+
+TEST(Cli, VersionAndHelp) {
+  const auto v = tether("--version");
+  EXPECT_EQ(v.code, 0);
+  EXPECT_NE(v.out.find("tether "), std::string::npos);
+  const auto h = tether("--help");
+  EXPECT_EQ(h.code, 0);
+  EXPECT_NE(h.out.find("run"), std::string::npos);
+  EXPECT_NE(h.out.find("check"), std::string::npos);
+}
+
+TEST(Cli, UnknownArgumentsFail) {
+  EXPECT_NE(tether("").code, 0);
+  EXPECT_NE(tether("frobnicate").code, 0);
+  EXPECT_NE(tether("run").code, 0);
+  EXPECT_NE(tether("run x.inp --solver mumps").code, 0);
+}
+
+TEST(Cli, RunWritesResultsQuietlyWhenNotATerminal) {
+  const fs::path dir = scratch("good");
+  write(dir / "plate.inp", kGoodDeck);
+  const auto r = tether((dir / "plate.inp").string() + " -o " + (dir / "out").string() + "");
+  EXPECT_NE(r.code, 0);  // missing subcommand
+  const auto run = tether("run " + (dir / "plate.inp").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(run.code, 0) << run.out;
+  EXPECT_EQ(run.out.find("inc "), std::string::npos) << "progress lines on a pipe:\n" << run.out;
+  EXPECT_NE(run.out.find("analysis complete"), std::string::npos) << run.out;
+  for (const char* f : {"plate.pvd", "plate.dat", "plate.sta", "plate_1_1.vtu", "plate_1_2.vtu"})
+    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  std::ifstream sta(dir / "out" / "plate.sta");
+  const std::string text((std::istreambuf_iterator<char>(sta)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("COMPLETED SUCCESSFULLY"), std::string::npos) << text;
+
+  const auto quiet = tether("run -q " + (dir / "plate.inp").string() + " -o " + (dir / "out2").string());
+  EXPECT_EQ(quiet.code, 0);
+  EXPECT_TRUE(quiet.out.empty()) << quiet.out;
+}
+
+TEST(Cli, CheckValidatesWithoutSolving) {
+  const fs::path dir = scratch("check");
+  write(dir / "plate.inp", kGoodDeck);
+  const auto r = tether("check " + (dir / "plate.inp").string());
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("4 nodes, 1 elements"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "plate"));
+}
+
+TEST(Cli, BadDeckGivesFileLineAndExitCodeOne) {
+  const fs::path dir = scratch("bad");
+  std::string deck = kGoodDeck;
+  deck.replace(deck.find("1000, 0.3"), 9, "1000, 0.3x");  // line 14
+  write(dir / "bad.inp", deck);
+  for (const char* verb : {"check ", "run "}) {
+    const auto r = tether(verb + (dir / "bad.inp").string());
+    EXPECT_EQ(r.code, 1) << r.out;
+    EXPECT_NE(r.out.find("bad.inp:14"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("0.3x"), std::string::npos) << r.out;
+  }
+  const auto missing = tether("run " + (dir / "nope.inp").string());
+  EXPECT_EQ(missing.code, 1) << missing.out;
+  EXPECT_NE(missing.out.find("nope.inp"), std::string::npos) << missing.out;
+}
+
+TEST(Cli, UnsolvableModelExitsTwoAndSaysWhy) {
+  const fs::path dir = scratch("floating");
+  std::string deck = kGoodDeck;
+  deck.replace(deck.find("1, 2\n*STEP"), 4, "");  // remove the y support: rigid-body mode
+  write(dir / "float.inp", deck);
+  const auto r = tether("run " + (dir / "float.inp").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("singular"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("dof 2"), std::string::npos) << r.out;
+  std::ifstream sta(dir / "out" / "float.sta");
+  const std::string text((std::istreambuf_iterator<char>(sta)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("NOT BEEN COMPLETED"), std::string::npos) << text;
+}
