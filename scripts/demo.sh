@@ -8,4 +8,5 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build --parallel
 ./build/bin/tether run examples/lame/lame.inp -o out/lame
 /usr/bin/python3 tools/lame_summary.py out/lame/lame.dat
-echo "ParaView: paraview out/lame/lame.pvd"
+/usr/bin/python3 tools/plot_lame.py out/lame/lame_1_1.vtu out/lame/lame.png
+echo "plot: out/lame/lame.png   ParaView: paraview out/lame/lame.pvd"
