@@ -122,3 +122,10 @@ TEST(StepHistory, OpNewInModelDataWarns) {
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].message.find("OP=NEW"), std::string::npos);
 }
+
+TEST(StepHistory, SetsMayBeDefinedInsideAStepAsCalculixAllows) {
+  const std::string deck = replaced(kDeck, "*CLOAD", "*NSET, NSET=TIP\n6\n*CLOAD\nTIP, 2, -1\n*CLOAD");
+  const Model m = read_deck_string(deck, "s.inp");
+  EXPECT_EQ(m.node_sets.at("TIP"), (std::vector<int>{5}));
+  EXPECT_EQ(m.steps.at(0).cloads.size(), 3u);
+}
