@@ -125,3 +125,28 @@ TEST(Include, FromAStringIsRelativeToTheCurrentDirectory) {
 TEST(ReadDeck, MissingDeckFileIsAnInputError) {
   EXPECT_THROW((void)read_deck(decks_dir() + "/does_not_exist.inp"), InputError);
 }
+
+TEST(ReadDeck, ReadsACompleteDeckFile) {
+  const Model m = read_deck(decks_dir() + "/two_steps.inp");
+  ASSERT_EQ(m.steps.size(), 2u);
+  EXPECT_EQ(m.steps[0].name, "pull");
+  EXPECT_TRUE(m.steps[0].nlgeom);
+  EXPECT_DOUBLE_EQ(m.steps[0].max_increment, 0.5);
+  EXPECT_EQ(m.steps[0].boundary.size(), 6u);
+  EXPECT_EQ(m.steps[1].boundary.size(), 6u);  // continues from step 1
+  EXPECT_TRUE(m.steps[0].pressures.empty());
+  EXPECT_EQ(m.steps[1].pressures.size(), 2u);
+  EXPECT_EQ(m.steps[0].outputs.size(), 2u);
+  EXPECT_EQ(m.steps[1].outputs.size(), 1u);
+  EXPECT_DOUBLE_EQ(m.sections[0].thickness, 0.5);
+}
+
+TEST(ReadDeck, ErrorsInADeckFileNameThePathAndLine) {
+  try {
+    (void)read_deck(decks_dir() + "/bad_folded_quad.inp");
+    FAIL() << "folded quad accepted";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("bad_folded_quad.inp:8: error: element 1 (CPE4) is inverted"), std::string::npos) << msg;
+  }
+}
