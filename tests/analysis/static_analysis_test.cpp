@@ -187,3 +187,17 @@ TEST(StaticAnalysis, StopsBelowMinimumIncrementAndKeepsLastState) {
       << run.summary.message;
   EXPECT_GT(run.summary.cutbacks, 0);
 }
+
+TEST(StaticAnalysis, LineSearchGivesTheSameAnswer) {
+  const std::string controls = "*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n";
+  const auto plain = run_deck_text(neo_hooke_strip(0.4, "*STATIC\n1., 1.\n" + controls));
+  const auto searched =
+      run_deck_text(neo_hooke_strip(0.4, "*STATIC\n1., 1.\n" + controls + "*CONTROLS, PARAMETERS=LINE SEARCH\n5\n"));
+  ASSERT_TRUE(plain.summary.completed) << plain.summary.message;
+  ASSERT_TRUE(searched.summary.completed) << searched.summary.message;
+  ASSERT_TRUE(searched.model.steps[0].controls.line_search);
+  const double a = plain.reaction_sum("LEFT", 0), b = searched.reaction_sum("LEFT", 0);
+  EXPECT_NEAR(a, b, 1e-8 * std::abs(a));
+  // The backtracking must not cost more failed attempts than plain Newton.
+  EXPECT_LE(searched.summary.cutbacks, plain.summary.cutbacks);
+}
