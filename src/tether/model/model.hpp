@@ -137,7 +137,7 @@ struct Step {
   std::string name;
   bool nlgeom = false;
   int max_increments = 100;           ///< INC=
-  double initial_increment = 1;       ///< of the step period
+  double initial_increment = 1;       ///< first increment [time]; 0 = the whole period
   double period = 1;                  ///< step time period
   double min_increment = 0;           ///< 0 = default (1e-5 * period)
   double max_increment = 0;           ///< 0 = no limit (period)
