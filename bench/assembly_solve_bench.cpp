@@ -226,6 +226,7 @@ int run_kernels(const Options& opt, PeakMemory& memory) {
   }
   std::vector<Contribution*> contributions;
   for (const auto& e : disc.elements()) contributions.push_back(e.get());
+  fmt::print("@mesh={}x{}\n", opt.nx, opt.ny);
   report_int("nodes", model.n_nodes());
   report_int("elements", model.n_elements());
   report_int("dofs", dofs.n_dofs());
@@ -307,11 +308,9 @@ int run_kernels(const Options& opt, PeakMemory& memory) {
   }
 
   if (opt.factor_stats) {
-    // Fill and flop count of CHOLMOD's ordering (the same default analysis
-    // as CholmodSolver), to turn the factorization time into a flop rate.
-    cholmod_common common;
-    cholmod_start(&common);
-    common.supernodal = CHOLMOD_SUPERNODAL;
+    // Fill and flop count of CHOLMOD's orderings: the default analysis (what
+    // CholmodSolver uses) and each method forced, to show what a different
+    // ordering would save. Not timed with the solvers above.
     cholmod_sparse s{};
     s.nrow = s.ncol = static_cast<size_t>(tangent.rows());
     s.nzmax = static_cast<size_t>(tangent.nonZeros());
@@ -323,16 +322,34 @@ int run_kernels(const Options& opt, PeakMemory& memory) {
     s.xtype = CHOLMOD_REAL;
     s.dtype = CHOLMOD_DOUBLE;
     s.sorted = s.packed = 1;
-    cholmod_factor* factor = cholmod_analyze(&s, &common);
-    if (factor) {
-      report_int("cholmod_nnz_L", static_cast<long long>(common.lnz));
-      report("cholmod_gflop", common.fl / 1e9, "GFlop (factorization)");
-      static const char* const kOrderings[] = {"natural", "given", "AMD", "METIS", "NESDIS", "COLAMD", "?", "?", "?"};
-      fmt::print(stderr, "  cholmod ordering: {}\n", kOrderings[std::clamp(factor->ordering, 0, 8)]);
-      fmt::print("@cholmod_ordering={}\n", kOrderings[std::clamp(factor->ordering, 0, 8)]);
-      cholmod_free_factor(&factor, &common);
+    static const char* const kNames[] = {"natural", "given", "amd", "metis", "nesdis", "colamd", "?", "?", "?"};
+    for (const auto& [method, label] : {std::pair{-1, "default"}, std::pair{CHOLMOD_AMD, "amd"},
+                                        std::pair{CHOLMOD_METIS, "metis"}, std::pair{CHOLMOD_NESDIS, "nesdis"}}) {
+      cholmod_common common;
+      cholmod_start(&common);
+      common.supernodal = CHOLMOD_SUPERNODAL;
+      common.print = 0;
+      common.error_handler = nullptr;
+      if (method >= 0) {
+        common.nmethods = 1;
+        common.method[0].ordering = method;
+      }
+      const auto t = Clock::now();
+      cholmod_factor* factor = cholmod_analyze(&s, &common);
+      const double seconds = seconds_since(t);
+      if (factor) {
+        const std::string prefix = std::string("order_") + label;
+        report_int(prefix + "_nnz_L", static_cast<long long>(common.lnz));
+        report(prefix + "_gflop", common.fl / 1e9, "GFlop (factorization)");
+        report(prefix + "_analyze_s", seconds, "s");
+        if (method < 0) {
+          fmt::print(stderr, "  default ordering chosen: {}\n", kNames[std::clamp(factor->ordering, 0, 8)]);
+          fmt::print("@order_default_method={}\n", kNames[std::clamp(factor->ordering, 0, 8)]);
+        }
+        cholmod_free_factor(&factor, &common);
+      }
+      cholmod_finish(&common);
     }
-    cholmod_finish(&common);
   }
   return 0;
 }
