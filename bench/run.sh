@@ -8,9 +8,12 @@
 # Environment:
 #   SIZES="small medium large"   sizes to run (~20k, ~200k, ~1M dofs)
 #   REPEAT=5                     repetitions of pattern build and assembly (best reported)
-#   SOLVE_REPEAT=2               repetitions of each factorization + solve (best reported)
+#   SOLVE_REPEAT=2               repetitions of each factorization + solve (best reported);
+#                                the large size uses SOLVE_REPEAT_LARGE=1
 #   ROUNDS=1                     whole runs per size and phase; the best of each figure is kept
 #   THREADS=1,2                  thread counts for pattern build and assembly
+#   WAIT_LOAD=1.0                before each process, wait (up to WAIT_MAX=900 s) until the
+#                                1-minute load average is below this; empty: do not wait
 # The end-to-end runs use OMP_NUM_THREADS as set (default: all cores).
 set -euo pipefail
 
@@ -22,6 +25,9 @@ bin=$build/bin/tether_bench_assembly_solve
 sizes=${SIZES:-small medium large}
 repeat=${REPEAT:-5}
 solve_repeat=${SOLVE_REPEAT:-2}
+solve_repeat_large=${SOLVE_REPEAT_LARGE:-1}
+wait_load=${WAIT_LOAD-1.0}
+wait_max=${WAIT_MAX:-900}
 rounds=${ROUNDS:-1}
 threads=${THREADS:-1,2}
 work=$(mktemp -d)
@@ -40,16 +46,42 @@ merge() {
   mv "$file.tmp" "$file"
 }
 
+load1() { cut -d' ' -f1 /proc/loadavg; }
+wait_quiet() {
+  [[ -z $wait_load ]] && return
+  local waited=0
+  while awk -v l="$(load1)" -v m="$wait_load" 'BEGIN { exit !(l >= m) }' && ((waited < wait_max)); do
+    sleep 10
+    waited=$((waited + 10))
+  done
+}
+
+merge_max() {  # file < one key=value line: keeps the maximum (load averages)
+  local file=$1 line key value old
+  touch "$file"
+  IFS= read -r line
+  key=${line#@}; key=${key%%=*}; value=${line#*=}
+  old=$(sed -n "s/^$key=//p" "$file")
+  if [[ -z $old ]]; then echo "$key=$value" >> "$file"
+  elif awk -v a="$value" -v b="$old" 'BEGIN { exit !(a > b) }'; then sed -i "s/^$key=.*/$key=$value/" "$file"; fi
+}
+
 run_phase() {  # size tag args...
   local size=$1 tag=$2
   shift 2
-  echo "== $size $tag (load: $(cut -d' ' -f1-3 /proc/loadavg))" >&2
+  wait_quiet
+  local load
+  load=$(load1)
+  echo "== $size $tag (load average: $(cut -d' ' -f1-3 /proc/loadavg))" >&2
+  echo "@load_max=$load" | merge_max "$work/$size.kv"
   "$bin" --size "$size" "$@" | sed "s/^@\([A-Za-z_0-9]*\)=/@${tag}_\1=/" | merge "$work/$size.kv"
 }
 
 for size in $sizes; do
   for ((r = 0; r < rounds; ++r)); do
-    run_phase "$size" k --phase kernels --repeat "$repeat" --solve-repeat "$solve_repeat" --threads "$threads"
+    sr=$solve_repeat
+    [[ $size == large ]] && sr=$solve_repeat_large
+    run_phase "$size" k --phase kernels --repeat "$repeat" --solve-repeat "$sr" --threads "$threads"
     run_phase "$size" a --phase analysis
     rm -rf "$work/out"
     run_phase "$size" f --phase analysis --write "$work/out"
@@ -129,3 +161,4 @@ row "peak RSS: during UMFPACK phase [MiB]" fmt_m k_umfpack_peak_mib
 row "peak RSS: kernels process [MiB]" fmt_m k_process_peak_mib
 row "**peak RSS: end-to-end process, no files [MiB]**" fmt_m a_process_peak_mib
 row "peak RSS: end-to-end process with files [MiB]" fmt_m f_process_peak_mib
+row "1-min load average at start (max of the 3 processes)" echo load_max
