@@ -201,3 +201,16 @@ TEST(StaticAnalysis, LineSearchGivesTheSameAnswer) {
   // The backtracking must not cost more failed attempts than plain Newton.
   EXPECT_LE(searched.summary.cutbacks, plain.summary.cutbacks);
 }
+
+TEST(StaticAnalysis, NodesOutsideEveryElementGetNoDofs) {
+  // A stray node (as Gmsh writes for geometry points) must not make the model singular.
+  std::ostringstream deck;
+  deck << strip_mesh(2, 1, 2, 1, "CPE4") << "*NODE\n100, 5., 5.\n"
+       << "*MATERIAL, NAME=M\n*ELASTIC\n1000, 0.3\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n"
+       << "*BOUNDARY\nLEFT, 1\nCORNER, 2\n*STEP\n*STATIC\n*CLOAD\n3, 1, 1.\n*END STEP\n";
+  const auto run = run_deck_text(deck.str());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  EXPECT_EQ(run.last().displacement[run.node(100)].norm(), 0.0);
+  EXPECT_EQ(run.last().reaction[run.node(100)].norm(), 0.0);
+  EXPECT_GT(run.last().displacement[run.node(3)].x(), 0.0);
+}

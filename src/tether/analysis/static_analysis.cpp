@@ -67,6 +67,22 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
 
   std::vector<bool> prescribed(dofs.n_dofs(), false);
   for (const auto& [dof, value] : loads.prescribed) prescribed[dof] = true;
+  // Nodes no element or constraint uses have no dofs (as in ABAQUS): their
+  // displacements are held at zero instead of making the matrix singular.
+  std::vector<bool> used(dofs.n_dofs(), false);
+  for (const Contribution* c : contributions)
+    for (int d : c->dofs()) used[d] = true;
+  int unused_nodes = 0;
+  for (int node = 0; node < dofs.n_nodes(); ++node) {
+    bool any = false;
+    for (int c = 0; c < kDofsPerNode; ++c) any = any || used[dofs.displacement(node, c)];
+    if (any) continue;
+    ++unused_nodes;
+    for (int c = 0; c < kDofsPerNode; ++c) prescribed[dofs.displacement(node, c)] = true;
+  }
+  if (unused_nodes > 0 && index == 0)
+    observer_.on_message(std::to_string(unused_nodes) +
+                         " node(s) belong to no element; they get no degrees of freedom");
   Assembler assembler(contributions, EquationMap(prescribed));
   auto solver = make_linear_solver(options_.solver);
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
