@@ -5,11 +5,17 @@ Plane elements (CPE*/CPS*): a quarter ring in the x-y plane with symmetry
 conditions on both straight edges. Axisymmetric elements (CAX*): a slice
 r in [a, b], z in [0, h] with u_z = 0 top and bottom (plane strain in z).
 
-Exact plane-strain solution (used by the demo and the tests):
+Exact plane-strain solution (CPE* and CAX*; used by the demo and the tests):
   u_r(r) = (1+nu) p a^2 / (E (b^2-a^2)) * ((1-2 nu) r + b^2 / r)
   sigma_rr = p a^2/(b^2-a^2) (1 - b^2/r^2), sigma_tt = p a^2/(b^2-a^2) (1 + b^2/r^2)
+Plane stress (CPS*, a thin disc; same stresses, sigma_zz = 0):
+  u_r(r) = (1/E) ((1-nu) C r + (1+nu) D / r),  C = p a^2/(b^2-a^2), D = p a^2 b^2/(b^2-a^2)
 
-Usage: make_lame_deck.py OUT.inp [--type CPE8] [--nr 8] [--nt 16] [--nlgeom]
+Usage: make_lame_deck.py OUT.inp [--type CPE8] [--nr 8] [--nt 16] [--nlgeom] [--print-all]
+  --print-all  also print U of every node (NALL) and RF of every node of BOTTOM and
+               TOP (used by tools/ccx_reference.py to compare with CalculiX)
+For CAX* --nt counts elements along z over the height H: keep it small (e.g. 2)
+so the elements are not long and thin.
 """
 import argparse
 import math
@@ -24,6 +30,7 @@ def main():
     ap.add_argument("--nr", type=int, default=8, help="elements through the wall")
     ap.add_argument("--nt", type=int, default=16, help="elements around the quarter (or along z for CAX)")
     ap.add_argument("--nlgeom", action="store_true")
+    ap.add_argument("--print-all", action="store_true", help="also print U of all nodes and RF of BOTTOM and TOP nodes")
     args = ap.parse_args()
     etype = args.type.upper()
     quadratic = etype[-1] in "68" or etype.endswith("8R")
@@ -102,8 +109,12 @@ def main():
               "*NODE PRINT, NSET=INNER", "U",
               "*NODE PRINT, NSET=OUTER", "U",
               "*NODE PRINT, NSET=BOTTOM, TOTALS=ONLY", "RF",
-              "*EL PRINT, ELSET=EALL", "S",
-              "*END STEP"]
+              "*EL PRINT, ELSET=EALL", "S"]
+    if args.print_all:
+        lines += ["*NODE PRINT, NSET=NALL", "U",
+                  "*NODE PRINT, NSET=BOTTOM", "RF",
+                  "*NODE PRINT, NSET=TOP", "RF"]
+    lines.append("*END STEP")
     with open(args.out, "w") as f:
         f.write("\n".join(lines) + "\n")
 
