@@ -38,6 +38,7 @@ DECKS = {
     # decks run through CalculiX by tools/ccx_reference.py (every node printed)
     "ccx_lame_cpe8_4x8": ("make_lame_deck.py", ["--type", "CPE8", "--nr", "4", "--nt", "8", "--print-all"]),
     "ccx_lame_cpe4_8x16": ("make_lame_deck.py", ["--type", "CPE4", "--nr", "8", "--nt", "16", "--print-all"]),
+    "ccx_lame_cax8_4x1": ("make_lame_deck.py", ["--type", "CAX8", "--nr", "4", "--nt", "1", "--print-all"]),
     # plane stress: ccx models CPS* as a one-layer 3D plate whose faces are free, which is plane
     # stress only for a thin plate (at T = H it is 2.3 % stiffer); hence T = H / 100 here
     "ccx_cantilever_cps8_20x2": ("make_cantilever_deck.py",
