@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <set>
 
 #include "verification_support.hpp"
@@ -50,6 +51,9 @@ struct CcxCase {
   double reaction_tolerance;      ///< relative to the largest |RF| component
   double reaction_scale;          ///< ccx RF times this = tether reaction (CAX: 180, the 2-degree wedge)
 };
+
+// Names the case in test listings (instead of the bytes of the struct).
+[[maybe_unused]] void PrintTo(const CcxCase& c, std::ostream* os) { *os << c.deck; }
 
 class CalculixComparison : public ::testing::TestWithParam<CcxCase> {};
 

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 
 #include "verification_support.hpp"
 
@@ -89,6 +90,9 @@ struct LameCase {
   double displacement_tolerance;  ///< relative, bore and outer surface
   double hoop_tolerance;          ///< relative, integration points of the bore elements
 };
+
+// Names the case in test listings (instead of the bytes of the struct).
+[[maybe_unused]] void PrintTo(const LameCase& c, std::ostream* os) { *os << c.deck; }
 
 class Lame : public ::testing::TestWithParam<LameCase> {};
 
