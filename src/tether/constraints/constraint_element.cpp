@@ -1,0 +1,125 @@
+#include "tether/constraints/constraint_element.hpp"
+
+#include <stdexcept>
+
+#include "tether/core/error.hpp"
+
+namespace tether {
+
+std::string to_string(Enforcement::Method method) {
+  switch (method) {
+    case Enforcement::Method::Lagrange: return "LAGRANGE";
+    case Enforcement::Method::Penalty: return "PENALTY";
+    case Enforcement::Method::Augmented: return "AUGMENTED LAGRANGE";
+    case Enforcement::Method::Elimination: return "ELIMINATION";
+  }
+  return "?";
+}
+
+ConstraintElement::ConstraintElement(std::unique_ptr<ConstraintFunction> function, Enforcement enforcement,
+                                     int first_multiplier, std::string name, std::vector<int> nodes)
+    : function_(std::move(function)), enforcement_(enforcement), name_(std::move(name)), nodes_(std::move(nodes)) {
+  if (enforcement_.method == Enforcement::Method::Elimination)
+    throw std::invalid_argument(name_ + ": elimination is applied to the equations, not as an element");
+  const auto fd = function_->dofs();
+  n_ = static_cast<int>(fd.size());
+  m_ = function_->n_equations();
+  dofs_.assign(fd.begin(), fd.end());
+  if (enforcement_.method == Enforcement::Method::Lagrange)
+    for (int k = 0; k < m_; ++k) dofs_.push_back(first_multiplier + k);
+  lambda_bar_.setZero(m_);
+}
+
+ConstraintInput ConstraintElement::gather(const EvaluationState& state) const {
+  ConstraintInput in;
+  in.u.resize(n_);
+  in.u_start.resize(n_);
+  for (int i = 0; i < n_; ++i) in.u[i] = state.u[dofs_[i]], in.u_start[i] = state.u_start[dofs_[i]];
+  in.step_time = state.step_time;
+  in.total_time = state.total_time;
+  return in;
+}
+
+void ConstraintElement::evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const {
+  const ConstraintInput in = gather(state);
+  ConstraintOutput c;
+  const bool nonlinear = !function_->linear();
+  c.reset(m_, n_, need_tangent && nonlinear);
+  function_->evaluate(in, c, need_tangent && nonlinear);
+  const Eigen::MatrixXd& g = c.gradient;
+
+  auto add_curvature = [&](const Eigen::VectorXd& weights) {
+    if (!need_tangent || !nonlinear) return;
+    for (int k = 0; k < m_; ++k) out.tangent.topLeftCorner(n_, n_) += weights[k] * c.hessian[k];
+  };
+
+  switch (enforcement_.method) {
+    case Enforcement::Method::Lagrange: {
+      Eigen::VectorXd lambda(m_);
+      for (int k = 0; k < m_; ++k) lambda[k] = state.u[dofs_[n_ + k]];
+      out.residual.head(n_) = g.transpose() * lambda;
+      out.residual.tail(m_) = c.f - enforcement_.epsilon * lambda;
+      if (!need_tangent) return;
+      add_curvature(lambda);
+      out.tangent.topRightCorner(n_, m_) = g.transpose();
+      out.tangent.bottomLeftCorner(m_, n_) = g;
+      out.tangent.bottomRightCorner(m_, m_).diagonal().setConstant(-enforcement_.epsilon);
+      return;
+    }
+    case Enforcement::Method::Penalty: {
+      const double rho = enforcement_.penalty;
+      out.residual = rho * g.transpose() * c.f;
+      if (!need_tangent) return;
+      out.tangent = rho * g.transpose() * g;
+      add_curvature(rho * c.f);
+      return;
+    }
+    case Enforcement::Method::Augmented: {
+      const double rho = enforcement_.penalty;
+      const Eigen::VectorXd force = lambda_bar_ + rho * c.f;
+      out.residual = g.transpose() * force;
+      if (!need_tangent) return;
+      out.tangent = rho * g.transpose() * g;
+      add_curvature(force);
+      return;
+    }
+    case Enforcement::Method::Elimination: break;
+  }
+}
+
+Acceptance ConstraintElement::on_converged(const EvaluationState& state) {
+  if (enforcement_.method != Enforcement::Method::Augmented) return Acceptance::Accept;
+  ConstraintOutput c;
+  c.reset(m_, n_, false);
+  function_->evaluate(gather(state), c, false);
+  if (c.f.cwiseAbs().maxCoeff() <= enforcement_.tolerance) return Acceptance::Accept;
+  if (updates_ >= enforcement_.max_updates)
+    throw ModelError(name_ + ": augmented Lagrangian did not reach |f| <= " + std::to_string(enforcement_.tolerance) +
+                     " in " + std::to_string(enforcement_.max_updates) + " updates (|f| = " +
+                     std::to_string(c.f.cwiseAbs().maxCoeff()) + "); raise the penalty");
+  lambda_bar_ += enforcement_.penalty * c.f;
+  ++updates_;
+  return Acceptance::Iterate;
+}
+
+MultiplierValues ConstraintElement::values(const EvaluationState& state) const {
+  ConstraintOutput c;
+  c.reset(m_, n_, false);
+  function_->evaluate(gather(state), c, false);
+  MultiplierValues v;
+  v.owner = name_;
+  v.nodes = nodes_;
+  v.constraint.assign(c.f.data(), c.f.data() + m_);
+  v.value.resize(m_);
+  for (int k = 0; k < m_; ++k) {
+    switch (enforcement_.method) {
+      case Enforcement::Method::Lagrange: v.value[k] = state.u[dofs_[n_ + k]]; break;
+      case Enforcement::Method::Penalty: v.value[k] = enforcement_.penalty * c.f[k]; break;
+      case Enforcement::Method::Augmented: v.value[k] = lambda_bar_[k] + enforcement_.penalty * c.f[k]; break;
+      case Enforcement::Method::Elimination: v.value[k] = 0; break;
+    }
+  }
+  return v;
+}
+
+}  // namespace tether

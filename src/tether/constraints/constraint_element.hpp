@@ -1,0 +1,61 @@
+#pragma once
+/// \file The Lagrange-multiplier constraint element (and its penalty and
+/// augmented-Lagrangian variants) as a Contribution.
+///
+/// For f(u) = 0 with m equations over n displacement dofs, G = df/du:
+///
+/// - Lagrange: unknowns [u (n), lambda (m)],
+///     r = [G^T lambda ; f - eps lambda],
+///     K = [[sum_k lambda_k H_k, G^T], [G, -eps I]];
+/// - Penalty: unknowns u, r = rho G^T f, K = rho (G^T G + sum_k f_k H_k);
+/// - Augmented: unknowns u, r = G^T (lambda_bar + rho f),
+///     K = rho G^T G + sum_k (lambda_bar_k + rho f_k) H_k, and after Newton
+///     converges lambda_bar += rho f until max |f| <= tolerance.
+///
+/// The multiplier lambda is the generalised force the constraint exerts: the
+/// force on dof i is -lambda * df/du_i.
+
+#include <memory>
+
+#include "tether/assembly/contribution.hpp"
+#include "tether/constraints/constraint_function.hpp"
+#include "tether/constraints/enforcement.hpp"
+#include "tether/model/results.hpp"
+
+namespace tether {
+
+class ConstraintElement final : public Contribution {
+ public:
+  /// `first_multiplier` is the global index of the first of the function's m
+  /// multipliers (reserved with DofMap::add_multipliers) for Lagrange; ignored
+  /// otherwise. `nodes` are the node indices the constraint acts on (output).
+  ConstraintElement(std::unique_ptr<ConstraintFunction> function, Enforcement enforcement, int first_multiplier,
+                    std::string name, std::vector<int> nodes);
+
+  [[nodiscard]] std::span<const int> dofs() const override { return dofs_; }
+  void evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const override;
+  Acceptance on_converged(const EvaluationState& state) override;
+  [[nodiscard]] std::string describe() const override { return name_; }
+
+  /// Multiplier (constraint force) values and f at the state, for output.
+  [[nodiscard]] MultiplierValues values(const EvaluationState& state) const;
+
+  [[nodiscard]] const ConstraintFunction& function() const { return *function_; }
+  [[nodiscard]] const Enforcement& enforcement() const { return enforcement_; }
+  /// Uzawa updates done so far (Augmented).
+  [[nodiscard]] int n_updates() const { return updates_; }
+
+ private:
+  ConstraintInput gather(const EvaluationState& state) const;
+
+  std::unique_ptr<ConstraintFunction> function_;
+  Enforcement enforcement_;
+  std::string name_;
+  std::vector<int> nodes_;
+  std::vector<int> dofs_;          ///< function dofs, then multipliers (Lagrange)
+  int n_ = 0, m_ = 0;
+  Eigen::VectorXd lambda_bar_;     ///< Augmented: current Uzawa multipliers
+  int updates_ = 0;
+};
+
+}  // namespace tether
