@@ -74,7 +74,10 @@ run_phase() {  # size tag args...
   load=$(load1)
   echo "== $size $tag (load average: $(cut -d' ' -f1-3 /proc/loadavg))" >&2
   echo "@load_max=$load" | merge_max "$work/$size.kv"
-  "$bin" --size "$size" "$@" | sed "s/^@\([A-Za-z_0-9]*\)=/@${tag}_\1=/" | merge "$work/$size.kv"
+  local rc=0
+  "$bin" --size "$size" "$@" > "$work/out.txt" || rc=$?
+  ((rc == 0)) || echo "run.sh: $size $tag exited with status $rc (figures so far are kept)" >&2
+  sed "s/^@\([A-Za-z_0-9]*\)=/@${tag}_\1=/" "$work/out.txt" | merge "$work/$size.kv"
 }
 
 for size in $sizes; do
@@ -148,6 +151,7 @@ for solver in cholmod umfpack; do
   row "$name factorize [s]" fmt_s "k_${solver}_factorize_s"
   row "$name solve [s]" fmt_s "k_${solver}_solve_s"
   row "**$name analyze + factorize + solve [s]**" fmt_s "k_${solver}_total_s"
+  row "$name error" echo "k_${solver}_error"
   row "$name re-factorize, same pattern [s]" fmt_s "k_${solver}_refactorize_s"
   row "$name relative residual" echo "k_${solver}_relative_residual"
 done
