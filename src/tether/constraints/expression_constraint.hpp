@@ -18,6 +18,9 @@
 /// Functions: sin cos tan asin acos atan atan2(y,x) sinh cosh tanh exp
 /// log (= ln, natural) sqrt abs pow(a,b); operators + - * / ^ (also **);
 /// constant pi.
+///
+/// Construction uses GiNaC, which is not thread-safe: build constraints on one
+/// thread. evaluate() does not touch GiNaC and may run on many threads.
 
 #include <Eigen/Core>
 #include <array>
