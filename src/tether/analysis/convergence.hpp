@@ -6,8 +6,8 @@
 /// below C_n times the largest displacement increment of the increment, or
 /// the next correction estimated from the residual ratio must be. A residual
 /// below 1e-8 q is accepted at once (linear increment). Multiplier rows
-/// (constraint values, in their own units) must be below C_n times the
-/// largest displacement increment plus a round-off floor.
+/// (constraint values f - eps*lambda, in length units for the built-in
+/// constraints) must be below 1e-10 times the model size.
 
 #include <string>
 

@@ -1,5 +1,6 @@
 #include "tether/analysis/discretization.hpp"
 
+#include "tether/analysis/constraint_builder.hpp"
 #include "tether/core/error.hpp"
 
 namespace tether {
@@ -31,6 +32,30 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
     Eigen::Vector2d lo = model.coords.front(), hi = lo;
     for (const auto& x : model.coords) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
     length_scale_ = std::max((hi - lo).norm(), 1e-30);
+  }
+
+  for (const ConstraintData& data : model.constraints) {
+    if (data.kind == ConstraintData::Kind::User) {
+      std::vector<int> labels;
+      std::vector<Eigen::Vector2d> reference;
+      for (int n : data.nodes) labels.push_back(model.node_ids[n]), reference.push_back(model.coords[n]);
+      const int first = dofs_.add_multipliers(data.n_multipliers, "constraint " + data.name);
+      user_constraints_.push_back(std::make_unique<UserConstraintElement>(
+          data.library, data.symbol, static_cast<int>(user_constraints_.size() + 1), data.nodes, labels, reference,
+          data.properties, data.n_multipliers, first, dofs_, data.name, data.flag));
+      continue;
+    }
+    if (data.enforcement.method == Enforcement::Method::Elimination)
+      throw ModelError(data.name + " (" + data.where.str() + "): ENFORCEMENT=ELIMINATION is not available yet");
+    auto function = make_constraint_function(model, data, dofs_);
+    Enforcement enforcement = data.enforcement;
+    if (enforcement.method == Enforcement::Method::Augmented && enforcement.tolerance == 0)
+      enforcement.tolerance = 1e-8 * length_scale_;
+    const int first = enforcement.method == Enforcement::Method::Lagrange
+                          ? dofs_.add_multipliers(function->n_equations(), "constraint " + data.name)
+                          : -1;
+    constraints_.push_back(
+        std::make_unique<ConstraintElement>(std::move(function), enforcement, first, data.name, data.nodes_or_terms()));
   }
 }
 

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
+#include "tether/constraints/constraint_element.hpp"
+#include "tether/constraints/user_constraint_element.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/elements/continuum_element.hpp"
 #include "tether/elements/face_pressure.hpp"
@@ -19,12 +21,19 @@ namespace tether {
 
 class Discretization {
  public:
-  /// Throws ModelError for a model that cannot be discretized (e.g. a material without data).
+  /// Throws ModelError for a model that cannot be discretized (e.g. a material
+  /// without data, a constraint whose nodes coincide).
   explicit Discretization(const Model& model);
 
   [[nodiscard]] const Model& model() const { return model_; }
   [[nodiscard]] const DofMap& dofs() const { return dofs_; }
   [[nodiscard]] const std::vector<std::unique_ptr<ContinuumElement>>& elements() const { return elements_; }
+  /// Constraints enforced as contributions (multipliers, penalty, augmented Lagrangian).
+  [[nodiscard]] const std::vector<std::unique_ptr<ConstraintElement>>& constraints() const { return constraints_; }
+  /// Constraints computed by user routines in shared libraries (*CONSTRAINT, TYPE=USER).
+  [[nodiscard]] const std::vector<std::unique_ptr<UserConstraintElement>>& user_constraints() const {
+    return user_constraints_;
+  }
 
   /// One FacePressure per entry of `loads` (pressure set later with set_pressure).
   [[nodiscard]] std::vector<std::unique_ptr<FacePressure>> make_pressures(const std::vector<PressureLoad>& loads) const;
@@ -40,6 +49,8 @@ class Discretization {
   DofMap dofs_;
   std::vector<std::unique_ptr<ConstitutiveModel>> materials_;
   std::vector<std::unique_ptr<ContinuumElement>> elements_;
+  std::vector<std::unique_ptr<ConstraintElement>> constraints_;
+  std::vector<std::unique_ptr<UserConstraintElement>> user_constraints_;
   double length_scale_ = 1;
 };
 

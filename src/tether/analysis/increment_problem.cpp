@@ -82,6 +82,11 @@ double IncrementProblem::displacement_norm(const Eigen::VectorXd& correction) co
   return m;
 }
 
+bool IncrementProblem::is_multiplier_equation(int eq) const {
+  const EquationMap& eqs = assembler_.equations();
+  return eq >= 0 && eq < eqs.n_equations() && dofs_.is_multiplier(eqs.dof(eq));
+}
+
 std::string IncrementProblem::describe_equation(int eq) const {
   const EquationMap& eqs = assembler_.equations();
   if (eq < 0 || eq >= eqs.n_equations()) return "equation " + std::to_string(eq);

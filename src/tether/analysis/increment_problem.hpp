@@ -32,6 +32,7 @@ class IncrementProblem final : public NewtonProblem {
   [[nodiscard]] double displacement_norm(const Eigen::VectorXd& correction) const override;
   [[nodiscard]] bool symmetric() const override { return symmetric_; }
   [[nodiscard]] std::string describe_equation(int eq) const override;
+  [[nodiscard]] bool is_multiplier_equation(int eq) const override;
 
   /// Residual over all global dofs from the last evaluate (reactions at prescribed dofs).
   [[nodiscard]] const Eigen::VectorXd& full_residual() const { return full_; }

@@ -60,7 +60,10 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
       out.status = NewtonOutcome::Status::SingularMatrix;
       out.singular_at_start = iteration == 0;
       out.message = e.what();
-      if (e.equation() >= 0) out.message += " at " + problem.describe_equation(e.equation());
+      if (e.equation() >= 0) {
+        out.message += " at " + problem.describe_equation(e.equation());
+        out.singular_multiplier = problem.is_multiplier_equation(e.equation());
+      }
       return out;
     }
     if (!correction.allFinite()) {

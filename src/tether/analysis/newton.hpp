@@ -32,6 +32,8 @@ class NewtonProblem {
   [[nodiscard]] virtual bool symmetric() const = 0;
   /// Names the unknown of free equation `eq` for messages ("node 12 dof 2").
   [[nodiscard]] virtual std::string describe_equation(int eq) const = 0;
+  /// True when free equation `eq` is a constraint (multiplier) row.
+  [[nodiscard]] virtual bool is_multiplier_equation(int eq) const = 0;
 };
 
 /// How an attempt ended.
@@ -43,6 +45,7 @@ struct NewtonOutcome {
   double force_scale = 0;      ///< q used for the final test
   std::string message;         ///< why it failed (names the node/dof/element)
   bool singular_at_start = false;  ///< singular already at the first iteration
+  bool singular_multiplier = false;  ///< the vanishing pivot belongs to a constraint row
 };
 
 /// Called after each iteration (iteration number, norms) for logs.

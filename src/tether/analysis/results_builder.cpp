@@ -43,6 +43,8 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   for (int i = 0; i < n_nodes; ++i)
     if (count[i] > 1)
       for (int k = 0; k < 4; ++k) r.nodal_stress[i][k] /= count[i], r.nodal_strain[i][k] /= count[i];
+  for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state));
+  for (const auto& c : discretization.user_constraints()) r.multipliers.push_back(c->values(state));
   return r;
 }
 

@@ -60,8 +60,11 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   // Contributions of this step: every element, then the pressure loads.
   auto pressures = disc.make_pressures(loads.pressures);
   std::vector<Contribution*> contributions;
-  contributions.reserve(disc.elements().size() + pressures.size());
+  contributions.reserve(disc.elements().size() + disc.constraints().size() + disc.user_constraints().size() +
+                        pressures.size());
   for (const auto& e : disc.elements()) contributions.push_back(e.get());
+  for (const auto& c : disc.constraints()) contributions.push_back(c.get());
+  for (const auto& c : disc.user_constraints()) contributions.push_back(c.get());
   std::vector<const Contribution*> load_contributions;
   for (const auto& p : pressures) contributions.push_back(p.get()), load_contributions.push_back(p.get());
 
@@ -86,7 +89,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   Assembler assembler(contributions, EquationMap(prescribed));
   auto solver = make_linear_solver(options_.solver);
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
-  // Follower pressure makes the tangent unsymmetric.
+  // Follower pressure makes the tangent unsymmetric; multipliers make it indefinite (the solver notices).
   const bool symmetric = !(step.nlgeom && !pressures.empty());
 
   const double period = step.period > 0 ? step.period : 1.0;
@@ -139,7 +142,13 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       if (outcome.status != NewtonOutcome::Status::Converged) break;
       bool again = false;
       const EvaluationState s = problem.state();
-      for (Contribution* c : contributions) again = (c->on_converged(s) == Acceptance::Iterate) || again;
+      try {
+        for (Contribution* c : contributions) again = (c->on_converged(s) == Acceptance::Iterate) || again;
+      } catch (const ModelError& e) {
+        outcome.status = NewtonOutcome::Status::ElementFailure;
+        outcome.message = e.what();
+        break;
+      }
       if (!again) break;
       observer_.on_message("another Newton pass after multiplier updates (pass " + std::to_string(pass + 2) + ")");
     }
@@ -193,8 +202,12 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     ++summary.cutbacks;
     if (outcome.status == NewtonOutcome::Status::SingularMatrix && outcome.singular_at_start)
       return stop(outcome.message +
-                  " — the model is not restrained there (a rigid-body mode, or a dof that no element "
-                  "or constraint stiffens); add *BOUNDARY conditions or check the connectivity");
+                  (outcome.singular_multiplier
+                       ? " — this constraint is redundant or conflicts with others: it repeats other constraints "
+                         "or *BOUNDARY conditions, or its gradient vanishes on the free dofs; remove it, or "
+                         "regularise it with EPSILON"
+                       : " — the model is not restrained there (a rigid-body mode, or a dof that no element "
+                         "or constraint stiffens); add *BOUNDARY conditions or check the connectivity"));
     if (step.direct) return stop(outcome.message + " with fixed increments (*STATIC, DIRECT)");
     if (attempt > controls.max_cutbacks)
       return stop(outcome.message + " after " + std::to_string(controls.max_cutbacks) + " cut-backs");

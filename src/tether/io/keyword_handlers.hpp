@@ -42,6 +42,9 @@ TETHER_DECK_HANDLER(handle_el_file);
 TETHER_DECK_HANDLER(handle_output);
 TETHER_DECK_HANDLER(handle_node_output);
 TETHER_DECK_HANDLER(handle_element_output);
+TETHER_DECK_HANDLER(handle_equation);
+TETHER_DECK_HANDLER(handle_mpc);
+TETHER_DECK_HANDLER(handle_constraint);
 
 #undef TETHER_DECK_HANDLER
 

@@ -27,6 +27,27 @@ ParameterSpec choice(std::string_view name, std::string_view default_value,
   return {name, PT::Choice, default_value, std::move(choices), false, flag_value, description};
 }
 
+ParameterSpec real(std::string_view name, std::string_view default_value, std::string_view description) {
+  return {name, PT::Real, default_value, {}, false, "", description};
+}
+
+/// tether's extension parameters choosing how a constraint is enforced.
+std::vector<ParameterSpec> enforcement_params(std::vector<ParameterSpec> more) {
+  std::vector<ParameterSpec> p = {
+      name("NAME", "Name used in messages and in the multiplier output (tether extension)."),
+      choice("ENFORCEMENT", "LAGRANGE", {"LAGRANGE", "PENALTY", "AUGMENTED", "ELIMINATION"},
+             "tether extension: Lagrange multipliers (exact; regularised with EPSILON), PENALTY (needs PENALTY=), "
+             "AUGMENTED Lagrangian (penalty plus Uzawa updates until |f| <= TOLERANCE) or ELIMINATION (linear "
+             "constraints only)."),
+      real("EPSILON", "0", "Regularisation: enforce f - EPSILON*lambda = 0 (LAGRANGE only)."),
+      real("PENALTY", "", "Penalty stiffness rho for PENALTY and AUGMENTED (force per unit of f)."),
+      real("TOLERANCE", "0", "AUGMENTED: stop the Uzawa updates when |f| is below this (0: 1e-8 times the model "
+                             "size)."),
+  };
+  for (auto& m : more) p.push_back(std::move(m));
+  return p;
+}
+
 ParameterSpec amplitude_param() {
   return name("AMPLITUDE", "Amplitude scaling the values over the step; without it the value is ramped "
                            "linearly over the step from the previous step's value.");
@@ -160,9 +181,29 @@ std::vector<KeywordSpec> build_table() {
        {name("NSET", "Node set (default: all nodes).")}, handle_node_output, ""},
       {"ELEMENT OUTPUT", kAnyStep, "Element variables of the current *OUTPUT block.", "variables: S, E",
        {name("ELSET", "Element set (default: all elements).")}, handle_element_output, ""},
+      // --- model data: constraints ---
+      {"EQUATION", kModelData, "Linear constraint sum_i c_i u_i = 0 between dofs (ABAQUS syntax).",
+       "the number of terms n, then n terms `node_or_nset, dof, coefficient`, up to four per line; repeat for "
+       "more equations. Node sets apply the equation member by member.",
+       enforcement_params({}), handle_equation, ""},
+      {"MPC", kModelData, "Built-in multi-point constraints: TIE/PIN (equal displacements), LINK (constant "
+                          "distance), SLIDER (node on the line through two others).",
+       "`TYPE, node_a, node_b[, node_c]`, one constraint per line", enforcement_params({}), handle_mpc, ""},
+      {"CONSTRAINT", kModelData,
+       "tether extension: a general constraint f(u) = 0 written as formulas (TYPE=EXPRESSION) or computed by a "
+       "user routine in a shared library (TYPE=USER).",
+       "first line: the node labels (a trailing ',' continues the list); then EXPRESSION: one formula per line "
+       "in Xk, Yk (reference coordinates of node k), Uk, Vk (its displacements) and T (time); USER: the "
+       "property list",
+       enforcement_params({{"TYPE", PT::Choice, "", {"USER", "EXPRESSION"}, true, "", "Formula or user routine."},
+                           {"LIBRARY", PT::Text, "", {}, false, "", "TYPE=USER: shared library (relative to the deck)."},
+                           {"SYMBOL", PT::Text, "tether_user_constraint", {}, false, "",
+                            "TYPE=USER: name of the routine in the library."},
+                           integer("MULTIPLIERS", "1", "TYPE=USER: number of multipliers the routine uses."),
+                           integer("NODES", "0", "Number of nodes (optional; checked against the node list)."),
+                           integer("FLAG", "0", "TYPE=USER: integer passed to the routine as `flag`.")}),
+       handle_constraint, ""},
       // --- recognised, not supported yet: a clear error, never silently dropped ---
-      {"EQUATION", kModelData | kAnyStep, "Linear multi-point constraint.", "", {}, nullptr, kLater},
-      {"MPC", kModelData | kAnyStep, "Multi-point constraint.", "", {}, nullptr, kLater},
       {"TIE", kModelData, "Tie constraint between surfaces.", "", {}, nullptr, kLater},
       {"CONTACT PAIR", kModelData | kAnyStep, "Contact between two surfaces.", "", {}, nullptr, kLater},
       {"SURFACE INTERACTION", kModelData, "Contact property.", "", {}, nullptr, kLater},

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tether/core/error.hpp"
+#include "tether/model/constraint_data.hpp"
 #include "tether/model/element_type.hpp"
 
 namespace tether {
@@ -171,6 +172,7 @@ struct Model {
   std::vector<MaterialData> materials;
   std::vector<SolidSection> sections;
   std::vector<Amplitude> amplitudes;
+  std::vector<ConstraintData> constraints;  ///< *EQUATION, *MPC, *CONSTRAINT (model data)
 
   std::vector<Step> steps;
 

@@ -1,0 +1,149 @@
+// Constraints in whole analyses: exact answers with every enforcement method.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "run_deck.hpp"
+
+using namespace tether;
+using tether::testing::run_deck_text;
+
+namespace {
+
+/// Rigid link of length 2 from a pin at A (node 1) to B (node 2), B starting
+/// at 60 deg below the horizontal, moved horizontally to x = L cos(theta)
+/// under a downward load P: the link force is P / sin(theta), the horizontal
+/// reaction at B is P cot(theta).
+std::string rigid_link_deck(double theta_deg, double load) {
+  const double l = 2.0, t0 = 60 * std::numbers::pi / 180, t = theta_deg * std::numbers::pi / 180;
+  std::ostringstream d;
+  d.precision(17);
+  d << "*NODE\n1, 0, 0\n2, " << l * std::cos(t0) << ", " << -l * std::sin(t0) << "\n"
+    << "*MPC, NAME=LINK\nLINK, 1, 2\n"
+    << "*BOUNDARY\n1, 1, 2\n"
+    << "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n"
+    << "*BOUNDARY\n2, 1, 1, " << l * std::cos(t) - l * std::cos(t0) << "\n"
+    << "*CLOAD\n2, 2, " << -load << "\n*END STEP\n";
+  return d.str();
+}
+
+}  // namespace
+
+TEST(Constraints, RigidLinkForceUnderLargeRotation) {
+  for (double theta : {45.0, 30.0}) {
+    const double load = 3.0;
+    const auto run = run_deck_text(rigid_link_deck(theta, load));
+    ASSERT_TRUE(run.summary.completed) << run.summary.message;
+    const double s = std::sin(theta * std::numbers::pi / 180), c = std::cos(theta * std::numbers::pi / 180);
+    const auto& m = run.last().multipliers.at(0);
+    EXPECT_EQ(m.owner, "LINK");
+    EXPECT_NEAR(m.value[0] / load, 1 / s, 1e-8) << theta;  // 1.41421 at 45, 2.0000 at 30
+    EXPECT_NEAR(std::abs(m.constraint[0]), 0.0, 1e-10 * 2.0);
+    EXPECT_NEAR(run.last().reaction[run.node(2)].x() / load, c / s, 1e-8) << theta;
+    // B ends on the circle, below A.
+    EXPECT_NEAR(run.model.coords[run.node(2)].y() + run.last().displacement[run.node(2)].y(), -2 * s, 1e-10);
+  }
+}
+
+namespace {
+
+/// Two CPE4 bars [0,1] and [1,2] (nodes not shared) joined at x = 1 by
+/// *EQUATION ties u(2) = u(5), u(3) = u(8) in both directions; the left end
+/// is fixed, the right end pulled by F. The tie is the seed's u_a - u_b = 0.
+std::string tied_bars_deck(const std::string& parameters, bool reversed) {
+  std::ostringstream d;
+  d << "*NODE\n1,0,0\n2,1,0\n3,1,1\n4,0,1\n5,1,0\n6,2,0\n7,2,1\n8,1,1\n"
+    << "*ELEMENT, TYPE=CPE4, ELSET=E\n1, 1,2,3,4\n2, 5,6,7,8\n"
+    << "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.\n*SOLID SECTION, ELSET=E, MATERIAL=M\n"
+    << "*BOUNDARY\n1, 1, 2\n4, 1\n";
+  for (auto [a, b] : {std::pair{2, 5}, std::pair{3, 8}})
+    for (int dof : {1, 2}) {
+      if (reversed) std::swap(a, b);
+      d << "*EQUATION" << parameters << "\n2\n" << a << ", " << dof << ", 1., " << b << ", " << dof << ", -1.\n";
+    }
+  d << "*STEP\n*STATIC\n*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n*CLOAD\n6, 1, 5.\n7, 1, 5.\n*END STEP\n";
+  return d.str();
+}
+
+}  // namespace
+
+TEST(Constraints, SeedEqualityTieWithEveryEnforcement) {
+  // nu = 0: a bar of length 2, E = 1000, area 1, force 10: u(2) = 0.02 exactly.
+  struct Case {
+    std::string parameters;
+    double tolerance;  // on the tip displacement, what the method promises
+  };
+  const std::vector<Case> cases = {
+      {"", 1e-12},                                                  // exact
+      {", ENFORCEMENT=LAGRANGE, EPSILON=1e-9", 1e-7},               // f = eps * lambda
+      {", ENFORCEMENT=PENALTY, PENALTY=1e9", 1e-7},                 // f = lambda / rho
+      {", ENFORCEMENT=AUGMENTED, PENALTY=1e4, TOLERANCE=1e-12", 1e-11},
+  };
+  for (const auto& c : cases) {
+    for (bool reversed : {false, true}) {
+      const auto run = run_deck_text(tied_bars_deck(c.parameters, reversed));
+      ASSERT_TRUE(run.summary.completed) << c.parameters << ": " << run.summary.message;
+      EXPECT_NEAR(run.last().displacement[run.node(6)].x(), 0.02, c.tolerance) << c.parameters;
+      EXPECT_NEAR(run.last().displacement[run.node(7)].x(), 0.02, c.tolerance) << c.parameters;
+      // The constraint force is the transmitted force: 5 per tied node pair in x.
+      const auto& m = run.last().multipliers;
+      ASSERT_EQ(m.size(), 4u);
+      EXPECT_NEAR(std::abs(m[0].value[0]), 5.0, 1e-6) << c.parameters;
+      if (c.parameters.find("EPSILON") != std::string::npos)
+        for (const auto& v : m) EXPECT_NEAR(v.constraint[0], 1e-9 * v.value[0], 1e-15);  // f = eps * lambda
+    }
+  }
+}
+
+TEST(Constraints, LagrangeSatisfiesTheEquationToRoundOff) {
+  const auto run = run_deck_text(tied_bars_deck("", false));
+  ASSERT_TRUE(run.summary.completed);
+  for (const auto& m : run.last().multipliers) EXPECT_LE(std::abs(m.constraint[0]), 1e-10 * 2.0);
+}
+
+TEST(Constraints, LinkBracedBodyRotatesWithoutStrain) {
+  // One CPE4 made rigid by four LINKs (three edges and a diagonal; node 1 is
+  // pinned and node 2 driven, so edge 1-2 needs none). Node 2 is driven around
+  // node 1 on the unit circle (amplitudes give the exact circle at every 10
+  // degrees, where the fixed increments end).
+  std::ostringstream d;
+  d.precision(17);
+  d << "*NODE\n1,0,0\n2,1,0\n3,1,1\n4,0,1\n*ELEMENT, TYPE=CPE4, ELSET=E\n1, 1,2,3,4\n"
+    << "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*SOLID SECTION, ELSET=E, MATERIAL=M\n"
+    << "*MPC\nLINK, 2, 3\nLINK, 3, 4\nLINK, 4, 1\nLINK, 1, 3\n";
+  d << "*AMPLITUDE, NAME=UX\n";
+  for (int k = 0; k <= 36; ++k) d << k / 36.0 << ", " << std::cos(k * std::numbers::pi / 18) - 1 << "\n";
+  d << "*AMPLITUDE, NAME=UY\n";
+  for (int k = 0; k <= 36; ++k) d << k / 36.0 << ", " << std::sin(k * std::numbers::pi / 18) << "\n";
+  d << "*BOUNDARY\n1, 1, 2\n*STEP, NLGEOM, INC=100\n*STATIC, DIRECT\n" << 1 / 36.0 << ", 1.\n"
+    << "*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n"
+    << "*BOUNDARY, AMPLITUDE=UX\n2, 1, 1, 1.\n*BOUNDARY, AMPLITUDE=UY\n2, 2, 2, 1.\n*END STEP\n";
+  const auto run = run_deck_text(d.str());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_EQ(run.recorder.results.size(), 36u);
+  for (int k : {8, 35}) {  // 90 and 360 degrees
+    const auto& r = run.recorder.results[k];
+    for (const auto& p : r.points[0]) {
+      for (double e : p.strain) EXPECT_NEAR(e, 0.0, 1e-10) << "increment " << k + 1;
+      for (double s : p.stress) EXPECT_NEAR(s, 0.0, 1e-6) << "increment " << k + 1;
+    }
+    const double angle = (k + 1) * std::numbers::pi / 18;
+    // Node 3 at (1,1) rotated by the angle.
+    const Eigen::Vector2d x3 = run.model.coords[run.node(3)] + r.displacement[run.node(3)];
+    EXPECT_NEAR(x3.x(), std::cos(angle) - std::sin(angle), 1e-10);
+    EXPECT_NEAR(x3.y(), std::sin(angle) + std::cos(angle), 1e-10);
+  }
+}
+
+TEST(Constraints, RedundantConstraintIsNamed) {
+  // A link between two fully prescribed nodes has no free dof: a zero row.
+  std::string deck = rigid_link_deck(45, 1.0);
+  deck.replace(deck.find("*BOUNDARY\n2, 1, 1,"), 19, "*BOUNDARY\n2, 2, 2, 0.\n2, 1, 1,");
+  const auto run = run_deck_text(deck);
+  EXPECT_FALSE(run.summary.completed);
+  EXPECT_NE(run.summary.message.find("multiplier 1 of constraint LINK"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("redundant"), std::string::npos) << run.summary.message;
+}
