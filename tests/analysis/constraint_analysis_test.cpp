@@ -147,3 +147,76 @@ TEST(Constraints, RedundantConstraintIsNamed) {
   EXPECT_NE(run.summary.message.find("multiplier 1 of constraint LINK"), std::string::npos) << run.summary.message;
   EXPECT_NE(run.summary.message.find("redundant"), std::string::npos) << run.summary.message;
 }
+
+TEST(Constraints, EliminationMatchesLagrangeWhicheverSideIsDependent) {
+  const auto lagrange = run_deck_text(tied_bars_deck("", false));
+  ASSERT_TRUE(lagrange.summary.completed);
+  for (bool reversed : {false, true}) {
+    const auto elim = run_deck_text(tied_bars_deck(", ENFORCEMENT=ELIMINATION", reversed));
+    ASSERT_TRUE(elim.summary.completed) << elim.summary.message;
+    for (int n = 0; n < elim.model.n_nodes(); ++n)
+      EXPECT_LT((elim.last().displacement[n] - lagrange.last().displacement[n]).norm(), 1e-12) << "node " << n;
+    // The eliminated constraints still report their force (from the residual at the dependent dof).
+    ASSERT_EQ(elim.last().multipliers.size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const double sign = reversed ? -1.0 : 1.0;  // f changes sign with the order of the terms
+      EXPECT_NEAR(elim.last().multipliers[k].value[0], sign * lagrange.last().multipliers[k].value[0], 1e-9) << k;
+      EXPECT_NEAR(elim.last().multipliers[k].constraint[0], 0.0, 1e-14);
+    }
+    // Reactions at the support are complete with elimination too.
+    EXPECT_NEAR(elim.last().reaction[elim.node(1)].x() + elim.last().reaction[elim.node(4)].x(), -10.0, 1e-9);
+  }
+}
+
+TEST(Constraints, PrescribedDofMayAppearInAnEquation) {
+  // Node 1 is prescribed (x and y) and also in the equation u_x(5) - u_x(1) = 0
+  // (CalculiX refuses a prescribed dof there as dependent). With u_x(1) = 0
+  // the tie still holds node 5 to it: both methods give the same answer.
+  auto deck = [](const std::string& parameters) {
+    std::ostringstream d;
+    d << "*NODE\n1,0,0\n2,1,0\n3,1,1\n4,0,1\n5,1,0\n6,2,0\n7,2,1\n8,1,1\n"
+      << "*ELEMENT, TYPE=CPE4, ELSET=E\n1, 1,2,3,4\n2, 5,6,7,8\n"
+      << "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.\n*SOLID SECTION, ELSET=E, MATERIAL=M\n"
+      << "*BOUNDARY\n1, 1, 2\n4, 1\n"
+      << "*EQUATION" << parameters << "\n2\n5, 1, 1., 1, 1, -1.\n2\n8, 1, 1., 4, 1, -1.\n2\n5, 2, 1., 1, 2, -1.\n"
+      << "*STEP\n*STATIC\n*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n*CLOAD\n6, 1, 5.\n7, 1, 5.\n*END STEP\n";
+    return d.str();
+  };
+  const auto lagrange = run_deck_text(deck(""));
+  const auto elim = run_deck_text(deck(", ENFORCEMENT=ELIMINATION"));
+  ASSERT_TRUE(lagrange.summary.completed) << lagrange.summary.message;
+  ASSERT_TRUE(elim.summary.completed) << elim.summary.message;
+  EXPECT_NEAR(lagrange.last().displacement[lagrange.node(6)].x(), 0.01, 1e-12);  // bar 2 of length 1 under 10
+  for (int n = 0; n < elim.model.n_nodes(); ++n)
+    EXPECT_LT((elim.last().displacement[n] - lagrange.last().displacement[n]).norm(), 1e-12);
+  // The support takes the whole load through the ties in both cases.
+  for (const auto* run : {&lagrange, &elim})
+    EXPECT_NEAR(run->last().reaction[run->node(1)].x() + run->last().reaction[run->node(4)].x(), -10.0, 1e-9);
+}
+
+TEST(Constraints, EliminationResolvesChainsAndNamesRedundantRows) {
+  // u_x(2) = u_x(5) and u_x(5) = u_x(3): a chain; then a repeated row is redundant.
+  std::ostringstream d;
+  d << "*NODE\n1,0,0\n2,1,0\n3,1,1\n4,0,1\n5,1,0\n6,2,0\n7,2,1\n8,1,1\n"
+    << "*ELEMENT, TYPE=CPE4, ELSET=E\n1, 1,2,3,4\n2, 5,6,7,8\n"
+    << "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.\n*SOLID SECTION, ELSET=E, MATERIAL=M\n*BOUNDARY\n1, 1, 2\n4, 1\n"
+    << "*EQUATION, ENFORCEMENT=ELIMINATION\n2\n2, 1, 1., 5, 1, -1.\n2\n5, 1, 1., 3, 1, -1.\n2\n8, 1, 1., 3, 1, -1.\n"
+    << "2\n8, 2, 1., 3, 2, -1.\n2\n5, 2, 1., 2, 2, -1.\n"
+    << "*STEP\n*STATIC\n*CLOAD\n6, 1, 5.\n7, 1, 5.\n*END STEP\n";
+  const auto run = run_deck_text(d.str());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const auto& u = run.last().displacement;
+  EXPECT_NEAR(u[run.node(2)].x(), u[run.node(5)].x(), 1e-14);
+  EXPECT_NEAR(u[run.node(3)].x(), u[run.node(5)].x(), 1e-14);
+  EXPECT_NEAR(u[run.node(8)].x(), u[run.node(3)].x(), 1e-14);
+
+  std::string redundant = d.str();
+  redundant.replace(redundant.find("*STEP"), 5, "*EQUATION, ENFORCEMENT=ELIMINATION, NAME=AGAIN\n2\n3, 1, 2., 2, 1, -2.\n*STEP");
+  try {
+    run_deck_text(redundant);
+    FAIL() << "redundant eliminated constraint accepted";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("AGAIN"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("redundant"), std::string::npos) << e.what();
+  }
+}

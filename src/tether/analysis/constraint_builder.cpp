@@ -43,6 +43,15 @@ std::unique_ptr<ConstraintFunction> make_constraint_function(const Model& model,
         return std::make_unique<ExpressionConstraint>(data.formulas, std::move(nodes), data.where, what,
                                                       data.formula_where);
       }
+      case ConstraintData::Kind::Linear: {  // *TIE slave node, *PERIODIC pair: rows resolved by the reader
+        std::vector<std::vector<LinearTerm>> rows;
+        for (const auto& terms : data.rows) {
+          std::vector<LinearTerm> row;
+          for (const auto& t : terms) row.push_back({dof(t.node, t.dof), t.coefficient});
+          rows.push_back(std::move(row));
+        }
+        return std::make_unique<LinearConstraint>(std::move(rows), what);
+      }
       case ConstraintData::Kind::User: break;
     }
   } catch (const std::invalid_argument& e) {

@@ -1,6 +1,7 @@
 #include "tether/analysis/discretization.hpp"
 
 #include "tether/analysis/constraint_builder.hpp"
+#include "tether/constraints/linear_constraint.hpp"
 #include "tether/core/error.hpp"
 
 namespace tether {
@@ -45,9 +46,22 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
           data.properties, data.n_multipliers, first, dofs_, data.name, data.flag));
       continue;
     }
-    if (data.enforcement.method == Enforcement::Method::Elimination)
-      throw ModelError(data.name + " (" + data.where.str() + "): ENFORCEMENT=ELIMINATION is not available yet");
     auto function = make_constraint_function(model, data, dofs_);
+    if (data.enforcement.method == Enforcement::Method::Elimination) {
+      const auto* linear = dynamic_cast<const LinearConstraint*>(function.get());
+      if (!linear) throw ModelError(data.name + " (" + data.where.str() + "): ELIMINATION needs a linear constraint");
+      EliminatedConstraint e{data.name, data.nodes_or_terms(), {}};
+      const auto fd = linear->dofs();
+      for (Eigen::Index r = 0; r < linear->gradient().rows(); ++r) {
+        EliminationRow row{{}, linear->rhs()[r], data.name + " (" + data.where.str() + ")"};
+        for (std::size_t j = 0; j < fd.size(); ++j)
+          if (linear->gradient()(r, static_cast<Eigen::Index>(j)) != 0)
+            row.terms.emplace_back(fd[j], linear->gradient()(r, static_cast<Eigen::Index>(j)));
+        e.rows.push_back(std::move(row));
+      }
+      eliminated_.push_back(std::move(e));
+      continue;
+    }
     Enforcement enforcement = data.enforcement;
     if (enforcement.method == Enforcement::Method::Augmented && enforcement.tolerance == 0)
       enforcement.tolerance = 1e-8 * length_scale_;
@@ -74,6 +88,16 @@ std::vector<std::unique_ptr<FacePressure>> Discretization::make_pressures(const 
                                                  thickness(load.face.element), dofs_));
   }
   return out;
+}
+
+}  // namespace tether
+
+namespace tether {
+
+std::vector<EliminationRow> Discretization::elimination_rows() const {
+  std::vector<EliminationRow> rows;
+  for (const auto& e : eliminated_) rows.insert(rows.end(), e.rows.begin(), e.rows.end());
+  return rows;
 }
 
 }  // namespace tether

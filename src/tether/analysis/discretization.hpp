@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
+#include "tether/assembly/equation_map.hpp"
 #include "tether/constraints/constraint_element.hpp"
 #include "tether/constraints/user_constraint_element.hpp"
 #include "tether/dofs/dof_map.hpp"
@@ -30,6 +31,16 @@ class Discretization {
   [[nodiscard]] const std::vector<std::unique_ptr<ContinuumElement>>& elements() const { return elements_; }
   /// Constraints enforced as contributions (multipliers, penalty, augmented Lagrangian).
   [[nodiscard]] const std::vector<std::unique_ptr<ConstraintElement>>& constraints() const { return constraints_; }
+  /// A linear constraint enforced by elimination (ENFORCEMENT=ELIMINATION).
+  struct EliminatedConstraint {
+    std::string name;
+    std::vector<int> nodes;
+    std::vector<EliminationRow> rows;
+  };
+  [[nodiscard]] const std::vector<EliminatedConstraint>& eliminated() const { return eliminated_; }
+  /// All rows of the eliminated constraints, in order (for EquationMap).
+  [[nodiscard]] std::vector<EliminationRow> elimination_rows() const;
+
   /// Constraints computed by user routines in shared libraries (*CONSTRAINT, TYPE=USER).
   [[nodiscard]] const std::vector<std::unique_ptr<UserConstraintElement>>& user_constraints() const {
     return user_constraints_;
@@ -51,6 +62,7 @@ class Discretization {
   std::vector<std::unique_ptr<ContinuumElement>> elements_;
   std::vector<std::unique_ptr<ConstraintElement>> constraints_;
   std::vector<std::unique_ptr<UserConstraintElement>> user_constraints_;
+  std::vector<EliminatedConstraint> eliminated_;
   double length_scale_ = 1;
 };
 

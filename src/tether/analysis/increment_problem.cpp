@@ -29,13 +29,12 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent
 
   const EquationMap& eqs = assembler_.equations();
   const int n_disp = dofs_.n_displacement_dofs();
-  residual.resize(eqs.n_equations());
+  eqs.reduce(full_, residual);
   norms.force_residual = 0;
   norms.multiplier_residual = 0;
   for (int e = 0; e < eqs.n_equations(); ++e) {
     const int d = eqs.dof(e);
-    residual[e] = full_[d];
-    const double a = std::abs(full_[d]);
+    const double a = std::abs(residual[e]);
     if (std::isnan(a)) {
       norms.force_residual = NAN;
       continue;
@@ -72,6 +71,7 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent
 void IncrementProblem::apply_correction(const Eigen::VectorXd& correction, double alpha) {
   const EquationMap& eqs = assembler_.equations();
   for (int e = 0; e < eqs.n_equations(); ++e) u_[eqs.dof(e)] += alpha * correction[e];
+  eqs.update_dependents(u_);
 }
 
 double IncrementProblem::displacement_norm(const Eigen::VectorXd& correction) const {

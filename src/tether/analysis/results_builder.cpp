@@ -1,9 +1,48 @@
 #include "tether/analysis/results_builder.hpp"
 
+#include <Eigen/SparseLU>
+
+#include "tether/solvers/linear_solver.hpp"
+
 namespace tether {
 
+namespace {
+
+/// Forces of the eliminated constraints: at convergence the residual at each
+/// dependent dof is balanced by them, r[D_i] + sum_k c_k(D_i) lambda_k = 0.
+Eigen::VectorXd eliminated_multipliers(const EquationMap& equations, const Eigen::VectorXd& residual) {
+  const auto& rows = equations.rows();
+  const int n = static_cast<int>(rows.size());
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(n);
+  if (n == 0) return lambda;
+  std::vector<int> row_of_dependent(equations.n_dofs(), -1);
+  for (int k = 0; k < n; ++k) row_of_dependent[equations.dependent_of_row(k)] = k;
+  std::vector<Eigen::Triplet<double>> t;
+  Eigen::VectorXd rhs(n);
+  for (int k = 0; k < n; ++k) {
+    for (const auto& [dof, c] : rows[k].terms)
+      if (const int i = row_of_dependent[dof]; i >= 0) t.emplace_back(i, k, c);
+    rhs[k] = -residual[equations.dependent_of_row(k)];
+  }
+  SparseMatrix a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  a.makeCompressed();
+  Eigen::SparseLU<SparseMatrix> lu(a);
+  if (lu.info() == Eigen::Success) lambda = lu.solve(rhs);
+  return lambda;
+}
+
+}  // namespace
+
 IncrementResults build_results(const Discretization& discretization, const EvaluationState& state,
-                               const Eigen::VectorXd& residual, const EquationMap& equations) {
+                               const Eigen::VectorXd& full_residual, const EquationMap& equations) {
+  // Residual including the forces of eliminated constraints (so reactions at
+  // prescribed dofs they involve are complete).
+  const Eigen::VectorXd lambda = eliminated_multipliers(equations, full_residual);
+  Eigen::VectorXd residual = full_residual;
+  for (std::size_t k = 0; k < equations.rows().size(); ++k)
+    for (const auto& [dof, c] : equations.rows()[k].terms) residual[dof] += c * lambda[static_cast<Eigen::Index>(k)];
+
   const DofMap& dofs = discretization.dofs();
   const int n_nodes = dofs.n_nodes();
   IncrementResults r;
@@ -45,6 +84,19 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
       for (int k = 0; k < 4; ++k) r.nodal_stress[i][k] /= count[i], r.nodal_strain[i][k] /= count[i];
   for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state));
   for (const auto& c : discretization.user_constraints()) r.multipliers.push_back(c->values(state));
+  std::size_t k = 0;
+  for (const auto& e : discretization.eliminated()) {
+    MultiplierValues v;
+    v.owner = e.name;
+    v.nodes = e.nodes;
+    for (const auto& row : e.rows) {
+      double f = -row.rhs;
+      for (const auto& [dof, c] : row.terms) f += c * state.u[dof];
+      v.constraint.push_back(f);
+      v.value.push_back(lambda[static_cast<Eigen::Index>(k++)]);
+    }
+    r.multipliers.push_back(std::move(v));
+  }
   return r;
 }
 

@@ -75,6 +75,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   std::vector<bool> used(dofs.n_dofs(), false);
   for (const Contribution* c : contributions)
     for (int d : c->dofs()) used[d] = true;
+  for (const auto& row : disc.elimination_rows())
+    for (const auto& term : row.terms) used[term.first] = true;
   int unused_nodes = 0;
   for (int node = 0; node < dofs.n_nodes(); ++node) {
     bool any = false;
@@ -86,7 +88,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   if (unused_nodes > 0 && index == 0)
     observer_.on_message(std::to_string(unused_nodes) +
                          " node(s) belong to no element; they get no degrees of freedom");
-  Assembler assembler(contributions, EquationMap(prescribed));
+  Assembler assembler(contributions, EquationMap(prescribed, disc.elimination_rows()));
   auto solver = make_linear_solver(options_.solver);
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
   // Follower pressure makes the tangent unsymmetric; multipliers make it indefinite (the solver notices).
@@ -123,6 +125,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     const Eigen::VectorXd u_start = u_;
     for (const auto& [dof, v] : loads.prescribed)
       u_[dof] = step_magnitude(model_, v.amplitude, v.start, v.target, t_new, period, total_new);
+    assembler.equations().update_dependents(u_);
     external.setZero();
     for (const auto& [dof, v] : loads.forces)
       external[dof] += step_magnitude(model_, v.amplitude, v.start, v.target, t_new, period, total_new);

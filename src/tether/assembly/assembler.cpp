@@ -38,33 +38,33 @@ bool Assembler::update_connectivity(const EvaluationState& state) {
   return changed;
 }
 
+void Assembler::equations_of(const Contribution& c, std::vector<int>& out) const {
+  out.clear();
+  for (int d : c.dofs())
+    for (const EquationWeight& w : equations_.weights(d)) out.push_back(w.equation);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
 void Assembler::build_pattern() {
   const auto t0 = std::chrono::steady_clock::now();
   const int n = equations_.n_equations();
   const int n_contrib = static_cast<int>(contributions_.size());
+  std::vector<int> eqs;
 
   // 1. Rows per column, with duplicates, then sorted and unique.
   std::vector<std::int64_t> count(n + 1, 0);
   for (const Contribution* c : contributions_) {
-    int free = 0;
-    for (int d : c->dofs()) free += equations_.equation(d) >= 0;
-    for (int d : c->dofs()) {
-      const int e = equations_.equation(d);
-      if (e >= 0) count[e + 1] += free;
-    }
+    equations_of(*c, eqs);
+    for (int e : eqs) count[e + 1] += static_cast<std::int64_t>(eqs.size());
   }
   for (int j = 0; j < n; ++j) count[j + 1] += count[j];
   std::vector<int> rows(static_cast<std::size_t>(count[n]));
   std::vector<std::int64_t> fill(count.begin(), count.end() - 1);
   for (const Contribution* c : contributions_) {
-    for (int dj : c->dofs()) {
-      const int ej = equations_.equation(dj);
-      if (ej < 0) continue;
-      for (int di : c->dofs()) {
-        const int ei = equations_.equation(di);
-        if (ei >= 0) rows[fill[ej]++] = ei;
-      }
-    }
+    equations_of(*c, eqs);
+    for (int ej : eqs)
+      for (int ei : eqs) rows[fill[ej]++] = ei;
   }
   std::vector<int> outer(n + 1, 0);
   std::vector<int> inner;
@@ -84,44 +84,77 @@ void Assembler::build_pattern() {
   std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
   std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
   std::fill_n(pattern_.valuePtr(), inner.size(), 0.0);
+  auto position = [&](int row, int col) {
+    return static_cast<int>(std::lower_bound(inner.data() + outer[col], inner.data() + outer[col + 1], row) -
+                            inner.data());
+  };
 
-  // 2. Value positions of each contribution's local entries.
+  // 2. Value positions of each contribution's local entries: plain for
+  //    contributions on free/prescribed dofs only, weighted through T otherwise.
   offsets_.assign(n_contrib + 1, 0);
+  weighted_index_.assign(n_contrib, -1);
+  weighted_.clear();
   for (int c = 0; c < n_contrib; ++c) {
-    const auto m = contributions_[c]->dofs().size();
-    offsets_[c + 1] = offsets_[c] + m * m;
+    const auto dofs = contributions_[c]->dofs();
+    const auto m = dofs.size();
+    const bool weighted =
+        equations_.has_dependents() && std::any_of(dofs.begin(), dofs.end(), [&](int d) { return equations_.is_dependent(d); });
+    if (weighted) {
+      weighted_index_[c] = static_cast<int>(weighted_.size());
+      weighted_.emplace_back();
+    }
+    offsets_[c + 1] = offsets_[c] + (weighted ? 0 : m * m);
   }
   positions_.assign(offsets_[n_contrib], -1);
 #pragma omp parallel for schedule(dynamic, 256) if (n_contrib >= kParallelThreshold)
   for (int c = 0; c < n_contrib; ++c) {
     const auto dofs = contributions_[c]->dofs();
     const std::size_t m = dofs.size();
+    if (weighted_index_[c] >= 0) {
+      WeightedScatter& w = weighted_[weighted_index_[c]];
+      w.start.assign(m * m + 1, 0);
+      for (std::size_t b = 0; b < m; ++b)
+        for (std::size_t a = 0; a < m; ++a) {
+          for (const EquationWeight& wb : equations_.weights(dofs[b]))
+            for (const EquationWeight& wa : equations_.weights(dofs[a])) {
+              w.pos.push_back(position(wa.equation, wb.equation));
+              w.weight.push_back(wa.weight * wb.weight);
+            }
+          w.start[b * m + a + 1] = static_cast<int>(w.pos.size());
+        }
+      continue;
+    }
     for (std::size_t b = 0; b < m; ++b) {
       const int ej = equations_.equation(dofs[b]);
       if (ej < 0) continue;
-      const int* first = inner.data() + outer[ej];
-      const int* last = inner.data() + outer[ej + 1];
       for (std::size_t a = 0; a < m; ++a) {
         const int ei = equations_.equation(dofs[a]);
-        if (ei < 0) continue;
-        positions_[offsets_[c] + b * m + a] = static_cast<int>(std::lower_bound(first, last, ei) - inner.data());
+        if (ei >= 0) positions_[offsets_[c] + b * m + a] = position(ei, ej);
       }
     }
   }
 
-  // 3. Greedy colouring: no two contributions of a colour share a global dof.
+  // 3. Greedy colouring: no two contributions of a colour share a global dof
+  //    or (through T) a free equation, so their scatters never collide.
   std::vector<std::uint64_t> used(equations_.n_dofs(), 0);
   colours_.assign(1, {});
   std::vector<int> overflow;
+  std::vector<int> touched;
   for (int c = 0; c < n_contrib; ++c) {
+    const auto dofs = contributions_[c]->dofs();
+    touched.assign(dofs.begin(), dofs.end());
+    if (weighted_index_[c] >= 0) {
+      equations_of(*contributions_[c], eqs);
+      for (int e : eqs) touched.push_back(equations_.dof(e));
+    }
     std::uint64_t mask = 0;
-    for (int d : contributions_[c]->dofs()) mask |= used[d];
+    for (int d : touched) mask |= used[d];
     if (mask == ~std::uint64_t{0}) {
       overflow.push_back(c);
       continue;
     }
     const int colour = std::countr_one(mask);
-    for (int d : contributions_[c]->dofs()) used[d] |= std::uint64_t{1} << colour;
+    for (int d : touched) used[d] |= std::uint64_t{1} << colour;
     if (colour >= static_cast<int>(colours_.size())) colours_.resize(colour + 1);
     colours_[colour].push_back(c);
   }
@@ -167,8 +200,14 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
         }
         for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
         if (!values) continue;
+        const double* ke = local.tangent.data();  // column-major, like the positions
+        if (weighted_index_[c] >= 0) {
+          const WeightedScatter& w = weighted_[weighted_index_[c]];
+          for (Eigen::Index e = 0; e < m * m; ++e)
+            for (int k = w.start[e]; k < w.start[e + 1]; ++k) values[w.pos[k]] += w.weight[k] * ke[e];
+          continue;
+        }
         const int* pos = positions_.data() + offsets_[c];
-        const double* ke = local.tangent.data();  // column-major, like pos
         for (Eigen::Index e = 0; e < m * m; ++e)
           if (pos[e] >= 0) values[pos[e]] += ke[e];
       }

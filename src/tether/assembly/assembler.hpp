@@ -49,6 +49,8 @@ class Assembler {
 
  private:
   void build_pattern();
+  /// Free equations a contribution's entries land in (through T), sorted, unique.
+  void equations_of(const Contribution& c, std::vector<int>& out) const;
 
   std::vector<Contribution*> contributions_;
   EquationMap equations_;
@@ -57,6 +59,16 @@ class Assembler {
   /// positions_[offsets_[c] + b * n + a]; -1 where a row or column is prescribed.
   std::vector<int> positions_;
   std::vector<std::size_t> offsets_;
+  /// Contributions touching a dependent (eliminated) dof scatter through the
+  /// map T: local entry e = b * n + a adds weight[k] * k_e to values[pos[k]]
+  /// for k in [start[e], start[e + 1]).
+  struct WeightedScatter {
+    std::vector<int> start;
+    std::vector<int> pos;
+    std::vector<double> weight;
+  };
+  std::vector<int> weighted_index_;  ///< per contribution: index into weighted_ or -1 (plain positions)
+  std::vector<WeightedScatter> weighted_;
   /// Contribution indices per colour; the last colour may hold contributions
   /// that found no free colour and is then assembled serially.
   std::vector<std::vector<int>> colours_;
