@@ -68,7 +68,8 @@ struct Increment {
 };
 
 std::vector<MultiplierValues> some_multipliers() {
-  return {{"EQUATION 1", {0, 4}, {2.5}, {0.0}}, {"CONTACT 19", {4, 5}, {1.0, -3.0}, {0.0, 0.0}}};
+  return {{"EQUATION 1", {0, 4}, {2.5}, {0.0}, {{0, {-2.5, 0.0}}, {4, {2.5, 0.0}}}},
+          {"CONTACT 19", {4, 5}, {1.0, -3.0}, {0.0, 0.0}, {{4, {0.0, -1.0}}, {5, {3.0, 1.0}}}}};
 }
 
 /// Expected content of every .vtu, from the formulas in tiny_model.hpp.
@@ -107,7 +108,15 @@ void write_vtu_expectation(const Model& m, const std::vector<Increment>& increme
     o << ",\"S_Mises\":";
     j.list(nodes, [&](int i) { o << mises(f * 100 * x(i), f * 200 * y(i), f * 30 * (x(i) + y(i)), f * 10 * x(i) * y(i)); });
     o << ",\"LAGRANGE_MULTIPLIER\":";
-    j.list(nodes, [&](int i) { o << (i == 0 ? 2.5 : i == 4 ? 3.5 : i == 5 ? -3.0 : 0.0); });
+    // Single-equation owners only (EQUATION 1 on nodes 0 and 4); CONTACT 19 has two equations.
+    j.list(nodes, [&](int i) { o << (i == 0 || i == 4 ? 2.5 : 0.0); });
+    o << ",\"CONSTRAINT_FORCE\":";
+    j.list(nodes, [&](int i) {
+      if (i == 0) j.numbers({-2.5, 0.0, 0.0});
+      else if (i == 4) j.numbers({2.5, -1.0, 0.0});
+      else if (i == 5) j.numbers({3.0, 1.0, 0.0});
+      else j.numbers({0.0, 0.0, 0.0});
+    });
     o << ",\"cell_S\":";
     j.list(m.elements, [&](const Element& e) {
       const double h = (test::n_points(e.type.shape) - 1) / 2.0;  // mean of k

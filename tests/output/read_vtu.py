@@ -9,7 +9,8 @@ and compares them with EXPECTED.json, written by the C++ test:
    "cells": [{"type": "quad", "nodes": [...], "id": 101}, ...],
    "increments": [{"file": "job_1_1.vtu", "time": t,
                    "U": [[...]], "RF": [[...]], "S": [[6 values]], "E": [[...]],
-                   "S_Mises": [...], "cell_S": [[6 values]], "LAGRANGE_MULTIPLIER": [...]}]}
+                   "S_Mises": [...], "cell_S": [[6 values]], "LAGRANGE_MULTIPLIER": [...],
+                   "CONSTRAINT_FORCE": [[fx, fy, 0]]}]}
 Exit status 0 when everything matches, 1 otherwise.
 """
 import json
@@ -61,7 +62,7 @@ def check_vtu(path, expected, inc):
                  [c["id"] for c in expected["cells"]])
     expect_close(f"{path}: cell S", concatenated_cell_data(mesh, "S"), inc["cell_S"])
     expect_close(f"{path}: NodeId", mesh.point_data["NodeId"], expected["node_ids"])
-    for name in ("U", "RF", "S", "E", "S_Mises", "LAGRANGE_MULTIPLIER"):
+    for name in ("U", "RF", "S", "E", "S_Mises", "LAGRANGE_MULTIPLIER", "CONSTRAINT_FORCE"):
         if name not in inc:
             if name in mesh.point_data:
                 fail(f"{path}: unexpected point data {name}")

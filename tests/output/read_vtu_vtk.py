@@ -60,7 +60,7 @@ def main(argv):
             if [ids.GetId(k) for k in range(ids.GetNumberOfIds())] != cell["nodes"]:
                 fail(f"{path}: connectivity of cell {i}")
         point_data = grid.GetPointData()
-        for name in ("U", "RF", "S", "E", "S_Mises", "LAGRANGE_MULTIPLIER"):
+        for name in ("U", "RF", "S", "E", "S_Mises", "LAGRANGE_MULTIPLIER", "CONSTRAINT_FORCE"):
             expect_close(f"{path}: {name}", vtk_to_numpy(point_data.GetArray(name)), inc[name])
         expect_close(f"{path}: cell S", vtk_to_numpy(grid.GetCellData().GetArray("S")), inc["cell_S"])
         expect_close(f"{path}: TIME", vtk_to_numpy(grid.GetFieldData().GetArray("TIME")), [inc["time"]])

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "tether/core/error.hpp"
+#include "tether/dofs/dof_map.hpp"
 
 namespace tether {
 
@@ -118,6 +119,15 @@ MultiplierValues ConstraintElement::values(const EvaluationState& state) const {
       case Enforcement::Method::Augmented: v.value[k] = lambda_bar_[k] + enforcement_.penalty * c.f[k]; break;
       case Enforcement::Method::Elimination: v.value[k] = 0; break;
     }
+  }
+  // Force on dof i: -sum_k lambda_k df_k/du_i, gathered per node (dof = 2 node + component).
+  const Eigen::VectorXd force = -(c.gradient.transpose() * Eigen::Map<const Eigen::VectorXd>(v.value.data(), m_));
+  for (int i = 0; i < n_; ++i) {
+    const int node = dofs_[i] / kDofsPerNode, component = dofs_[i] % kDofsPerNode;
+    std::size_t a = 0;
+    while (a < v.nodal_force.size() && v.nodal_force[a].node != node) ++a;
+    if (a == v.nodal_force.size()) v.nodal_force.push_back({node, Eigen::Vector2d::Zero()});
+    v.nodal_force[a].force[component] += force[i];
   }
   return v;
 }

@@ -141,6 +141,9 @@ MultiplierValues UserConstraintElement::values(const EvaluationState& state) con
     v.value[k] = state.u[dofs_[nu + k]];
     v.constraint[k] = residual[nu + k];
   }
+  // The force the constraint exerts on a displacement dof is -residual (user_constraint.h).
+  for (int a = 0; a < n_nodes(); ++a)
+    v.nodal_force.push_back({node_indices_[a], -Eigen::Vector2d(residual[kDofsPerNode * a], residual[kDofsPerNode * a + 1])});
   return v;
 }
 

@@ -22,12 +22,24 @@ struct PointValues {
   Tensor4 strain{};         ///< small strain, or Green-Lagrange strain under NLGEOM; tensor shear
 };
 
+/// The force a constraint exerts on one node: -sum_k lambda_k df_k/du over
+/// the node's two displacement components [force].
+struct NodalConstraintForce {
+  int node = 0;                      ///< node index
+  Eigen::Vector2d force{0, 0};       ///< (fx, fy)
+};
+
 /// Multiplier values owned by one constraint/contact object, for output.
 struct MultiplierValues {
   std::string owner;               ///< e.g. "EQUATION 3"
   std::vector<int> nodes;          ///< node indices it acts on (for VTU field data)
   std::vector<double> value;       ///< lambda (one per multiplier)
   std::vector<double> constraint;  ///< f(u) (one per multiplier)
+  /// The constraint's force on each node it acts on (one entry per node, in
+  /// order of first appearance), -lambda df/du; empty when the owner does not
+  /// provide it. Under penalty/augmented enforcement lambda is the force
+  /// multiplier the method produces (rho f, lambda_bar + rho f).
+  std::vector<NodalConstraintForce> nodal_force;
 };
 
 /// Everything written for one converged increment.

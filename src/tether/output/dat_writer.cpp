@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <iterator>
 #include <numeric>
 #include <stdexcept>
@@ -94,6 +95,28 @@ void write_points(Out out, const Model& model, const Selection& sel, const Incre
 
 }  // namespace
 
+std::string multiplier_set_name(const std::string& owner, int number) {
+  std::string name;
+  for (const char c : owner) name += std::isspace(static_cast<unsigned char>(c)) ? '_' : c;
+  return name.empty() ? fmt::format("C{}", number) : name;
+}
+
+void write_multiplier_blocks(std::string& text, const std::vector<MultiplierValues>& multipliers, double time) {
+  const auto out = std::back_inserter(text);
+  for (std::size_t c = 0; c < multipliers.size(); ++c) {
+    const MultiplierValues& m = multipliers[c];
+    if (m.value.empty()) continue;
+    if (m.constraint.size() != m.value.size())
+      throw std::invalid_argument(fmt::format("DatWriter: constraint '{}' has {} multipliers but {} values of f",
+                                              m.owner, m.value.size(), m.constraint.size()));
+    const int number = static_cast<int>(c) + 1;
+    write_header(out, kMultiplierTitle, multiplier_set_name(m.owner, number), time);
+    for (std::size_t k = 0; k < m.value.size(); ++k)
+      fmt::format_to(out, "{:10d}{:5d} {:13.6E} {:13.6E}\n", number, k + 1, unsigned_zero(m.constraint[k]),
+                     unsigned_zero(m.value[k]));
+  }
+}
+
 DatWriter::DatWriter(const Model& model, std::filesystem::path file)
     : model_(model), file_(std::move(file)), out_(file_, std::ios::binary | std::ios::trunc) {
   if (!out_) throw std::runtime_error("cannot create '" + file_.string() + "'");
@@ -136,6 +159,7 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
         write_points(out, model_, sel, results, v == "S");
     }
   }
+  write_multiplier_blocks(text, results.multipliers, results.total_time);
   out_ << text;
   out_.flush();
   if (!out_) throw std::runtime_error("error while writing '" + file_.string() + "' (disk full?)");

@@ -157,6 +157,19 @@ VtuWriter::VtuWriter(const Model& model, VtuEncoding encoding) : model_(model), 
     cell_types_.push_back(vtk_cell_type(e.type.shape));
     element_ids_.push_back(e.id);
   }
+  // Nodes outside every element (constraint-only nodes: a link's end, a
+  // reference node) get a VTK_VERTEX cell each, so they are drawn and the file
+  // has cells even without elements; ElementId 0, stress 0.
+  std::vector<bool> used(n, false);
+  for (const auto& e : model.elements)
+    for (const int node : e.nodes) used[static_cast<std::size_t>(node)] = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (used[i]) continue;
+    connectivity_.push_back(static_cast<std::int64_t>(i));
+    offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
+    cell_types_.push_back(1);  // VTK_VERTEX
+    element_ids_.push_back(0);
+  }
 }
 
 void VtuWriter::write(const IncrementResults& results, const std::filesystem::path& file) const {
@@ -167,14 +180,15 @@ void VtuWriter::write(const IncrementResults& results, const std::filesystem::pa
 
 void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   const std::size_t n_nodes = node_ids_.size();
-  const std::size_t n_cells = element_ids_.size();
+  const std::size_t n_cells = element_ids_.size();           // elements, then vertex cells
+  const std::size_t n_elements = model_.elements.size();
   if (r.displacement.size() != n_nodes)
     throw std::invalid_argument(fmt::format("VtuWriter: IncrementResults::displacement has {} entries, the mesh needs {}",
                                             r.displacement.size(), n_nodes));
   check_size(r.reaction.size(), n_nodes, "reaction");
   check_size(r.nodal_stress.size(), n_nodes, "nodal_stress");
   check_size(r.nodal_strain.size(), n_nodes, "nodal_strain");
-  check_size(r.points.size(), n_cells, "points");
+  check_size(r.points.size(), n_elements, "points");
 
   Sink sink(out);
   const auto enc = encoding_;
@@ -211,24 +225,31 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (!r.nodal_strain.empty()) write_data_array(sink, enc, kIndent, "E", 6, tensors6(r.nodal_strain));
   if (!r.multipliers.empty()) {
     std::vector<double> lambda(n_nodes, 0.0);
+    std::vector<Eigen::Vector2d> force(n_nodes, Eigen::Vector2d::Zero());
+    const auto checked = [&](const MultiplierValues& m, int node) {
+      if (node < 0 || static_cast<std::size_t>(node) >= n_nodes)
+        throw std::invalid_argument(fmt::format("VtuWriter: multiplier owner '{}' names node index {} outside the mesh",
+                                                m.owner, node));
+      return static_cast<std::size_t>(node);
+    };
     for (const auto& m : r.multipliers) {
-      if (m.value.empty()) continue;
-      const bool one_to_one = m.value.size() == m.nodes.size();
-      for (std::size_t k = 0; k < m.nodes.size(); ++k) {
-        const int node = m.nodes[k];
-        if (node < 0 || static_cast<std::size_t>(node) >= n_nodes)
-          throw std::invalid_argument(fmt::format("VtuWriter: multiplier owner '{}' names node index {} outside the mesh",
-                                                  m.owner, node));
-        lambda[static_cast<std::size_t>(node)] += one_to_one ? m.value[k] : m.value.front();
+      std::vector<std::size_t> seen;  // a node listed twice gets the owner's lambda once
+      for (const int node : m.nodes) {
+        const std::size_t i = checked(m, node);
+        if (m.value.size() != 1 || std::find(seen.begin(), seen.end(), i) != seen.end()) continue;
+        seen.push_back(i);
+        lambda[i] += m.value.front();
       }
+      for (const auto& f : m.nodal_force) force[checked(m, f.node)] += f.force;
     }
     write_data_array(sink, enc, kIndent, "LAGRANGE_MULTIPLIER", 1, lambda);
+    write_data_array(sink, enc, kIndent, "CONSTRAINT_FORCE", 3, vectors3(force));
   }
   sink.append("      </PointData>\n      <CellData Scalars=\"ElementId\">\n");
   write_data_array(sink, enc, kIndent, "ElementId", 1, element_ids_);
   if (!r.points.empty()) {
     std::vector<double> average(6 * n_cells, 0.0), mises(n_cells, 0.0);
-    for (std::size_t e = 0; e < n_cells; ++e) {
+    for (std::size_t e = 0; e < n_elements; ++e) {
       const auto& points = r.points[e];
       if (points.empty()) continue;
       Tensor4 mean{};

@@ -32,16 +32,30 @@ std::uint8_t vtk_cell_type(Shape shape);
 /// - FieldData `TIME` (total time), `STEP`, `INCREMENT`;
 /// - PointData `NodeId` (node labels), `U`, `RF` (3 components, z = 0),
 ///   `S`, `E` (6 components in VTK's symmetric-tensor order XX, YY, ZZ, XY,
-///   YZ, XZ; tensor shear strains), `S_Mises`, and `LAGRANGE_MULTIPLIER` when
-///   the increment has multipliers (see below);
+///   YZ, XZ; tensor shear strains), `S_Mises`, and `LAGRANGE_MULTIPLIER`
+///   and `CONSTRAINT_FORCE` when the increment has multipliers (see below);
 /// - CellData `ElementId` (element labels), `S` and `S_Mises`: the arithmetic
 ///   mean of the integration-point stresses and its von Mises value.
+/// - after the elements, one VTK_VERTEX cell per node that no element uses
+///   (nodes held only by constraints, e.g. the ends of a rigid link), with
+///   ElementId 0 and zero cell stress, so such nodes are drawn and a model
+///   without elements still has cells.
 /// A field whose vector in IncrementResults is empty is left out.
 ///
-/// `LAGRANGE_MULTIPLIER`: for each MultiplierValues with as many values as
-/// nodes, value i is put on node i; otherwise its first value is put on every
-/// node it lists. Contributions meeting at a node are summed; nodes without a
-/// multiplier get 0.
+/// `CONSTRAINT_FORCE` (3 components, z = 0) [force]: at each node the sum over
+/// all constraints of the force they exert on it, -sum_k lambda_k df_k/du
+/// (MultiplierValues::nodal_force); 0 at nodes without constraints. This is
+/// the well-defined nodal picture of the multipliers: at a node that is also
+/// prescribed it equals minus the reaction force the constraint causes there
+/// (RF = internal force + constraint residual), and with Warp By Vector /
+/// Glyph it shows where and in which direction constraints push.
+///
+/// `LAGRANGE_MULTIPLIER` (scalar): the multiplier of every single-equation
+/// constraint (LINK, SLIDER, one-row *EQUATION, EXPRESSION or USER) put on
+/// each node it lists, summed where such constraints meet; 0 elsewhere.
+/// Constraints with several equations (MPC TIE/PIN, multi-row formulas) are
+/// left out: their multipliers belong to equations, not nodes — they are in
+/// CONSTRAINT_FORCE and, per equation, in the `.dat` multiplier blocks.
 ///
 /// The mesh arrays are built once at construction; the Model must outlive the
 /// writer and must not change.

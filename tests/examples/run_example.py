@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+"""Runs one example deck with the tether program and checks its headline numbers.
+
+Usage: run_example.py EXAMPLE TETHER_EXE SOURCE_DIR WORK_DIR USER_CONSTRAINT_MODULE
+
+EXAMPLE is rigid_link, formula_constraint or user_constraint. The deck is copied
+into WORK_DIR (the user constraint's LIBRARY= is pointed at the module the build
+made), run with `tether run -q`, and its .dat is read with tools/datfile.py.
+The expected values are the exact ones quoted in the example's README.
+Exit status 0 = OK, 1 = mismatch or failed run.
+"""
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+TITLE = "constraint multipliers"
+
+
+def fail(message):
+    print("run_example.py:", message, file=sys.stderr)
+    sys.exit(1)
+
+
+def run(tether, deck, work):
+    out = os.path.join(work, "out")
+    shutil.rmtree(out, ignore_errors=True)
+    result = subprocess.run([tether, "run", "-q", deck, "-o", out], capture_output=True, text=True, timeout=100)
+    if result.returncode != 0:
+        fail(f"tether exited with {result.returncode}: {result.stderr}")
+    stem = os.path.splitext(os.path.basename(deck))[0]
+    return datfile.read(os.path.join(out, stem + ".dat"))
+
+
+def blocks_of(blocks, title, set_name):
+    found = [b for b in blocks if b["title"].startswith(title) and b["set"] == set_name]
+    if not found:
+        fail(f"no '{title}' block for set {set_name}")
+    return found
+
+
+def driven_bead(blocks, x0, y0, load, set_name, constraint, exact_lambda):
+    """Worst relative error of lambda over the increments, and the last lambda."""
+    u = blocks_of(blocks, "displacements", set_name)
+    m = blocks_of(blocks, TITLE, constraint)
+    if len(u) != 20 or len(m) != 20:
+        fail(f"{len(u)} displacement and {len(m)} multiplier blocks, expected 20 each")
+    worst = 0.0
+    for ub, mb in zip(u, m):
+        x, y = x0 + ub["rows"][0][1], y0 + ub["rows"][0][2]
+        lam = mb["rows"][0][3]
+        worst = max(worst, abs(lam / exact_lambda(x, y, load) - 1))
+    return worst, m[-1]["rows"][0][3]
+
+
+def main(argv):
+    if len(argv) != 6:
+        print(__doc__, file=sys.stderr)
+        return 2
+    example, tether, source, work, module = argv[1:]
+    sys.path.insert(0, os.path.join(source, "tools"))
+    global datfile
+    import datfile  # noqa: F401
+    os.makedirs(work, exist_ok=True)
+    folder = os.path.join(source, "examples", example)
+
+    if example == "rigid_link":
+        blocks = run(tether, os.path.join(folder, "rigid_link.inp"), work)
+        worst, last = driven_bead(blocks, 0.34729635533386083, -1.969615506024416, 3.0, "B", "LINK",
+                                  lambda x, y, p: p / (-y / math.hypot(x, y)))
+        exact = 3.0 / math.sin(math.radians(10))
+        print(f"rigid_link: N at theta = 10 deg: {last:.6f} (exact P/sin(theta) = {exact:.6f}); "
+              f"max relative error over 20 increments {worst:.1e}")
+        if worst > 2e-6 or abs(last / exact - 1) > 2e-6:
+            fail("link force differs from P / sin(theta)")
+    elif example == "formula_constraint":
+        blocks = run(tether, os.path.join(folder, "bead_on_ellipse.inp"), work)
+        worst, last = driven_bead(blocks, 0.34729635533386083, -0.984807753012208, 3.0, "BEAD", "ELLIPSE",
+                                  lambda x, y, p: p / (2 * abs(y)))
+        exact = 3.0 / (2 * math.sin(math.radians(10)))
+        print(f"formula_constraint: lambda at x = 2 cos 10deg: {last:.6f} (exact P/(2|y|) = {exact:.6f}); "
+              f"max relative error over 20 increments {worst:.1e}")
+        if worst > 2e-6 or abs(last / exact - 1) > 2e-6:
+            fail("bead multiplier differs from P / (2|y|)")
+        rf = blocks_of(blocks, "forces", "BEAD")[-1]["rows"][0][1]
+        x = 2 * math.cos(math.radians(10))
+        if abs(rf - last * x / 2) > 1e-5 * abs(rf):
+            fail(f"horizontal reaction {rf} != lambda x / 2 = {last * x / 2}")
+    elif example == "user_constraint":
+        with open(os.path.join(folder, "equal_displacement.inp")) as f:
+            text = f.read().replace("LIBRARY=build/libequal_displacement.so", "LIBRARY=" + module)
+        deck = os.path.join(work, "equal_displacement.inp")
+        with open(deck, "w") as f:
+            f.write(text)
+        blocks = run(tether, deck, work)
+        u = {int(r[0]): r for r in blocks_of(blocks, "displacements", "NALL")[-1]["rows"]}
+        lam = {s: blocks_of(blocks, TITLE, s)[-1]["rows"][0][3]
+               for s in ("TIE-BOTTOM-X", "TIE-BOTTOM-Y", "TIE-TOP-X", "TIE-TOP-Y")}
+        print(f"user_constraint: u_x(x=2) = {u[6][1]:.6f}, {u[7][1]:.6f} (exact 0.2), u_y(y=1) = {u[7][2]:.6f} "
+              f"(exact -0.03), lambda = {lam}")
+        if abs(u[6][1] - 0.2) > 1e-6 or abs(u[7][1] - 0.2) > 1e-6 or abs(u[7][2] + 0.03) > 1e-7:
+            fail("displacements differ from the exact uniform-stress answer")
+        if abs(lam["TIE-BOTTOM-X"] + 50) > 1e-4 or abs(lam["TIE-TOP-X"] + 50) > 1e-4:
+            fail("x ties do not carry lambda = -50")
+        if abs(lam["TIE-BOTTOM-Y"]) > 1e-6 or abs(lam["TIE-TOP-Y"]) > 1e-6:
+            fail("y ties carry a force")
+    else:
+        fail(f"unknown example {example}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
