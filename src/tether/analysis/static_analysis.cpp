@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "tether/analysis/amplitude.hpp"
+#include "tether/analysis/constraint_checks.hpp"
 #include "tether/analysis/increment_problem.hpp"
 #include "tether/analysis/newton.hpp"
 #include "tether/analysis/results_builder.hpp"
@@ -43,7 +44,14 @@ AnalysisSummary StaticAnalysis::run() {
     return summary;
   }
   for (int s = 0; s < static_cast<int>(model_.steps.size()); ++s) {
-    if (!run_step(s, summary)) return summary;
+    try {
+      if (!run_step(s, summary)) return summary;
+    } catch (const ModelError& e) {
+      // A model problem found while setting the step up (a redundant constraint, ...).
+      summary.message = "step " + std::to_string(s + 1) + " cannot be solved: " + e.what() +
+                        (summary.increments > 0 ? "; the last converged increment has been written" : "");
+      return summary;
+    }
     ++summary.steps;
   }
   summary.completed = true;
@@ -89,6 +97,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     observer_.on_message(std::to_string(unused_nodes) +
                          " node(s) belong to no element; they get no degrees of freedom");
   Assembler assembler(contributions, EquationMap(prescribed, disc.elimination_rows()));
+  check_constraints(disc, assembler.equations(), EvaluationState{u_, u_, 0, total_time_, 0, step.nlgeom});
   auto solver = make_linear_solver(options_.solver);
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
   // Follower pressure makes the tangent unsymmetric; multipliers make it indefinite (the solver notices).

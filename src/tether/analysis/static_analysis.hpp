@@ -38,8 +38,8 @@ class StaticAnalysis {
   StaticAnalysis(const Model& model, AnalysisObserver& observer, AnalysisOptions options = {});
   ~StaticAnalysis();
 
-  /// Runs all steps. Never throws for a model that fails to converge: the
-  /// summary reports it.
+  /// Runs all steps. Never throws for a model that fails to converge or that a
+  /// step cannot solve (singular, redundant constraints): the summary reports it.
   AnalysisSummary run();
 
   /// Global unknowns at the last converged increment.
