@@ -100,8 +100,9 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   check_constraints(disc, assembler.equations(), EvaluationState{u_, u_, 0, total_time_, 0, step.nlgeom});
   auto solver = make_linear_solver(options_.solver);
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
-  // Follower pressure makes the tangent unsymmetric; multipliers make it indefinite (the solver notices).
-  const bool symmetric = !(step.nlgeom && !pressures.empty());
+  // Cholesky is worth trying only for a symmetric positive definite tangent:
+  // follower pressure makes it unsymmetric, multipliers make it indefinite.
+  const bool symmetric = !(step.nlgeom && !pressures.empty()) && dofs.n_multipliers() == 0;
 
   const double period = step.period > 0 ? step.period : 1.0;
   const double max_dt = step.max_increment > 0 ? step.max_increment : period;
