@@ -151,6 +151,7 @@ for solver in cholmod umfpack; do
   row "$name factorize [s]" fmt_s "k_${solver}_factorize_s"
   row "$name solve [s]" fmt_s "k_${solver}_solve_s"
   row "**$name analyze + factorize + solve [s]**" fmt_s "k_${solver}_total_s"
+  row "$name analyze + factorize + solve, CPU time [s]" fmt_s "k_${solver}_total_cpu_s"
   row "$name error" echo "k_${solver}_error"
   row "$name re-factorize, same pattern [s]" fmt_s "k_${solver}_refactorize_s"
   row "$name relative residual" echo "k_${solver}_relative_residual"
