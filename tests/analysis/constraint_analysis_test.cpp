@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -182,6 +183,15 @@ TEST(Constraints, EliminationMatchesLagrangeWhicheverSideIsDependent) {
       const double sign = reversed ? -1.0 : 1.0;  // f changes sign with the order of the terms
       EXPECT_NEAR(elim.last().multipliers[k].value[0], sign * lagrange.last().multipliers[k].value[0], 1e-9) << k;
       EXPECT_NEAR(elim.last().multipliers[k].constraint[0], 0.0, 1e-14);
+      // The nodal constraint forces do not depend on the method or the order.
+      const auto& fe = elim.last().multipliers[k].nodal_force;
+      const auto& fl = lagrange.last().multipliers[k].nodal_force;
+      ASSERT_EQ(fe.size(), fl.size());
+      for (const auto& a : fe) {
+        const auto b = std::find_if(fl.begin(), fl.end(), [&](const auto& n) { return n.node == a.node; });
+        ASSERT_NE(b, fl.end());
+        EXPECT_LT((a.force - b->force).norm(), 1e-9) << "constraint " << k << " node " << a.node;
+      }
     }
     // Reactions at the support are complete with elimination too.
     EXPECT_NEAR(elim.last().reaction[elim.node(1)].x() + elim.last().reaction[elim.node(4)].x(), -10.0, 1e-9);
@@ -236,4 +246,18 @@ TEST(Constraints, EliminationResolvesChainsAndNamesRedundantRows) {
   EXPECT_FALSE(bad.summary.completed);
   EXPECT_NE(bad.summary.message.find("AGAIN"), std::string::npos) << bad.summary.message;
   EXPECT_NE(bad.summary.message.find("redundant"), std::string::npos) << bad.summary.message;
+}
+
+TEST(Constraints, OneNodeModelConverges) {
+  // A bead on the unit circle: one node, no element. y is prescribed to -0.5,
+  // a force -1 in x: lambda * 2x - 1 * (-1)... r_x = lambda 2x + 1 = 0, so
+  // lambda = -1/(2x) at x = sqrt(0.75) (the wire pushes outwards).
+  const std::string deck =
+      "*NODE\n1, 1., 0.\n*CONSTRAINT, TYPE=EXPRESSION, NAME=CIRCLE\n1\n(X1+U1)^2 + (Y1+V1)^2 - 1\n"
+      "*STEP, NLGEOM\n*STATIC\n*BOUNDARY\n1, 2, 2, -0.5\n*CLOAD\n1, 1, -1.\n*END STEP\n";
+  const auto run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const double x = std::sqrt(0.75);
+  EXPECT_NEAR(1.0 + run.last().displacement[0].x(), x, 1e-10);
+  EXPECT_NEAR(run.last().multipliers[0].value[0], -1 / (2 * x), 1e-9);
 }

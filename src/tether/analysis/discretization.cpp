@@ -32,7 +32,11 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
   if (!model.coords.empty()) {
     Eigen::Vector2d lo = model.coords.front(), hi = lo;
     for (const auto& x : model.coords) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-    length_scale_ = std::max((hi - lo).norm(), 1e-30);
+    // A model of one node (or nodes on a point) has no extent: fall back on
+    // the distance from the origin, then on 1.
+    double size = (hi - lo).norm();
+    if (!(size > 0)) size = std::max(hi.cwiseAbs().maxCoeff(), 1.0);
+    length_scale_ = size;
   }
 
   for (const ConstraintData& data : model.constraints) {

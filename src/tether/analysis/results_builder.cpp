@@ -1,6 +1,7 @@
 #include "tether/analysis/results_builder.hpp"
 
 #include <Eigen/SparseLU>
+#include <algorithm>
 
 #include "tether/solvers/linear_solver.hpp"
 
@@ -93,7 +94,16 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
       double f = -row.rhs;
       for (const auto& [dof, c] : row.terms) f += c * state.u[dof];
       v.constraint.push_back(f);
-      v.value.push_back(lambda[static_cast<Eigen::Index>(k++)]);
+      const double l = lambda[static_cast<Eigen::Index>(k++)];
+      v.value.push_back(l);
+      // Force on dof i: -lambda * df/du_i, accumulated per node.
+      for (const auto& [dof, c] : row.terms) {
+        const int node = discretization.dofs().node_of(dof);
+        auto it = std::find_if(v.nodal_force.begin(), v.nodal_force.end(),
+                               [&](const NodalConstraintForce& n) { return n.node == node; });
+        if (it == v.nodal_force.end()) it = v.nodal_force.insert(v.nodal_force.end(), {node, Eigen::Vector2d::Zero()});
+        it->force[dof % kDofsPerNode] -= l * c;
+      }
     }
     r.multipliers.push_back(std::move(v));
   }
