@@ -250,8 +250,8 @@ TEST(Constraints, EliminationResolvesChainsAndNamesRedundantRows) {
 
 TEST(Constraints, OneNodeModelConverges) {
   // A bead on the unit circle: one node, no element. y is prescribed to -0.5,
-  // a force -1 in x: lambda * 2x - 1 * (-1)... r_x = lambda 2x + 1 = 0, so
-  // lambda = -1/(2x) at x = sqrt(0.75) (the wire pushes outwards).
+  // a force -1 in x: r_x = lambda * 2x + 1 = 0, so lambda = -1/(2x) at
+  // x = sqrt(0.75) (the wire pushes outwards).
   const std::string deck =
       "*NODE\n1, 1., 0.\n*CONSTRAINT, TYPE=EXPRESSION, NAME=CIRCLE\n1\n(X1+U1)^2 + (Y1+V1)^2 - 1\n"
       "*STEP, NLGEOM\n*STATIC\n*BOUNDARY\n1, 2, 2, -0.5\n*CLOAD\n1, 1, -1.\n*END STEP\n";
