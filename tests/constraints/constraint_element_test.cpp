@@ -8,6 +8,7 @@
 #include "tether/constraints/constraint_element.hpp"
 #include "tether/constraints/distance_constraint.hpp"
 #include "tether/constraints/linear_constraint.hpp"
+#include "support/tangent_check.hpp"
 
 using namespace tether;
 
@@ -36,27 +37,8 @@ Eigen::VectorXd random_vector(int n, std::mt19937& rng, double scale) {
   return v;
 }
 
-/// Max |analytic - central FD| relative to the largest analytic entry.
 double tangent_error(const Contribution& c, const Eigen::VectorXd& u) {
-  const auto dofs = c.dofs();
-  const auto n = static_cast<Eigen::Index>(dofs.size());
-  LocalSystem at;
-  at.reset(n);
-  c.evaluate(EvaluationState{u, u}, at, true);
-  Eigen::MatrixXd fd(n, n);
-  const double h = 1e-6;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    Eigen::VectorXd up = u, um = u;
-    up[dofs[j]] += h;
-    um[dofs[j]] -= h;
-    LocalSystem p, m;
-    p.reset(n);
-    m.reset(n);
-    c.evaluate(EvaluationState{up, up}, p, false);
-    c.evaluate(EvaluationState{um, um}, m, false);
-    fd.col(j) = (p.residual - m.residual) / (2 * h);
-  }
-  return (at.tangent - fd).cwiseAbs().maxCoeff() / std::max(1.0, at.tangent.cwiseAbs().maxCoeff());
+  return tether::testing::tangent_error(c, EvaluationState{u, u});
 }
 
 }  // namespace

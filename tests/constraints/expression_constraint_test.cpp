@@ -2,6 +2,7 @@
 // against finite differences and against the hand-written DistanceConstraint;
 // linearity detection; every error path of the formula parser.
 
+#include "support/tangent_check.hpp"
 #include "tether/constraints/expression_constraint.hpp"
 
 #include <gtest/gtest.h>
@@ -63,27 +64,8 @@ ConstraintInput state(Eigen::VectorXd u, double total_time = 1.3, double step_ti
   return in;
 }
 
-/// Max |residual tangent - central FD of the residual| relative to the largest tangent entry.
 double tangent_error(const Contribution& c, const Eigen::VectorXd& u, double total_time) {
-  const auto dofs = c.dofs();
-  const auto n = static_cast<Eigen::Index>(dofs.size());
-  LocalSystem at;
-  at.reset(n);
-  c.evaluate(EvaluationState{u, u, 0.2, total_time}, at, true);
-  Eigen::MatrixXd fd(n, n);
-  const double h = 1e-6;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    Eigen::VectorXd up = u, um = u;
-    up[dofs[j]] += h;
-    um[dofs[j]] -= h;
-    LocalSystem p, m;
-    p.reset(n);
-    m.reset(n);
-    c.evaluate(EvaluationState{up, up, 0.2, total_time}, p, false);
-    c.evaluate(EvaluationState{um, um, 0.2, total_time}, m, false);
-    fd.col(j) = (p.residual - m.residual) / (2 * h);
-  }
-  return (at.tangent - fd).cwiseAbs().maxCoeff() / std::max(1.0, at.tangent.cwiseAbs().maxCoeff());
+  return tether::testing::tangent_error(c, EvaluationState{u, u, 0.2, total_time});
 }
 
 /// The InputError message thrown for `formulas` (empty if none is thrown).

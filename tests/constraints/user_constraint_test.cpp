@@ -6,6 +6,7 @@
 
 #include <random>
 
+#include "support/tangent_check.hpp"
 #include "tether/constraints/constraint_element.hpp"
 #include "tether/constraints/linear_constraint.hpp"
 #include "tether/constraints/user_constraint_element.hpp"
@@ -58,27 +59,8 @@ std::pair<Eigen::VectorXd, Eigen::MatrixXd> global_system(const Contribution& c,
   return {r, k};
 }
 
-/// Max |analytic - central FD| relative to the largest analytic entry.
 double tangent_error(const Contribution& c, const Eigen::VectorXd& u, const Eigen::VectorXd& u_start) {
-  const auto dofs = c.dofs();
-  const auto n = static_cast<Eigen::Index>(dofs.size());
-  LocalSystem at;
-  at.reset(n);
-  c.evaluate(EvaluationState{u, u_start}, at, true);
-  Eigen::MatrixXd fd(n, n);
-  const double h = 1e-6;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    Eigen::VectorXd up = u, um = u;
-    up[dofs[j]] += h;
-    um[dofs[j]] -= h;
-    LocalSystem p, m;
-    p.reset(n);
-    m.reset(n);
-    c.evaluate(EvaluationState{up, u_start}, p, false);
-    c.evaluate(EvaluationState{um, u_start}, m, false);
-    fd.col(j) = (p.residual - m.residual) / (2 * h);
-  }
-  return (at.tangent - fd).cwiseAbs().maxCoeff() / std::max(1.0, at.tangent.cwiseAbs().maxCoeff());
+  return tether::testing::tangent_error(c, EvaluationState{u, u_start});
 }
 
 template <class F>
