@@ -141,7 +141,7 @@ void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalS
     if (!need_tangent) continue;
 
     const Eigen::Matrix<double, 4, ND> DB = (mp.D.topLeftCorner<4, 4>() * dV) * B;
-    K.noalias() += B.transpose() * DB;
+    K.noalias() += B.transpose().lazyProduct(DB);  // small fixed sizes: skip Eigen's GEMM path
     if (nlgeom) {  // geometric stiffness: delta(dE) : S
       for (int a = 0; a < NN; ++a) {
         const double sa0 = stress(0) * Gx(a) + stress(3) * Gy(a);

@@ -1,5 +1,13 @@
 #pragma once
 /// \file SuiteSparse UMFPACK (LU with partial pivoting) behind LinearSolver.
+///
+/// Uses the 64-bit `umfpack_dl_*` routines: the 32-bit ones run out of index
+/// range (reported as out of memory) near a million dofs. The matrix's 32-bit
+/// index arrays are copied to 64-bit once per pattern. Systems above
+/// kMetisThreshold equations are ordered with METIS (less fill than AMD).
+
+#include <cstdint>
+#include <vector>
 
 #include "tether/solvers/linear_solver.hpp"
 
@@ -7,6 +15,9 @@ namespace tether {
 
 class UmfpackSolver final : public LinearSolver {
  public:
+  /// Equations above which METIS orders the matrix.
+  static constexpr int kMetisThreshold = 100000;
+
   UmfpackSolver();
   ~UmfpackSolver() override;
   UmfpackSolver(const UmfpackSolver&) = delete;
@@ -25,6 +36,8 @@ class UmfpackSolver final : public LinearSolver {
   void free_numeric();
   void free_symbolic();
 
+  /// 64-bit copies of the analysed matrix's index arrays.
+  std::vector<std::int64_t> outer_, inner_;
   void* symbolic_ = nullptr;
   void* numeric_ = nullptr;
   double control_[20]{};
