@@ -15,7 +15,7 @@ TEST(DeckErrors, UnknownKeywordListsTheAllowedOnes) {
 }
 
 TEST(DeckErrors, LaterKeywordsAreNotSupportedYetNeverDropped) {
-  for (const std::string kw : {"*TIE, NAME=T", "*CONTACT PAIR, INTERACTION=I",
+  for (const std::string kw : {"*CONTACT PAIR, INTERACTION=I",
                                "*SURFACE INTERACTION, NAME=I", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD",
                                "*FRICTION", "*CONTACT PRINT", "*CONTACT FILE", "*DYNAMIC"}) {
     const std::string deck = replaced(kDeck, "*CLOAD", kw + "\n1, 2\n*CLOAD");

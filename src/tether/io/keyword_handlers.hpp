@@ -45,6 +45,9 @@ TETHER_DECK_HANDLER(handle_element_output);
 TETHER_DECK_HANDLER(handle_equation);
 TETHER_DECK_HANDLER(handle_mpc);
 TETHER_DECK_HANDLER(handle_constraint);
+// tie_keywords.cpp
+TETHER_DECK_HANDLER(handle_tie);
+TETHER_DECK_HANDLER(handle_periodic);
 
 #undef TETHER_DECK_HANDLER
 

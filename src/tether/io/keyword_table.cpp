@@ -203,8 +203,45 @@ std::vector<KeywordSpec> build_table() {
                            integer("NODES", "0", "Number of nodes (optional; checked against the node list)."),
                            integer("FLAG", "0", "TYPE=USER: integer passed to the routine as `flag`.")}),
        handle_constraint, ""},
+      {"TIE", kModelData,
+       "Ties the nodes of a slave surface to a master surface (non-matching meshes): each slave node within "
+       "POSITION TOLERANCE of the master surface gets two linear equations (x and y) tying it to the master "
+       "face(s), with weights fixed in the reference configuration (small sliding; see TYPE). Slave nodes "
+       "farther away are not tied (a warning lists them); slave nodes that are also master nodes are skipped; "
+       "a line that ties no node is an error.",
+       "`slave_surface, master_surface` (slave: element faces or TYPE=NODE; master: element faces, 2- or 3-node); "
+       "one pair per line",
+       enforcement_params(
+           {real("POSITION TOLERANCE", "0",
+                 "Largest distance of a tied slave node from the master surface (0: 5 % of the mean master face "
+                 "length, as ABAQUS)."),
+            choice("ADJUST", "YES", {"YES", "NO"},
+                   "YES: move tied slave nodes onto the master surface in the reference configuration (a warning "
+                   "says how many and how far) before the analysis."),
+            choice("TYPE", "SURFACE TO SURFACE", {"NODE TO SURFACE", "SURFACE TO SURFACE"},
+                   "SURFACE TO SURFACE (ABAQUS's default): mortar equations sum_l D_kl u_l - sum_i M_ki u_i = 0 "
+                   "per slave node, integrated over the slave faces; passes the patch test on any non-matching "
+                   "straight interface. NODE TO SURFACE: u_s = sum_i N_i(xi*) u_i, exact only where the master "
+                   "nodes sit at slave node positions. A node slave surface is always NODE TO SURFACE.")}),
+       handle_tie, ""},
+      {"PERIODIC", kModelData,
+       "tether extension: periodic boundary conditions of a cell (RVE). Node a of the first set and its partner b "
+       "of the second (at X_a + translation) get u_b - u_a = H (X_b - X_a), one equation per component, where the "
+       "macroscopic displacement gradient H = [[u_R1x, u_R2x], [u_R1y, u_R2y]] has as columns the displacements "
+       "of the reference nodes REFERENCE1 and REFERENCE2. Prescribe or load the reference nodes to load the cell: "
+       "their reactions are the macroscopic stress times the cell volume, F(R1) = V (S11, S21), F(R2) = V (S12, "
+       "S22) (V = area times thickness). A pair already implied by earlier pairs (the corners of a cell paired "
+       "along x and y) is not written again, so the equations stay independent.",
+       "`nset_a, nset_b[, dx, dy]`: opposite node sets, paired by the translation (dx, dy) (default: from the "
+       "centroid of a to the centroid of b); one pair of sets per line",
+       enforcement_params({name("REFERENCE1", "Node (label or one-node set) whose displacement is the first column "
+                                              "of H: (H11, H21).", true),
+                           name("REFERENCE2", "Node whose displacement is the second column of H: (H12, H22).", true),
+                           real("POSITION TOLERANCE", "0",
+                                "Largest distance between X_a + translation and the partner of a (0: 1e-6 times "
+                                "the translation length).")}),
+       handle_periodic, ""},
       // --- recognised, not supported yet: a clear error, never silently dropped ---
-      {"TIE", kModelData, "Tie constraint between surfaces.", "", {}, nullptr, kLater},
       {"CONTACT PAIR", kModelData | kAnyStep, "Contact between two surfaces.", "", {}, nullptr, kLater},
       {"SURFACE INTERACTION", kModelData, "Contact property.", "", {}, nullptr, kLater},
       {"SURFACE BEHAVIOR", kModelData, "Pressure-overclosure law.", "", {}, nullptr, kLater},

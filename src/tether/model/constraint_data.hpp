@@ -1,5 +1,5 @@
 #pragma once
-/// \file Constraints as read from a deck (`*EQUATION`, `*MPC`, `*CONSTRAINT`): plain data.
+/// \file Constraints as read from a deck (`*EQUATION`, `*MPC`, `*CONSTRAINT`, `*TIE`, `*PERIODIC`): plain data.
 
 #include <string>
 #include <vector>
@@ -40,10 +40,12 @@ struct ConstraintData {
     Slider,      ///< *MPC SLIDER: node a on the line through b and c
     User,        ///< *CONSTRAINT, TYPE=USER: residual and stiffness from a shared library
     Expression,  ///< *CONSTRAINT, TYPE=EXPRESSION: f given as formulas
+    Linear,      ///< *TIE (one slave node) / *PERIODIC (one node pair): several equations `rows`, each sum = 0
   };
   Kind kind = Kind::Equation;
   std::string name;                   ///< NAME= or generated ("EQUATION-3", "MPC-2 LINK")
   std::vector<EquationTerm> terms;    ///< Equation
+  std::vector<std::vector<EquationTerm>> rows;  ///< Linear: one list of terms per equation (sum of terms = 0)
   std::vector<int> nodes;             ///< MPC / User / Expression: node indices in the order given
   std::vector<std::string> formulas;  ///< Expression: one per equation
   std::vector<SourceLocation> formula_where;  ///< Expression: the deck line of each formula
