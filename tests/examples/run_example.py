@@ -3,7 +3,7 @@
 
 Usage: run_example.py EXAMPLE TETHER_EXE SOURCE_DIR WORK_DIR USER_CONSTRAINT_MODULE
 
-EXAMPLE is rigid_link, formula_constraint or user_constraint. The deck is copied
+EXAMPLE is rigid_link, formula_constraint, user_constraint or periodic_rve. The deck is copied
 into WORK_DIR (the user constraint's LIBRARY= is pointed at the module the build
 made), run with `tether run -q`, and its .dat is read with tools/datfile.py.
 The expected values are the exact ones quoted in the example's README.
@@ -105,6 +105,15 @@ def main(argv):
             fail("x ties do not carry lambda = -50")
         if abs(lam["TIE-BOTTOM-Y"]) > 1e-6 or abs(lam["TIE-TOP-Y"]) > 1e-6:
             fail("y ties carry a force")
+    elif example == "periodic_rve":
+        blocks = run(tether, os.path.join(folder, "laminate_rve.inp"), work)
+        forces = blocks_of(blocks, "forces", "REF")
+        along = {int(r[0]): r for r in forces[0]["rows"]}[1001][1] / 1e-3
+        across = {int(r[0]): r for r in forces[-1]["rows"]}[1002][2] / 1e-3
+        print(f"periodic_rve: E along the layers {along:.4f} (rule of mixtures 437.5), "
+              f"across {across:.4f} (inverse rule 150.9434)")
+        if abs(along - 437.5) > 1e-3 or abs(across - 150.943396) > 1e-3:
+            fail("effective moduli differ from the rules of mixtures")
     else:
         fail(f"unknown example {example}")
     return 0

@@ -2,6 +2,7 @@
 // ENFORCEMENT= extension parameters.
 #include <filesystem>
 
+#include "tether/io/constraint_params.hpp"
 #include "tether/io/deck_state.hpp"
 #include "tether/io/keyword_handlers.hpp"
 #include "tether/io/numbers.hpp"
@@ -9,39 +10,6 @@
 namespace tether::deck {
 
 namespace {
-
-/// Enforcement parameters of a constraint keyword, validated.
-Enforcement read_enforcement(const ParameterValues& params, const SourceLocation& at, bool linear_only_ok) {
-  Enforcement e;
-  const std::string method = params.name("ENFORCEMENT");
-  if (method == "PENALTY")
-    e.method = Enforcement::Method::Penalty;
-  else if (method == "AUGMENTED")
-    e.method = Enforcement::Method::Augmented;
-  else if (method == "ELIMINATION")
-    e.method = Enforcement::Method::Elimination;
-  e.epsilon = params.real("EPSILON");
-  e.penalty = params.real("PENALTY");
-  e.tolerance = params.real("TOLERANCE");
-  if (e.epsilon < 0) throw InputError(at, "EPSILON must be >= 0");
-  if (e.tolerance < 0) throw InputError(at, "TOLERANCE must be >= 0");
-  if ((e.method == Enforcement::Method::Penalty || e.method == Enforcement::Method::Augmented) && !(e.penalty > 0))
-    throw InputError(at, "ENFORCEMENT=" + method + " needs PENALTY=rho > 0 (the penalty stiffness)");
-  if (e.method == Enforcement::Method::Elimination && !linear_only_ok)
-    throw InputError(at, "ENFORCEMENT=ELIMINATION needs a linear constraint (*EQUATION, *MPC TIE or PIN)");
-  if (params.given("EPSILON") && e.method != Enforcement::Method::Lagrange)
-    throw InputError(at, "EPSILON applies to ENFORCEMENT=LAGRANGE only");
-  return e;
-}
-
-/// The one node of a token (a label or a one-node set).
-int single_node(const DeckState& state, const std::string& token, const SourceLocation& at) {
-  const std::vector<int> nodes = state.nodes_of(token, at);
-  if (nodes.size() != 1)
-    throw InputError(at, "'" + token + "' names " + std::to_string(nodes.size()) +
-                             " nodes; expected a node label or a set with one node");
-  return nodes[0];
-}
 
 std::string default_name(const DeckState& state, const std::string& what) {
   return what + "-" + std::to_string(state.model.constraints.size() + 1);

@@ -10,6 +10,7 @@
 #include "tether/constraints/periodic_pairs.hpp"
 #include "tether/constraints/tie_mortar.hpp"
 #include "tether/constraints/tie_projection.hpp"
+#include "tether/io/constraint_params.hpp"
 #include "tether/io/deck_state.hpp"
 #include "tether/io/keyword_handlers.hpp"
 #include "tether/io/numbers.hpp"
@@ -28,29 +29,6 @@ std::string num(double v) {
 
 std::string point(const Eigen::Vector2d& x) { return "(" + num(x.x()) + ", " + num(x.y()) + ")"; }
 
-/// Enforcement parameters (ENFORCEMENT=, EPSILON=, PENALTY=, TOLERANCE=) of a
-/// linear constraint keyword. Same rules as for *EQUATION (constraint_keywords.cpp).
-Enforcement read_linear_enforcement(const ParameterValues& params, const SourceLocation& at) {
-  Enforcement e;
-  const std::string method = params.name("ENFORCEMENT");
-  if (method == "PENALTY")
-    e.method = Enforcement::Method::Penalty;
-  else if (method == "AUGMENTED")
-    e.method = Enforcement::Method::Augmented;
-  else if (method == "ELIMINATION")
-    e.method = Enforcement::Method::Elimination;
-  e.epsilon = params.real("EPSILON");
-  e.penalty = params.real("PENALTY");
-  e.tolerance = params.real("TOLERANCE");
-  if (e.epsilon < 0) throw InputError(at, "EPSILON must be >= 0");
-  if (e.tolerance < 0) throw InputError(at, "TOLERANCE must be >= 0");
-  if ((e.method == Enforcement::Method::Penalty || e.method == Enforcement::Method::Augmented) && !(e.penalty > 0))
-    throw InputError(at, "ENFORCEMENT=" + method + " needs PENALTY=rho > 0 (the penalty stiffness)");
-  if (params.given("EPSILON") && e.method != Enforcement::Method::Lagrange)
-    throw InputError(at, "EPSILON applies to ENFORCEMENT=LAGRANGE only");
-  return e;
-}
-
 /// POSITION TOLERANCE=, >= 0 (0 or absent: the keyword's default).
 double position_tolerance(const ParameterValues& params, const SourceLocation& at) {
   const double tolerance = params.real("POSITION TOLERANCE");
@@ -66,15 +44,6 @@ const Surface& surface(const DeckState& state, const std::string& token, const S
     throw InputError(at, "undefined " + std::string(role) + " surface '" + token +
                              "': expected a surface defined earlier by *SURFACE");
   return it->second;
-}
-
-/// The one node of a parameter value (a label or a one-node set).
-int single_node(const DeckState& state, const std::string& token, const SourceLocation& at, std::string_view what) {
-  const std::vector<int> nodes = state.nodes_of(token, at);
-  if (nodes.size() != 1)
-    throw InputError(at, std::string(what) + "='" + token + "' names " + std::to_string(nodes.size()) +
-                             " nodes; expected a node label or a set with one node");
-  return nodes[0];
 }
 
 /// The faces of an element-face surface with their nodes and reference coordinates.
@@ -227,7 +196,7 @@ void tie_surfaces(DeckState& state, const DataLine& line, const Enforcement& enf
 }  // namespace
 
 void handle_tie(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
-  const Enforcement enforcement = read_linear_enforcement(params, block.where);
+  const Enforcement enforcement = read_enforcement(params, block.where, true);
   const double tolerance = position_tolerance(params, block.where);
   const bool adjust = params.name("ADJUST") == "YES";
   const bool mortar = params.name("TYPE") == "SURFACE TO SURFACE";
@@ -238,7 +207,7 @@ void handle_tie(DeckState& state, const KeywordBlock& block, const ParameterValu
 }
 
 void handle_periodic(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
-  const Enforcement enforcement = read_linear_enforcement(params, block.where);
+  const Enforcement enforcement = read_enforcement(params, block.where, true);
   const double given_tolerance = position_tolerance(params, block.where);
   Model& model = state.model;
   const int r1 = single_node(state, params.text("REFERENCE1"), block.where, "REFERENCE1");
