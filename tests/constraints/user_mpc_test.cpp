@@ -316,3 +316,72 @@ TEST(UserMpc, LinkWithinAConstraintElementReportsTheDependentForce) {
   const Eigen::Vector2d along = fx.x[2] - fx.x[1];
   EXPECT_LT(std::abs(along.x() * v.nodal_force[0].force.y() - along.y() * v.nodal_force[0].force.x()), 1e-13);
 }
+
+TEST(UserMpc, ExampleDeckProblemSolvedByNewtonMatchesTheExactAnswer) {
+  // examples/user_mpc/user_mpc.inp without the deck: pin A (node 0) fixed, B
+  // (node 1) on a rigid link of length 2 to A (JTYPE 1, u_y(B) dependent), x_B
+  // driven from L cos 80 deg to L cos 10 deg in 20 increments, P = 3 down on B;
+  // C (node 2) rotates rigidly with AB about A (JTYPE 2), Q = 1 down on C.
+  const double length = 2, pi = std::acos(-1.0), p_load = 3, q_load = 1;
+  DofMap dofs(std::vector<int>{1, 2, 3});
+  const std::vector<Eigen::Vector2d> x{
+      {0, 0}, {length * std::cos(80 * pi / 180), -length * std::sin(80 * pi / 180)}, {1.5, -1.0}};
+  const int link_first = dofs.add_multipliers(1, "LINK");
+  const int rot_first = dofs.add_multipliers(2, "ROTATE");
+  auto at = [&](std::vector<int> nodes) {
+    std::vector<Eigen::Vector2d> r;
+    for (const int a : nodes) r.push_back(x[a]);
+    return r;
+  };
+  const ConstraintElement link(
+      std::make_unique<UserMpcConstraint>(kExample, "", UserMpcMode::Dof, 1, std::vector<int>{1, 1, 0, 0},
+                                          std::vector<int>{2, 2, 1, 1}, at({1, 1, 0, 0}), dofs, "LINK"),
+      {Enforcement::Method::Lagrange, 0.0}, link_first, "LINK", {1, 0});
+  const ConstraintElement rotate(
+      std::make_unique<UserMpcConstraint>(kExample, "", UserMpcMode::Node, 2, std::vector<int>{2, 1, 0},
+                                          std::vector<int>{3, 2, 1}, at({2, 1, 0}), dofs, "ROTATE"),
+      {Enforcement::Method::Lagrange, 0.0}, rot_first, "ROTATE", {2, 1, 0});
+  const int n = dofs.n_dofs();
+  const std::vector<int> free{3, 4, 5, link_first, rot_first, rot_first + 1};
+  Eigen::VectorXd f_ext = Eigen::VectorXd::Zero(n);
+  f_ext[3] = -p_load;
+  f_ext[5] = -q_load;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+  const double x_end = length * std::cos(10 * pi / 180);
+  int iterations = 0;
+  for (int inc = 1; inc <= 20; ++inc) {
+    const Eigen::VectorXd u_start = u;
+    u[2] = (x_end - x[1].x()) * inc / 20.0;
+    for (int it = 0; it < 20; ++it, ++iterations) {
+      Eigen::VectorXd r = -f_ext;
+      Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);
+      for (const ConstraintElement* c : {&link, &rotate}) {
+        LocalSystem s;
+        s.reset(static_cast<Eigen::Index>(c->dofs().size()));
+        c->evaluate(EvaluationState{u, u_start}, s, true);
+        for (Eigen::Index i = 0; i < s.residual.size(); ++i) {
+          r[c->dofs()[i]] += s.residual[i];
+          for (Eigen::Index j = 0; j < s.residual.size(); ++j) k(c->dofs()[i], c->dofs()[j]) += s.tangent(i, j);
+        }
+      }
+      Eigen::VectorXd rf(6);
+      Eigen::MatrixXd kf(6, 6);
+      for (int i = 0; i < 6; ++i) {
+        rf[i] = r[free[i]];
+        for (int j = 0; j < 6; ++j) kf(i, j) = k(free[i], free[j]);
+      }
+      if (rf.norm() < 1e-11) break;
+      const Eigen::VectorXd du = kf.fullPivLu().solve(-rf);
+      for (int i = 0; i < 6; ++i) u[free[i]] += du[i];
+    }
+  }
+  EXPECT_LE(iterations, 20 * 5);  // quadratic convergence: a few iterations per increment
+  const Eigen::Vector2d b(x_end, -length * std::sin(10 * pi / 180));
+  const Eigen::Vector2d c = Eigen::Rotation2Dd(70 * pi / 180) * x[2];
+  EXPECT_NEAR(u[2] + x[1].x(), b.x(), 1e-12);
+  EXPECT_NEAR(u[3] + x[1].y(), b.y(), 1e-10);
+  EXPECT_LT((u.segment<2>(4) + x[2] - c).norm(), 1e-10);
+  EXPECT_NEAR(u[rot_first], 0.0, 1e-10);
+  EXPECT_NEAR(u[rot_first + 1], -q_load, 1e-10);
+  EXPECT_NEAR(u[link_first], -p_load - q_load * c.x() * b.x() / (length * length), 1e-10);
+}
