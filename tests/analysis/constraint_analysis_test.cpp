@@ -261,3 +261,59 @@ TEST(Constraints, OneNodeModelConverges) {
   EXPECT_NEAR(1.0 + run.last().displacement[0].x(), x, 1e-10);
   EXPECT_NEAR(run.last().multipliers[0].value[0], -1 / (2 * x), 1e-9);
 }
+
+TEST(Constraints, BeamBodyRotatesWithoutStrain) {
+  // A CPE4 square attached by four BEAMs to a reference node 100 at its
+  // centre. Step 1 turns node 100 by 90 deg, step 2 on to 360 deg (dof 6 is
+  // prescribed: finite rotation, exact at every increment): no strain, no force.
+  std::ostringstream d;
+  d.precision(17);
+  d << "*NODE\n1,-0.5,-0.5\n2,0.5,-0.5\n3,0.5,0.5\n4,-0.5,0.5\n100,0,0\n*ELEMENT, TYPE=CPE4, ELSET=E\n1, 1,2,3,4\n"
+    << "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*SOLID SECTION, ELSET=E, MATERIAL=M\n"
+    << "*MPC\nBEAM, 1, 100\nBEAM, 2, 100\nBEAM, 3, 100\nBEAM, 4, 100\n"
+    << "*BOUNDARY\n100, 1, 2\n"
+    << "*STEP, NLGEOM, INC=100\n*STATIC, DIRECT\n0.125, 1.\n*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n"
+    << "*BOUNDARY\n100, 6, 6, " << std::numbers::pi / 2 << "\n*END STEP\n"
+    << "*STEP, NLGEOM, INC=100\n*STATIC, DIRECT\n0.125, 1.\n*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n"
+    << "*BOUNDARY\n100, 6, 6, " << 2 * std::numbers::pi << "\n*END STEP\n";
+  const auto run = run_deck_text(d.str());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_EQ(run.recorder.results.size(), 16u);
+  for (int k : {7, 15}) {  // 90 and 360 degrees
+    const auto& r = run.recorder.results[k];
+    for (const auto& p : r.points[0]) {
+      for (double e : p.strain) EXPECT_NEAR(e, 0.0, 1e-10) << "increment " << k + 1;
+      for (double s : p.stress) EXPECT_NEAR(s, 0.0, 1e-6) << "increment " << k + 1;
+    }
+    const double angle = k == 7 ? std::numbers::pi / 2 : 2 * std::numbers::pi;
+    const Eigen::Vector2d x3 = run.model.coords[run.node(3)] + r.displacement[run.node(3)];
+    EXPECT_NEAR(x3.x(), 0.5 * std::cos(angle) - 0.5 * std::sin(angle), 1e-10);
+    EXPECT_NEAR(x3.y(), 0.5 * std::sin(angle) + 0.5 * std::cos(angle), 1e-10);
+    for (const auto& m : r.multipliers) EXPECT_NEAR(m.value[0], 0.0, 1e-8);
+  }
+}
+
+TEST(Constraints, BeamTransmitsAMomentToTheBody) {
+  // A cantilever strip clamped on the left, its right edge nodes attached by
+  // BEAMs to a reference node; a moment M on the reference node (dof 6).
+  // Equilibrium (NLGEOM, so the BEAM's finite rotation and the elements agree
+  // on the configuration): the support reactions form a couple equal to -M.
+  std::ostringstream d;
+  d << "*NODE\n1,0,0\n2,1,0\n3,2,0\n4,0,1\n5,1,1\n6,2,1\n100,2,0.5\n"
+    << "*ELEMENT, TYPE=CPE4, ELSET=E\n1, 1,2,5,4\n2, 2,3,6,5\n"
+    << "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*SOLID SECTION, ELSET=E, MATERIAL=M\n"
+    << "*MPC\nBEAM, 3, 100\nBEAM, 6, 100\n*NSET, NSET=LEFT\n1, 4\n*BOUNDARY\nLEFT, 1, 2\n"
+    << "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n*CLOAD\n100, 6, 5.\n*END STEP\n";
+  const auto run = run_deck_text(d.str());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  double moment = 0, fx = 0, fy = 0;
+  for (int id : {1, 4}) {
+    const auto& rf = run.last().reaction[run.node(id)];
+    const auto& x = run.model.coords[run.node(id)];
+    moment += x.x() * rf.y() - x.y() * rf.x();
+    fx += rf.x(), fy += rf.y();
+  }
+  EXPECT_NEAR(moment, -5.0, 1e-9);
+  EXPECT_NEAR(fx, 0.0, 1e-9);
+  EXPECT_NEAR(fy, 0.0, 1e-9);
+}

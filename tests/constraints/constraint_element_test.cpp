@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "tether/constraints/beam_constraint.hpp"
 #include "tether/constraints/constraint_element.hpp"
 #include "tether/constraints/distance_constraint.hpp"
 #include "tether/constraints/linear_constraint.hpp"
@@ -129,4 +130,18 @@ TEST(ConstraintElement, AugmentedUpdatesUntilTolerance) {
   EXPECT_DOUBLE_EQ(element.values(EvaluationState{u, u}).value[0], 5.0 + 10.0 * 0.5);
   u << 1e-7;
   EXPECT_EQ(element.on_converged(EvaluationState{u, u}), Acceptance::Accept);
+}
+
+TEST(ConstraintElement, BeamTangentMatchesFiniteDifferences) {
+  std::mt19937 rng(5);
+  for (const auto& e : std::vector<Enforcement>{{Enforcement::Method::Lagrange, 0.0},
+                                                {Enforcement::Method::Penalty, 0, 30.0}}) {
+    for (int trial = 0; trial < 3; ++trial) {
+      auto f = std::make_unique<BeamConstraint>(std::array<int, 5>{0, 1, 2, 3, 8}, Eigen::Vector2d(1.2, -0.4),
+                                                Eigen::Vector2d(0.1, 0.3), "beam");
+      ConstraintElement element(std::move(f), e, 9, "beam", {});
+      Eigen::VectorXd u = random_vector(11, rng, 0.8);  // theta up to 0.8 rad
+      EXPECT_LT(tangent_error(element, u), 1e-7) << to_string(e.method);
+    }
+  }
 }

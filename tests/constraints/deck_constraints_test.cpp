@@ -111,3 +111,23 @@ TEST(DeckConstraints, MalformedFormulaIsAFileLineError) {
     EXPECT_NE(msg.find("'W2'"), std::string::npos) << msg;
   }
 }
+
+TEST(DeckConstraints, UserMpcExampleDeckGivesTheExactAnswer) {
+  // examples/user_mpc: the rigid link as an ABAQUS-style MODE=DOF routine and a
+  // point carried with it in MODE=NODE; exact answer in the deck's comments.
+  std::string deck = read_file(std::string(TETHER_SOURCE_DIR) + "/examples/user_mpc/user_mpc.inp");
+  deck = replace_all(deck, "LIBRARY=build/libuser_mpc.so", std::string("LIBRARY=") + TETHER_USER_MPC_EXAMPLE);
+  const auto run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const auto& u = run.last().displacement;
+  EXPECT_NEAR(u[run.node(2)].x(), 1.622319, 1e-6);
+  EXPECT_NEAR(u[run.node(2)].y(), 1.622319, 1e-6);
+  EXPECT_NEAR(u[run.node(3)].x(), -0.047277, 1e-6);
+  EXPECT_NEAR(u[run.node(3)].y(), 2.067519, 1e-6);
+  const auto& m = run.last().multipliers;
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m[0].owner, "LINK");
+  EXPECT_NEAR(m[0].value[0], -3.715326, 1e-6);
+  EXPECT_NEAR(m[1].value[0], 0.0, 1e-9);
+  EXPECT_NEAR(m[1].value[1], -1.0, 1e-9);
+}

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "deck_test_support.hpp"
 
 using namespace tether;
@@ -88,8 +90,13 @@ TEST(ConstraintKeywords, ErrorsNameTheLine) {
        {"EPSILON applies to ENFORCEMENT=LAGRANGE"}},
       {"*EQUATION, ENFORCEMENT=FOO\n2\n2, 1, 1., 5, 1, -1.\n", "*EQUATION", {"FOO"}},
       {"*EQUATION\n2\nLEFT, 1, 1., ALL, 1, -1.\n", "LEFT, 1, 1., ALL", {"same number of nodes"}},
-      {"*MPC\nBEAM, 2, 5\n", "BEAM", {"rotational dof", "LINK"}},
-      {"*MPC\nWELD, 2, 5\n", "WELD", {"unknown *MPC type 'WELD'", "TIE, PIN, LINK or SLIDER"}},
+      {"*MPC\nBEAM, 2\n", "BEAM", {"takes 2 nodes, got 1"}},
+      {"*MPC\nWELD, 2, 5\n", "WELD", {"unknown *MPC type 'WELD'", "TIE, PIN, LINK, SLIDER or BEAM"}},
+      {"*MPC, USER, MODE=DOF\n1, 2, 5\n", "*MPC", {"LIBRARY="}},
+      {"*MPC, USER, LIBRARY=x.so\nA, 2, 5\n", "A, 2, 5", {"'A'", "JTYPE"}},
+      {"*MPC, USER, LIBRARY=x.so\n1\n", "1\n*STEP", {"JTYPE, node1"}},
+      {"*MPC, USER, LIBRARY=x.so\n9, 2,\n", "9, 2,", {"ends with ','"}},
+      {"*MPC, USER, LIBRARY=x.so, MODE=EDGE\n1, 2\n", "*MPC", {"EDGE"}},
       {"*MPC\nLINK, 2\n", "LINK, 2", {"takes 2 nodes, got 1"}},
       {"*MPC\nSLIDER, 2, 5\n", "SLIDER", {"takes 3 nodes"}},
       {"*MPC\nLINK, 2, 2\n", "LINK, 2, 2", {"names node 2 twice"}},
@@ -110,6 +117,34 @@ TEST(ConstraintKeywords, ErrorsNameTheLine) {
     SCOPED_TRACE(c.block);
     expect_deck_error_at(with_model_data(c.block), c.marker, c.words);
   }
+}
+
+TEST(ConstraintKeywords, BeamAndUserMpc) {
+  const Model m = read_deck_string(
+      with_model_data("*MPC\nBEAM, 2, 5\n*MPC, USER, MODE=NODE, LIBRARY=lib/mpc.so\n7, 2, 5,\n6\n3, 1, 4\n"),
+      "dir/c.inp");
+  ASSERT_EQ(m.constraints.size(), 3u);
+  EXPECT_EQ(m.constraints[0].kind, ConstraintData::Kind::Beam);
+  const auto& u = m.constraints[1];
+  EXPECT_EQ(u.kind, ConstraintData::Kind::UserMpc);
+  EXPECT_TRUE(u.node_mode);
+  EXPECT_EQ(u.flag, 7);  // JTYPE
+  EXPECT_EQ(u.nodes.size(), 3u);
+  EXPECT_EQ(u.library, "dir/lib/mpc.so");
+  EXPECT_EQ(u.symbol, "tether_user_mpc");
+  EXPECT_EQ(m.constraints[2].nodes.size(), 2u);
+}
+
+TEST(ConstraintKeywords, RotationDofSixOnBoundaryAndCload) {
+  const Model m = read_deck_string(
+      replaced(with_model_data("*MPC\nBEAM, 2, 5\n"), "*CLOAD\nRIGHT, 1, 10", "*BOUNDARY\n5, 6, 6, 0.5\n*CLOAD\n5, 6, 2."),
+      "c.inp");
+  const Step& s = m.steps.at(0);
+  const auto b = std::find_if(s.boundary.begin(), s.boundary.end(), [](const Prescribed& p) { return p.dof == 2; });
+  ASSERT_NE(b, s.boundary.end());
+  EXPECT_DOUBLE_EQ(b->value, 0.5);
+  ASSERT_EQ(s.cloads.size(), 1u);
+  EXPECT_EQ(s.cloads[0].dof, 2);
 }
 
 TEST(ConstraintKeywords, OnlyInModelData) {

@@ -2,9 +2,11 @@
 
 #include <stdexcept>
 
+#include "tether/constraints/beam_constraint.hpp"
 #include "tether/constraints/distance_constraint.hpp"
 #include "tether/constraints/expression_constraint.hpp"
 #include "tether/constraints/linear_constraint.hpp"
+#include "tether/constraints/user_mpc_constraint.hpp"
 
 namespace tether {
 
@@ -51,6 +53,21 @@ std::unique_ptr<ConstraintFunction> make_constraint_function(const Model& model,
           rows.push_back(std::move(row));
         }
         return std::make_unique<LinearConstraint>(std::move(rows), what);
+      }
+      case ConstraintData::Kind::Beam: {
+        const int a = data.nodes[0], b = data.nodes[1];
+        const int theta = dofs.rotation(b);
+        if (theta < 0) throw ModelError(what + ": the reference node has no rotation unknown");
+        return std::make_unique<BeamConstraint>(std::array<int, 5>{dof(a, 0), dof(a, 1), dof(b, 0), dof(b, 1), theta},
+                                                model.coords[a], model.coords[b], what);
+      }
+      case ConstraintData::Kind::UserMpc: {
+        std::vector<int> labels;
+        std::vector<Eigen::Vector2d> reference;
+        for (int n : data.nodes) labels.push_back(model.node_ids[n]), reference.push_back(model.coords[n]);
+        return std::make_unique<UserMpcConstraint>(data.library, data.symbol,
+                                                   data.node_mode ? UserMpcMode::Node : UserMpcMode::Dof, data.flag,
+                                                   data.nodes, labels, reference, dofs, what);
       }
       case ConstraintData::Kind::User: break;
     }

@@ -50,6 +50,7 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
           data.properties, data.n_multipliers, first, dofs_, data.name, data.flag));
       continue;
     }
+    if (data.kind == ConstraintData::Kind::Beam) dofs_.add_rotation(data.nodes[1]);
     auto function = make_constraint_function(model, data, dofs_);
     if (data.enforcement.method == Enforcement::Method::Elimination) {
       const auto* linear = dynamic_cast<const LinearConstraint*>(function.get());

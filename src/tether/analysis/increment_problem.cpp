@@ -39,10 +39,10 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent
       norms.force_residual = NAN;
       continue;
     }
-    if (d < n_disp)
-      norms.force_residual = std::max(norms.force_residual, a);
-    else
+    if (dofs_.is_multiplier(d))
       norms.multiplier_residual = std::max(norms.multiplier_residual, a);
+    else
+      norms.force_residual = std::max(norms.force_residual, a);  // forces (and moments at rotations)
   }
   norms.increment = (u_.head(n_disp) - u_start_.head(n_disp)).cwiseAbs().maxCoeff();
 

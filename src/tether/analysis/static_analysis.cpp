@@ -63,7 +63,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   const Step& step = model_.steps[index];
   const Discretization& disc = *discretization_;
   const DofMap& dofs = disc.dofs();
-  const StepLoads loads = make_step_loads(step, u_, cload_end_, pressure_end_);
+  const StepLoads loads = make_step_loads(step, dofs, u_, cload_end_, pressure_end_);
 
   // Contributions of this step: every element, then the pressure loads.
   auto pressures = disc.make_pressures(loads.pressures);
@@ -234,9 +234,10 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
 
   // Remember the load magnitudes at the end of the step.
   cload_end_.clear();
-  for (const auto& [dof, v] : loads.forces)
-    cload_end_[{dofs.node_of(dof), dof % kDofsPerNode}] =
-        step_magnitude(model_, v.amplitude, v.start, v.target, period, period, total_time_);
+  for (std::size_t k = 0; k < loads.forces.size(); ++k) {
+    const RampedValue& v = loads.forces[k].second;
+    cload_end_[loads.force_keys[k]] = step_magnitude(model_, v.amplitude, v.start, v.target, period, period, total_time_);
+  }
   pressure_end_.clear();
   for (std::size_t k = 0; k < loads.pressures.size(); ++k) {
     const RampedValue& v = loads.pressure_values[k];

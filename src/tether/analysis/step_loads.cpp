@@ -1,16 +1,30 @@
 #include "tether/analysis/step_loads.hpp"
 
-#include "tether/dofs/dof_map.hpp"
+#include "tether/core/error.hpp"
 
 namespace tether {
 
-StepLoads make_step_loads(const Step& step, const Eigen::VectorXd& u,
+namespace {
+
+/// Global unknown of (node, dof); dof 2 is the in-plane rotation.
+int global_dof(const DofMap& dofs, int node, int dof, const SourceLocation& where) {
+  if (dof < kDofsPerNode) return dofs.displacement(node, dof);
+  const int rotation = dofs.rotation(node);
+  if (rotation < 0)
+    throw ModelError(where.str() + ": node " + std::to_string(dofs.label(node)) +
+                     " has no rotation (dof 6): only the reference node of an *MPC BEAM has one");
+  return rotation;
+}
+
+}  // namespace
+
+StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::VectorXd& u,
                           const std::map<std::pair<int, int>, double>& cload_end,
                           const std::map<std::pair<int, int>, double>& pressure_end) {
   StepLoads loads;
   std::map<int, RampedValue> prescribed;
   for (const Prescribed& p : step.boundary) {
-    const int dof = kDofsPerNode * p.node + p.dof;
+    const int dof = global_dof(dofs, p.node, p.dof, p.where);
     prescribed[dof] = RampedValue{u[dof], p.value, p.amplitude};
   }
   loads.prescribed.assign(prescribed.begin(), prescribed.end());
@@ -28,7 +42,12 @@ StepLoads make_step_loads(const Step& step, const Eigen::VectorXd& u,
   }
   for (const auto& [key, value] : cload_end)
     if (!forces.count(key) && value != 0) forces[key] = RampedValue{value, 0.0, -1};
-  for (const auto& [key, value] : forces) loads.forces.emplace_back(kDofsPerNode * key.first + key.second, value);
+  std::map<std::pair<int, int>, SourceLocation> where;
+  for (const ConcentratedLoad& c : step.cloads) where[{c.node, c.dof}] = c.where;
+  for (const auto& [key, value] : forces) {
+    loads.forces.emplace_back(global_dof(dofs, key.first, key.second, where[key]), value);
+    loads.force_keys.push_back(key);
+  }
 
   std::map<std::pair<int, int>, std::size_t> seen;
   for (const PressureLoad& p : step.pressures) {

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "tether/dofs/dof_map.hpp"
 #include "tether/model/model.hpp"
 
 namespace tether {
@@ -20,7 +21,8 @@ struct RampedValue {
 /// Everything that varies with time in one step.
 struct StepLoads {
   std::vector<std::pair<int, RampedValue>> prescribed;  ///< global dof -> value
-  std::vector<std::pair<int, RampedValue>> forces;      ///< global dof -> concentrated force
+  std::vector<std::pair<int, RampedValue>> forces;      ///< global dof -> concentrated force (or moment)
+  std::vector<std::pair<int, int>> force_keys;          ///< parallel to forces: (node, dof) as in the deck
   std::vector<PressureLoad> pressures;                  ///< faces loaded in this step (incl. ones being removed)
   std::vector<RampedValue> pressure_values;             ///< parallel to pressures
 };
@@ -29,7 +31,9 @@ struct StepLoads {
 /// values of prescribed dofs); `cload_end` and `pressure_end` hold the
 /// magnitudes at the end of the previous step (loads no longer listed are
 /// ramped down to zero, as ABAQUS does in a static step).
-StepLoads make_step_loads(const Step& step, const Eigen::VectorXd& u,
+/// (node, dof) map to global unknowns through `dofs` (dof 2 is a node's
+/// rotation; ModelError when the node has none).
+StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::VectorXd& u,
                           const std::map<std::pair<int, int>, double>& cload_end,
                           const std::map<std::pair<int, int>, double>& pressure_end);
 

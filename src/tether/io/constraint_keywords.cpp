@@ -86,8 +86,52 @@ void handle_equation(DeckState& state, const KeywordBlock& block, const Paramete
   }
 }
 
+namespace {
+
+/// *MPC, USER: ABAQUS-style routine; data lines `JTYPE, node1, node2, ...`
+/// (a trailing comma continues the node list on the next line).
+void read_user_mpc(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  const std::string library = params.text("LIBRARY");
+  if (library.empty()) throw InputError(block.where, "*MPC, USER needs LIBRARY=path of the shared library");
+  std::filesystem::path path(library);
+  if (path.is_relative()) path = std::filesystem::path(block.where.file).parent_path() / path;
+  const Enforcement enforcement = read_enforcement(params, block.where, false);
+  for (std::size_t k = 0; k < block.data.size();) {
+    ConstraintData c;
+    c.kind = ConstraintData::Kind::UserMpc;
+    c.where = block.data[k].where();
+    c.library = path.string();
+    c.symbol = params.given("SYMBOL") ? params.text("SYMBOL") : "tether_user_mpc";
+    c.node_mode = params.name("MODE") == "NODE";
+    c.enforcement = enforcement;
+    bool first = true;
+    for (bool more = true; more;) {
+      if (k >= block.data.size()) throw InputError(c.where, "the node list of *MPC, USER ends with ','");
+      const DataLine& line = block.data[k++];
+      const DataFields fields = split_data_line(line.text);
+      for (const std::string& token : fields.fields) {
+        if (token.empty()) continue;
+        if (first) {
+          c.flag = parse_int(token, line.where(), "JTYPE (the user MPC type)");
+          first = false;
+        } else {
+          c.nodes.push_back(single_node(state, token, line.where()));
+        }
+      }
+      more = fields.trailing_comma;
+    }
+    if (c.nodes.empty()) throw InputError(c.where, "*MPC, USER line needs 'JTYPE, node1, node2, ...'");
+    c.name = params.given("NAME") ? params.name("NAME") : default_name(state, "MPC") + " USER " + std::to_string(c.flag);
+    if (params.given("NAME") && block.data.size() > 1) c.name += "-" + std::to_string(state.model.constraints.size() + 1);
+    state.model.constraints.push_back(std::move(c));
+  }
+}
+
+}  // namespace
+
 void handle_mpc(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   if (block.data.empty()) throw InputError(block.where, "*MPC needs data lines 'TYPE, node, node, ...'");
+  if (params.given("USER")) return read_user_mpc(state, block, params);
   for (const DataLine& line : block.data) {
     const auto f = split_data_line(line.text).fields;
     const std::string type = normalize_name(f.at(0));
@@ -102,10 +146,9 @@ void handle_mpc(DeckState& state, const KeywordBlock& block, const ParameterValu
       c.kind = ConstraintData::Kind::Slider;
       n_nodes = 3;
     } else if (type == "BEAM") {
-      throw InputError(c.where, "*MPC BEAM needs a rotational dof at its second node, which tether's 2D solids do "
-                                "not have; model the rigid body with LINK constraints (a triangulated frame) instead");
+      c.kind = ConstraintData::Kind::Beam;
     } else {
-      throw InputError(c.where, "unknown *MPC type '" + f.at(0) + "': expected TIE, PIN, LINK or SLIDER");
+      throw InputError(c.where, "unknown *MPC type '" + f.at(0) + "': expected TIE, PIN, LINK, SLIDER or BEAM");
     }
     if (f.size() != n_nodes + 1)
       throw InputError(c.where, "*MPC " + type + " takes " + std::to_string(n_nodes) + " nodes, got " +

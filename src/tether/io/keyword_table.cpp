@@ -186,9 +186,19 @@ std::vector<KeywordSpec> build_table() {
        "the number of terms n, then n terms `node_or_nset, dof, coefficient`, up to four per line; repeat for "
        "more equations. Node sets apply the equation member by member.",
        enforcement_params({}), handle_equation, ""},
-      {"MPC", kModelData, "Built-in multi-point constraints: TIE/PIN (equal displacements), LINK (constant "
-                          "distance), SLIDER (node on the line through two others).",
-       "`TYPE, node_a, node_b[, node_c]`, one constraint per line", enforcement_params({}), handle_mpc, ""},
+      {"MPC", kModelData,
+       "Multi-point constraints: TIE/PIN (equal displacements), LINK (constant distance), SLIDER (node on the line "
+       "through two others), BEAM (node a moves rigidly with node b, which gets an in-plane rotation, dof 6); with "
+       "USER, an ABAQUS-style MPC routine in a shared library.",
+       "`TYPE, node_a, node_b[, node_c]`, one constraint per line; with USER: `JTYPE, node1, node2, ...` (a "
+       "trailing ',' continues the node list)",
+       enforcement_params({flag("USER", "The constraint is computed by a user routine (see examples/user_mpc)."),
+                           choice("MODE", "DOF", {"DOF", "NODE"},
+                                  "USER: DOF eliminates one dof at a time; NODE several dofs of the first node."),
+                           {"LIBRARY", PT::Text, "", {}, false, "", "USER: shared library (relative to the deck)."},
+                           {"SYMBOL", PT::Text, "tether_user_mpc", {}, false, "",
+                            "USER: name of the routine in the library."}}),
+       handle_mpc, ""},
       {"CONSTRAINT", kModelData,
        "tether extension: a general constraint f(u) = 0 written as formulas (TYPE=EXPRESSION) or computed by a "
        "user routine in a shared library (TYPE=USER).",

@@ -56,9 +56,11 @@ std::vector<int> boundary_range_dofs(DeckState& state, const std::vector<std::st
   if (first < 1 || last < first || last > 6)
     throw InputError(at, "bad dof range " + std::to_string(first) + ".." + std::to_string(last) +
                              ": expected 1 <= first <= last <= 6 (2D models use dofs 1 and 2)");
+  if (first == 6 && last == 6) return {2};  // in-plane rotation: exists at *MPC BEAM reference nodes
   if (first >= 4)
     throw InputError(at, "dof " + std::to_string(first) + " is a rotation, which 2D continuum elements do not "
-                         "have: expected dof 1 or 2");
+                         "have: expected dof 1 or 2 (or dof 6 alone, the in-plane rotation of an *MPC BEAM "
+                         "reference node)");
   if (last >= 3 && value != 0)
     throw InputError(at, "non-zero prescribed value on out-of-plane dof 3: tether is 2D; expected dofs 1-2");
   if (last >= 3 && !warned) {
@@ -137,9 +139,11 @@ void handle_cload(DeckState& state, const KeywordBlock& block, const ParameterVa
       state.warn(at, "zero load on out-of-plane dof 3 ignored (2D model)");
       continue;
     }
-    if (dof != 1 && dof != 2)
-      throw InputError(at, "bad load dof " + f[1] + ": expected dof 1 or 2 (2D model)");
-    for (int n : state.nodes_of(f[0], at)) added.push_back({n, dof - 1, magnitude, amplitude, at});
+    if (dof != 1 && dof != 2 && dof != 6)
+      throw InputError(at, "bad load dof " + f[1] + ": expected dof 1 or 2 (2D model), or 6 (a moment on an "
+                           "*MPC BEAM reference node)");
+    const int index = dof == 6 ? 2 : dof - 1;
+    for (int n : state.nodes_of(f[0], at)) added.push_back({n, index, magnitude, amplitude, at});
   }
   merge(state, state.cloads, std::move(added), block, params,
         [](const ConcentratedLoad& c) { return node_dof_key(c.node, c.dof); });

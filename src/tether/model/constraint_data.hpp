@@ -41,6 +41,8 @@ struct ConstraintData {
     User,        ///< *CONSTRAINT, TYPE=USER: residual and stiffness from a shared library
     Expression,  ///< *CONSTRAINT, TYPE=EXPRESSION: f given as formulas
     Linear,      ///< *TIE (one slave node) / *PERIODIC (one node pair): several equations `rows`, each sum = 0
+    Beam,        ///< *MPC BEAM: node a rigidly attached to node b, which gets a rotation dof
+    UserMpc,     ///< *MPC, USER: ABAQUS-style user routine (MODE=DOF or NODE) in a shared library
   };
   Kind kind = Kind::Equation;
   std::string name;                   ///< NAME= or generated ("EQUATION-3", "MPC-2 LINK")
@@ -53,7 +55,8 @@ struct ConstraintData {
   std::string symbol;                 ///< User: function name
   std::vector<double> properties;     ///< User: property list
   int n_multipliers = 1;              ///< User: multipliers the routine expects
-  int flag = 0;                       ///< User: passed to the routine
+  int flag = 0;                       ///< User: passed to the routine; UserMpc: JTYPE
+  bool node_mode = false;             ///< UserMpc: MODE=NODE (several dofs of the first node), else MODE=DOF
   Enforcement enforcement;
   SourceLocation where;
 

@@ -83,8 +83,8 @@ struct Amplitude {
 /// amplitude, or ramped from the value at the start of the step when there is none).
 struct Prescribed {
   int node = 0;               ///< node index
-  int dof = 0;                ///< 0 = x (or r), 1 = y (or z)
-  double value = 0;           ///< [length]
+  int dof = 0;                ///< 0 = x (or r), 1 = y (or z), 2 = in-plane rotation (ABAQUS dof 6)
+  double value = 0;           ///< [length] ([rad] for a rotation)
   int amplitude = -1;         ///< index into Model::amplitudes or -1
   SourceLocation where;
 };
@@ -92,8 +92,8 @@ struct Prescribed {
 /// `*CLOAD` line: concentrated force on one node component.
 struct ConcentratedLoad {
   int node = 0;
-  int dof = 0;                ///< 0 or 1
-  double magnitude = 0;       ///< [force]; for CAX: total over 2*pi
+  int dof = 0;                ///< 0 or 1; 2 = moment about z (ABAQUS dof 6)
+  double magnitude = 0;       ///< [force] ([force*length] for a moment); for CAX: total over 2*pi
   int amplitude = -1;
   SourceLocation where;
 };
