@@ -317,3 +317,14 @@ TEST(Constraints, BeamTransmitsAMomentToTheBody) {
   EXPECT_NEAR(fx, 0.0, 1e-9);
   EXPECT_NEAR(fy, 0.0, 1e-9);
 }
+
+TEST(Constraints, MoreEquationsThanFreeDofsIsNamed) {
+  // One free node (2 dofs) under three different equations.
+  const std::string deck =
+      "*NODE\n1, 0., 0.\n2, 1., 0.\n*EQUATION\n2\n1, 1, 1., 2, 1, -1.\n*EQUATION\n2\n1, 2, 1., 2, 2, -1.\n"
+      "*EQUATION\n3\n1, 1, 1., 1, 2, 1., 2, 2, -1.\n*BOUNDARY\n2, 1, 2\n*STEP\n*STATIC\n*END STEP\n";
+  const auto run = run_deck_text(deck);
+  EXPECT_FALSE(run.summary.completed);
+  EXPECT_NE(run.summary.message.find("3 constraint equations act on only 2 free displacement dofs"), std::string::npos)
+      << run.summary.message;
+}
