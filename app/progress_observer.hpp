@@ -2,17 +2,33 @@
 /// \file Connects the analysis' reports to the result files and the terminal.
 
 #include <fmt/core.h>
+#include <fmt/os.h>
+
+#include <filesystem>
 
 #include "tether/analysis/analysis_observer.hpp"
 #include "tether/output/result_writer.hpp"
 
 namespace tether {
 
-/// Writes results and status lines; prints one progress line per increment
-/// attempt when `progress` is set (a terminal is attached).
+/// Writes results and status lines; keeps an ABAQUS-like message log
+/// (`JOB.msg` next to `JOB.sta`: every iteration's norms, every attempt, and
+/// messages such as cut-backs and augmented-Lagrangian updates); prints one
+/// progress line per increment attempt when `progress` is set (a terminal).
 class ProgressObserver final : public AnalysisObserver {
  public:
-  ProgressObserver(ResultWriter& writer, bool progress) : writer_(writer), progress_(progress) {}
+  ProgressObserver(ResultWriter& writer, bool progress)
+      : writer_(writer),
+        progress_(progress),
+        msg_(fmt::output_file(std::filesystem::path(writer.sta_path()).replace_extension(".msg").string())) {
+    msg_.print("tether {} message log\n", TETHER_VERSION);
+  }
+
+  void on_iteration(int iteration, const IterationNorms& n) override {
+    msg_.print("    iteration {:2d}: max force residual {:.6e}  max constraint residual {:.6e}  "
+               "max correction {:.6e}  max increment {:.6e}\n",
+               iteration, n.force_residual, n.multiplier_residual, n.correction, n.increment);
+  }
 
   void on_increment(const IncrementReport& r) override {
     if (r.attempt == 1) iterations_this_increment_ = 0;
@@ -29,6 +45,10 @@ class ProgressObserver final : public AnalysisObserver {
     s.increment_size = r.increment_size;
     s.residual_norm = r.residual;
     writer_.write_status(s);
+    msg_.print("  step {} increment {} attempt {}: time {:.6g}, increment {:.6g}, {} iterations, {}\n", r.step,
+               r.increment, r.attempt, r.total_time, r.increment_size, r.iterations,
+               r.converged ? std::string("converged") : "cut back: " + r.note);
+    msg_.flush();
     if (progress_)
       fmt::print("step {} inc {:4d} att {} time {:.6g} dt {:.3g} iter {:2d} residual {:.3e} {}\n", r.step,
                  r.increment, r.attempt, r.total_time, r.increment_size, r.iterations, r.residual,
@@ -40,12 +60,14 @@ class ProgressObserver final : public AnalysisObserver {
   }
 
   void on_message(const std::string& message) override {
+    msg_.print("  {}\n", message);
     if (progress_) fmt::print("  {}\n", message);
   }
 
  private:
   ResultWriter& writer_;
   bool progress_;
+  fmt::ostream msg_;
   int iterations_this_increment_ = 0;
 };
 

@@ -145,3 +145,18 @@ TEST(Cli, UnsolvableModelExitsTwoAndSaysWhy) {
   const std::string text((std::istreambuf_iterator<char>(sta)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("NOT BEEN COMPLETED"), std::string::npos) << text;
 }
+
+TEST(Cli, MessageLogRecordsIterationsAndUzawaUpdates) {
+  const fs::path dir = scratch("augmented");
+  std::string deck = kGoodDeck;
+  // Tie node 3 to node 2 in y with an augmented Lagrangian: at least one Uzawa update.
+  deck.replace(deck.find("*STEP"), 5, "*EQUATION, ENFORCEMENT=AUGMENTED, PENALTY=10., TOLERANCE=1e-12\n2\n3, 2, 1., 2, 2, -1.\n*STEP");
+  write(dir / "aug.inp", deck);
+  const auto r = tether("run " + (dir / "aug.inp").string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream msg(dir / "out" / "aug.msg");
+  const std::string text((std::istreambuf_iterator<char>(msg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("iteration  1: max force residual"), std::string::npos) << text;
+  EXPECT_NE(text.find("augmented Lagrangian: multipliers updated (Uzawa update 1)"), std::string::npos) << text;
+  EXPECT_NE(text.find("step 1 increment 2 attempt 1"), std::string::npos) << text;
+}

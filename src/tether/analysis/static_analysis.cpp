@@ -163,7 +163,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
         break;
       }
       if (!again) break;
-      observer_.on_message("another Newton pass after multiplier updates (pass " + std::to_string(pass + 2) + ")");
+      observer_.on_message("augmented Lagrangian: multipliers updated (Uzawa update " + std::to_string(pass + 1) +
+                           "), Newton pass " + std::to_string(pass + 2));
     }
     summary.iterations += iterations;
 
