@@ -72,7 +72,7 @@ Scalar bilinear(const Eigen::Vector2d& u, const ZJacobian& u_z, const ZMatrix* u
   s.dz = u_z.transpose() * Mv + v_z.transpose() * Mtu;
   if (hessian) {
     const ZJacobian Mv_z = M * v_z;
-    s.dzz = u_z.transpose() * Mv_z;
+    s.dzz = u_z.transpose().lazyProduct(Mv_z);
     s.dzz += s.dzz.transpose().eval();
     for (int i = 0; i < 2; ++i) s.dzz += Mv[i] * u_zz[i] + Mtu[i] * v_zz[i];
   }
@@ -225,8 +225,10 @@ SegmentGeometry segment_geometry(const Eigen::Vector2d& slave, std::span<const E
   ZMatrix g_zz = h.dzz / q - (h.dz * q_z.transpose() + q_z * h.dz.transpose()) / a2 +
                  (2 * h.value / (a2 * q)) * q_z * q_z.transpose() - (h.value / a2) * q_zz;
   // d²/dx² of f(ξ*(x), x) = 0  ⇒  ∂²ξ*/∂x² = -Eᵀ f_zz E / f_ξ.
-  g.xi_hessian = -(E.transpose() * f.dzz * E) / fxi;
-  g.gap_hessian = E.transpose() * g_zz * E + g_z[0] * g.xi_hessian;
+  // (lazy products: at most 9 x 9, far below where blocked GEMM pays off)
+  const ZMatrix fE = f.dzz.lazyProduct(E), gE = g_zz.lazyProduct(E);
+  g.xi_hessian = -E.transpose().lazyProduct(fE) / fxi;
+  g.gap_hessian = E.transpose().lazyProduct(gE) + g_z[0] * g.xi_hessian;
   g.gap_hessian = 0.5 * (g.gap_hessian + g.gap_hessian.transpose()).eval();
   return g;
 }
