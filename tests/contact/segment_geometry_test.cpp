@@ -285,15 +285,40 @@ void check_random_derivatives(int n_nodes, unsigned seed) {
 TEST(SegmentGeometry, LinearDerivativesMatchFiniteDifferences) { check_random_derivatives(2, 11); }
 TEST(SegmentGeometry, QuadraticDerivativesMatchFiniteDifferences) { check_random_derivatives(3, 12); }
 
-TEST(SegmentGeometry, LinearGapGradientClosedForm) {
-  // Classic result for a straight segment: ∂g/∂y_s = n, ∂g/∂y^1 = -N_1 n, ∂g/∂y^2 = -N_2 n
-  // (∂g/∂ξ* = 0 and the rotation of n is orthogonal to y_s - y = g n).
-  const Points p = {Vector2d(0.4, 0.9), Vector2d(-0.3, 0.1), Vector2d(1.2, 0.5)};
-  const SegmentGeometry g = geometry_of(p);
-  const double xi = g.projection.xi, N1 = 0.5 * (1 - xi), N2 = 0.5 * (1 + xi);
-  Eigen::Matrix<double, 6, 1> expected;
-  expected << g.normal, -N1 * g.normal, -N2 * g.normal;
-  EXPECT_LT((g.gap_gradient - expected).norm(), 1e-14);
+TEST(SegmentGeometry, GapGradientIsNormalTimesShapeFunctions) {
+  // ∂g/∂ξ = 0 at ξ* on any segment (y_s - y = g n, n unit), so
+  // ∂g/∂y_s = n and ∂g/∂y^a = -N_a(ξ*) n.
+  const Points lin = {Vector2d(0.4, 0.9), Vector2d(-0.3, 0.1), Vector2d(1.2, 0.5)};
+  const Points quad = {Vector2d(0.4, 0.9), Vector2d(-0.3, 0.1), Vector2d(1.2, 0.5), Vector2d(0.5, 0.6)};
+  for (const Points* p : {&lin, &quad}) {
+    const SegmentGeometry g = geometry_of(*p);
+    const int m = static_cast<int>(p->size()) - 1;
+    const double xi = g.projection.xi;
+    const Eigen::Vector3d N = m == 2 ? Eigen::Vector3d(0.5 * (1 - xi), 0.5 * (1 + xi), 0)
+                                     : Eigen::Vector3d(0.5 * xi * (xi - 1), 0.5 * xi * (xi + 1), 1 - xi * xi);
+    Eigen::VectorXd expected(g.n_dofs);
+    expected.head<2>() = g.normal;
+    for (int k = 0; k < m; ++k) expected.segment<2>(2 + 2 * k) = -N[k] * g.normal;
+    EXPECT_LT((g.gap_gradient - expected).norm(), 1e-14) << m;
+  }
+}
+
+TEST(SegmentGeometry, LinearHessianClassicClosedForm) {
+  // Straight segment, l = |y^2 - y^1|: with T = [t; -N1 t; -N2 t] and C = [0; -n; n]
+  // (C·δx = n·δ(y^2 - y^1)): ∂ξ*/∂x = (2/l) T + (2 g/l²) C and
+  // ∂²g/∂x² = -(C Tᵀ + T Cᵀ)/l - (g/l²) C Cᵀ.
+  std::mt19937 rng(21);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Points p = random_configuration(rng, 2);
+    const SegmentGeometry g = geometry_of(p);
+    const double l = (p[2] - p[1]).norm(), xi = g.projection.xi;
+    Eigen::Matrix<double, 6, 1> T, C;
+    T << g.tangent, -0.5 * (1 - xi) * g.tangent, -0.5 * (1 + xi) * g.tangent;
+    C << 0, 0, -g.normal, g.normal;
+    const Eigen::Matrix<double, 6, 6> H = -(C * T.transpose() + T * C.transpose()) / l - (g.gap / (l * l)) * C * C.transpose();
+    EXPECT_LT((g.gap_hessian - H).norm(), 1e-12 * (1 + H.norm())) << trial;
+    EXPECT_LT((g.xi_gradient - (2 / l) * T - (2 * g.gap / (l * l)) * C).norm(), 1e-12) << trial;
+  }
 }
 
 TEST(SegmentGeometry, InvariantUnderRigidMotion) {
