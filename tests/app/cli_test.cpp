@@ -160,3 +160,16 @@ TEST(Cli, MessageLogRecordsIterationsAndUzawaUpdates) {
   EXPECT_NE(text.find("augmented Lagrangian: multipliers updated (Uzawa update 1)"), std::string::npos) << text;
   EXPECT_NE(text.find("step 1 increment 2 attempt 1"), std::string::npos) << text;
 }
+
+TEST(Cli, ContactPairsAreReadButRefusedClearlyUntilContactExists) {
+  const fs::path dir = scratch("contact");
+  std::string deck = kGoodDeck;
+  deck.replace(deck.find("*STEP"), 5,
+               "*SURFACE, NAME=S, TYPE=NODE\nLEFT\n*SURFACE, NAME=M\nE, S2\n*SURFACE INTERACTION, NAME=I\n"
+               "*CONTACT PAIR, INTERACTION=I\nS, M\n*STEP");
+  write(dir / "contact.inp", deck);
+  const auto r = tether("run " + (dir / "contact.inp").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("cannot solve contact yet"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("contact.inp:"), std::string::npos) << r.out;
+}

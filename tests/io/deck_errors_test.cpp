@@ -15,9 +15,7 @@ TEST(DeckErrors, UnknownKeywordListsTheAllowedOnes) {
 }
 
 TEST(DeckErrors, LaterKeywordsAreNotSupportedYetNeverDropped) {
-  for (const std::string kw : {"*CONTACT PAIR, INTERACTION=I",
-                               "*SURFACE INTERACTION, NAME=I", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD",
-                               "*FRICTION", "*CONTACT PRINT", "*CONTACT FILE", "*DYNAMIC"}) {
+  for (const std::string kw : {"*DYNAMIC", "*INITIAL CONDITIONS, TYPE=STRESS"}) {
     const std::string deck = replaced(kDeck, "*CLOAD", kw + "\n1, 2\n*CLOAD");
     expect_deck_error_at(deck, kw, {kw.substr(0, kw.find(',')) + " is not supported yet"});
   }

@@ -39,6 +39,12 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
     length_scale_ = size;
   }
 
+  if (!model.contact_pairs.empty())
+    throw ModelError(std::to_string(model.contact_pairs.size()) + " *CONTACT PAIR(s) were read (the first at " +
+                     model.contact_pairs.front().where.str() +
+                     ") but this version of tether cannot solve contact yet: the contact element is being built "
+                     "(see docs/theory/contact_geometry.md); remove the pairs or use a tied/constrained model");
+
   for (const ConstraintData& data : model.constraints) {
     if (data.kind == ConstraintData::Kind::User) {
       std::vector<int> labels;

@@ -16,7 +16,8 @@ using deck::KeywordBlock;
 using deck::KeywordSpec;
 
 bool allowed_here(const DeckState& s, unsigned where) {
-  return ((where & deck::kMaterial) && s.material >= 0) || ((where & deck::kModelData) && !s.seen_step) ||
+  return ((where & deck::kMaterial) && s.material >= 0) || ((where & deck::kInteraction) && s.interaction >= 0) ||
+         ((where & deck::kModelData) && !s.seen_step) ||
          ((where & deck::kStep) && s.in_step) || ((where & deck::kBetweenSteps) && s.seen_step && !s.in_step);
 }
 
@@ -41,12 +42,15 @@ void check_position(DeckState& s, const KeywordSpec& spec, const KeywordBlock& b
   if (s.in_step && !(spec.where & deck::kStep)) hint = "; is *END STEP missing?";
   if (!s.in_step && (spec.where & deck::kStep) && !(spec.where & deck::kModelData)) hint = "; expected a *STEP first";
   if (spec.where == deck::kMaterial) hint = "; expected it directly after *MATERIAL or another material option";
+  if (spec.where == deck::kInteraction)
+    hint = "; expected it directly after *SURFACE INTERACTION or another interaction option";
   throw InputError(block.where, "*" + std::string(spec.name) + " is not allowed " + position_text(s) +
                                     ": it belongs to " + deck::context_text(spec.where) + hint);
 }
 
 Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& deck_path,
                   std::vector<DeckWarning>* warnings) {
+  if (blocks.empty()) throw InputError({deck_path, 0}, "the deck is empty: expected keyword lines such as *NODE");
   DeckState state;
   state.warnings = warnings;
   state.model.deck_path = deck_path;
@@ -58,6 +62,7 @@ Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& de
     check_position(state, *spec, block);
     const deck::ParameterValues params(*spec, block);
     if (!(spec->where & deck::kMaterial)) state.material = -1;
+    if (!(spec->where & deck::kInteraction)) state.interaction = -1;
     spec->handler(state, block, params);
   }
   if (state.in_step)

@@ -19,6 +19,7 @@ struct DeckState {
 
   // --- position in the deck ---
   int material = -1;         ///< material being defined (material options allowed), else -1
+  int interaction = -1;      ///< surface interaction being defined (its options allowed), else -1
   bool in_step = false;      ///< between *STEP and *END STEP
   bool seen_step = false;    ///< a *STEP has been read (model data is over)
   bool step_has_procedure = false;

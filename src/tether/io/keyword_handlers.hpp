@@ -45,6 +45,11 @@ TETHER_DECK_HANDLER(handle_element_output);
 TETHER_DECK_HANDLER(handle_equation);
 TETHER_DECK_HANDLER(handle_mpc);
 TETHER_DECK_HANDLER(handle_constraint);
+TETHER_DECK_HANDLER(handle_surface_interaction);
+TETHER_DECK_HANDLER(handle_surface_behavior);
+TETHER_DECK_HANDLER(handle_friction);
+TETHER_DECK_HANDLER(handle_contact_pair);
+TETHER_DECK_HANDLER(handle_contact_output);
 // tie_keywords.cpp
 TETHER_DECK_HANDLER(handle_tie);
 TETHER_DECK_HANDLER(handle_periodic);

@@ -67,7 +67,7 @@ std::vector<KeywordSpec> build_table() {
   constexpr std::string_view kLater = "planned for a later version of tether";
   return {
       // --- lexer ---
-      {"INCLUDE", kModelData | kMaterial | kStep | kBetweenSteps,
+      {"INCLUDE", kModelData | kMaterial | kInteraction | kStep | kBetweenSteps,
        "Reads another file in place of this line (relative to the including file).", "",
        {{"INPUT", PT::Text, "", {}, true, "", "Path of the file to read."}}, nullptr, ""},
       // --- model data: mesh ---
@@ -251,14 +251,34 @@ std::vector<KeywordSpec> build_table() {
                                 "Largest distance between X_a + translation and the partner of a (0: 1e-6 times "
                                 "the translation length).")}),
        handle_periodic, ""},
+      // --- model data: contact ---
+      {"SURFACE INTERACTION", kModelData, "Starts a contact property; *SURFACE BEHAVIOR and *FRICTION follow it.", "",
+       {name("NAME", "Name of the interaction.", true)}, handle_surface_interaction, ""},
+      {"SURFACE BEHAVIOR", kInteraction, "Pressure-overclosure law of the interaction (default HARD).",
+       "HARD: none; LINEAR: `K[, sigma_inf, c0]` (CalculiX); EXPONENTIAL: `c0, p0`; TABULAR: pairs `pressure, "
+       "overclosure` with overclosure increasing",
+       {{"PRESSURE-OVERCLOSURE", PT::Choice, "HARD", {"HARD", "LINEAR", "EXPONENTIAL", "TABULAR"}, false, "",
+         "HARD contact is enforced exactly (by multipliers, not CalculiX's K = 50 E penalty)."}},
+       handle_surface_behavior, ""},
+      {"FRICTION", kInteraction, "Coulomb friction of the interaction.",
+       "`mu[, stick slope]` (the stick slope is CalculiX's; 0 or absent: exact stick)",
+       {real("ELASTIC SLIP", "0", "ABAQUS: slip at which the full friction force is reached (a stick penalty).")},
+       handle_friction, ""},
+      {"CONTACT PAIR", kModelData, "Node-to-surface contact of a slave surface against a master surface.",
+       "`slave_surface, master_surface` (master: element faces; slave: element faces or nodes)",
+       {name("INTERACTION", "The *SURFACE INTERACTION to use.", true),
+        choice("TYPE", "NODE TO SURFACE", {"NODE TO SURFACE", "SURFACE TO SURFACE"},
+               "NODE TO SURFACE (tether's formulation); SURFACE TO SURFACE is refused."),
+        flag("SMALL SLIDING", "Keep the pairing found at the start (no re-pairing while sliding)."),
+        real("ADJUST", "0", "Move slave nodes within this clearance onto the master surface before the analysis.")},
+       handle_contact_pair, ""},
+      {"CONTACT PRINT", kAnyStep, "Contact output in the .dat report.", "variables: CSTR, CDIS (CalculiX), CSTRESS, CDISP, CFN, CFS (ABAQUS)",
+       {frequency_param()}, handle_contact_output, ""},
+      {"CONTACT FILE", kAnyStep, "Contact output in the result files.", "variables: CSTR, CDIS",
+       {frequency_param()}, handle_contact_output, ""},
+      {"CONTACT OUTPUT", kAnyStep, "Contact output request (ABAQUS).", "variables: CSTRESS, CDISP, CFN, CFS",
+       {frequency_param()}, handle_contact_output, ""},
       // --- recognised, not supported yet: a clear error, never silently dropped ---
-      {"CONTACT PAIR", kModelData | kAnyStep, "Contact between two surfaces.", "", {}, nullptr, kLater},
-      {"SURFACE INTERACTION", kModelData, "Contact property.", "", {}, nullptr, kLater},
-      {"SURFACE BEHAVIOR", kModelData, "Pressure-overclosure law.", "", {}, nullptr, kLater},
-      {"FRICTION", kModelData, "Friction law.", "", {}, nullptr, kLater},
-      {"CONTACT PRINT", kAnyStep, "Contact output in the text report.", "", {}, nullptr, kLater},
-      {"CONTACT FILE", kAnyStep, "Contact output in the result files.", "", {}, nullptr, kLater},
-      {"CONTACT OUTPUT", kAnyStep, "Contact output request.", "", {}, nullptr, kLater},
       {"DYNAMIC", kAnyStep, "Implicit dynamic procedure.", "", {}, nullptr, kLater},
       {"INITIAL CONDITIONS", kModelData, "Initial values of state variables.", "", {}, nullptr, kLater},
       {"PLASTIC", kMaterial, "Metal plasticity.", "", {}, nullptr, "tether's materials are elastic only"},
@@ -301,6 +321,7 @@ std::string context_text(unsigned where) {
   };
   add(kModelData, "model data (before the first *STEP)");
   add(kMaterial, "material data (after *MATERIAL)");
+  add(kInteraction, "surface interaction data (after *SURFACE INTERACTION)");
   add(kStep, "inside a step (*STEP ... *END STEP)");
   add(kBetweenSteps, "between steps");
   return out;

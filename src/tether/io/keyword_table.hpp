@@ -48,6 +48,7 @@ enum Context : unsigned {
   kMaterial = 2,      ///< directly after *MATERIAL or another material option
   kStep = 4,          ///< inside *STEP ... *END STEP
   kBetweenSteps = 8,  ///< after an *END STEP, outside any step
+  kInteraction = 16,  ///< directly after *SURFACE INTERACTION or another interaction option
 };
 
 /// One keyword of the table.

@@ -16,6 +16,7 @@
 
 #include "tether/core/error.hpp"
 #include "tether/model/constraint_data.hpp"
+#include "tether/model/contact_data.hpp"
 #include "tether/model/element_type.hpp"
 
 namespace tether {
@@ -123,7 +124,7 @@ struct Controls {
 
 /// `*NODE PRINT`, `*EL PRINT`, `*NODE FILE`, `*EL FILE` request.
 struct OutputRequest {
-  enum class Kind { NodePrint, ElementPrint, NodeFile, ElementFile };
+  enum class Kind { NodePrint, ElementPrint, NodeFile, ElementFile, ContactPrint, ContactFile };
   Kind kind = Kind::NodePrint;
   std::string set;                    ///< NSET/ELSET name (upper case); empty = all
   std::vector<std::string> variables; ///< U, RF, S, E, ... (upper case)
@@ -173,6 +174,8 @@ struct Model {
   std::vector<SolidSection> sections;
   std::vector<Amplitude> amplitudes;
   std::vector<ConstraintData> constraints;  ///< *EQUATION, *MPC, *CONSTRAINT (model data)
+  std::vector<SurfaceInteraction> interactions;  ///< *SURFACE INTERACTION
+  std::vector<ContactPairData> contact_pairs;    ///< *CONTACT PAIR
 
   std::vector<Step> steps;
 

@@ -1,0 +1,163 @@
+// *SURFACE INTERACTION, *SURFACE BEHAVIOR, *FRICTION, *CONTACT PAIR and the
+// contact output requests (*CONTACT PRINT, *CONTACT FILE, *CONTACT OUTPUT).
+#include <algorithm>
+#include <cmath>
+
+#include "tether/io/deck_state.hpp"
+#include "tether/io/keyword_handlers.hpp"
+#include "tether/io/numbers.hpp"
+
+namespace tether::deck {
+
+namespace {
+
+SurfaceInteraction& current_interaction(DeckState& state) {
+  return state.model.interactions[static_cast<std::size_t>(state.interaction)];
+}
+
+/// The surface `token` names; InputError naming the role otherwise.
+const Surface& surface_named(const DeckState& state, const std::string& token, const SourceLocation& at,
+                             const std::string& role) {
+  const auto it = state.model.surfaces.find(to_upper(token));
+  if (it == state.model.surfaces.end())
+    throw InputError(at, "undefined " + role + " surface '" + token + "': expected a surface defined by *SURFACE");
+  return it->second;
+}
+
+const std::vector<std::string_view> kContactVariables = {"CSTR", "CDIS", "CSTRESS", "CDISP", "CFN", "CFS", "CELS"};
+
+}  // namespace
+
+void handle_surface_interaction(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  SurfaceInteraction si;
+  si.name = params.name("NAME");
+  si.where = block.where;
+  for (const auto& other : state.model.interactions)
+    if (other.name == si.name)
+      throw InputError(block.where, "*SURFACE INTERACTION " + si.name + " is defined twice (first at " +
+                                        other.where.str() + ")");
+  state.model.interactions.push_back(std::move(si));
+  state.interaction = static_cast<int>(state.model.interactions.size()) - 1;
+}
+
+void handle_surface_behavior(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  PressureOverclosure& b = current_interaction(state).behavior;
+  const std::string law = params.name("PRESSURE-OVERCLOSURE");
+  std::vector<std::vector<double>> rows;
+  for (const DataLine& line : block.data) {
+    std::vector<double> row;
+    for (const std::string& f : split_data_line(line.text).fields)
+      if (!f.empty()) row.push_back(parse_real(f, line.where(), "*SURFACE BEHAVIOR value"));
+    rows.push_back(std::move(row));
+  }
+  const SourceLocation at = block.data.empty() ? block.where : block.data.front().where();
+  if (law == "HARD") {
+    b = PressureOverclosure{};
+    return;
+  }
+  if (rows.empty()) throw InputError(block.where, "PRESSURE-OVERCLOSURE=" + law + " needs a data line");
+  if (law == "LINEAR") {
+    b.law = PressureOverclosure::Law::Linear;
+    const auto& r = rows.front();
+    b.stiffness = r.at(0);
+    b.sigma_inf = r.size() > 1 ? r[1] : 0.0;
+    b.c0 = r.size() > 2 ? r[2] : 0.0;
+    if (!(b.stiffness > 0)) throw InputError(at, "LINEAR: the slope K must be > 0 (pressure per unit overclosure)");
+    if (b.sigma_inf < 0 || b.c0 < 0) throw InputError(at, "LINEAR: sigma_inf and c0 must be >= 0");
+  } else if (law == "EXPONENTIAL") {
+    b.law = PressureOverclosure::Law::Exponential;
+    const auto& r = rows.front();
+    if (r.size() < 2) throw InputError(at, "EXPONENTIAL needs 'c0, p0' (clearance where pressure starts, pressure "
+                                           "at zero clearance)");
+    b.c0 = r[0];
+    b.p0 = r[1];
+    if (!(b.c0 > 0) || !(b.p0 > 0)) throw InputError(at, "EXPONENTIAL: c0 and p0 must be > 0");
+  } else {  // TABULAR
+    b.law = PressureOverclosure::Law::Tabular;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const auto& r = rows[k];
+      const SourceLocation line = block.data[k].where();
+      if (r.size() % 2 != 0) throw InputError(line, "TABULAR: expected pairs 'pressure, overclosure'");
+      for (std::size_t i = 0; i < r.size(); i += 2) b.table.emplace_back(r[i], r[i + 1]);
+    }
+    for (std::size_t i = 0; i < b.table.size(); ++i) {
+      const SourceLocation line = block.data.back().where();
+      if (b.table[i].first < 0) throw InputError(line, "TABULAR: pressures must be >= 0");
+      if (i > 0 && !(b.table[i].second > b.table[i - 1].second))
+        throw InputError(line, "TABULAR: overclosures must increase strictly");
+      if (i > 0 && b.table[i].first < b.table[i - 1].first)
+        throw InputError(line, "TABULAR: pressure must not decrease with overclosure");
+    }
+    if (b.table.size() < 2) throw InputError(at, "TABULAR needs at least two (pressure, overclosure) pairs");
+  }
+}
+
+void handle_friction(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  if (block.data.empty()) throw InputError(block.where, "*FRICTION needs a data line 'mu[, stick slope]'");
+  const DataLine& line = block.data.front();
+  const auto f = split_data_line(line.text).fields;
+  FrictionData friction;
+  friction.mu = parse_real(f.at(0), line.where(), "friction coefficient mu");
+  if (f.size() > 1 && !f[1].empty()) friction.stick_slope = parse_real(f[1], line.where(), "stick slope");
+  friction.elastic_slip = params.real("ELASTIC SLIP");
+  if (friction.mu < 0) throw InputError(line.where(), "friction coefficient " + f[0] + ": expected mu >= 0");
+  if (friction.stick_slope < 0) throw InputError(line.where(), "stick slope must be >= 0");
+  if (friction.elastic_slip < 0) throw InputError(block.where, "ELASTIC SLIP must be >= 0");
+  current_interaction(state).friction = friction;
+}
+
+void handle_contact_pair(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  const std::string interaction = params.name("INTERACTION");
+  const bool known = std::any_of(state.model.interactions.begin(), state.model.interactions.end(),
+                                 [&](const SurfaceInteraction& s) { return s.name == interaction; });
+  if (!known)
+    throw InputError(block.where, "undefined INTERACTION=" + interaction +
+                                      ": expected the name of a *SURFACE INTERACTION defined before");
+  const std::string type = params.name("TYPE");
+  if (type == "SURFACE TO SURFACE")
+    throw InputError(block.where, "TYPE=SURFACE TO SURFACE is not supported: tether's contact is node to surface "
+                                  "(use TYPE=NODE TO SURFACE)");
+  if (block.data.empty()) throw InputError(block.where, "*CONTACT PAIR needs a data line 'slave surface, master surface'");
+  for (const DataLine& line : block.data) {
+    const auto f = split_data_line(line.text).fields;
+    if (f.size() != 2) throw InputError(line.where(), "expected 'slave surface, master surface'");
+    ContactPairData pair;
+    pair.where = line.where();
+    pair.interaction = interaction;
+    pair.slave = surface_named(state, f[0], pair.where, "slave").name;
+    const Surface& master = surface_named(state, f[1], pair.where, "master");
+    if (master.kind != Surface::Kind::ElementFaces)
+      throw InputError(pair.where, "master surface '" + f[1] + "' must be made of element faces (TYPE=ELEMENT)");
+    if (to_upper(f[0]) == to_upper(f[1])) throw InputError(pair.where, "the slave and master surfaces are the same");
+    pair.master = master.name;
+    pair.small_sliding = params.given("SMALL SLIDING");
+    if (params.given("ADJUST")) {
+      pair.adjust = params.real("ADJUST");
+      if (pair.adjust < 0) throw InputError(block.where, "ADJUST must be a clearance >= 0");
+    }
+    state.model.contact_pairs.push_back(std::move(pair));
+  }
+}
+
+void handle_contact_output(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  OutputRequest r;
+  r.kind = block.keyword == "CONTACT PRINT" ? OutputRequest::Kind::ContactPrint : OutputRequest::Kind::ContactFile;
+  r.where = block.where;
+  r.frequency = params.integer("FREQUENCY");
+  if (r.frequency < 0) throw InputError(block.where, "FREQUENCY must be >= 0");
+  for (const DataLine& line : block.data)
+    for (const std::string& f : split_data_line(line.text).fields) {
+      const std::string v = to_upper(f);
+      if (v.empty()) continue;
+      if (std::find(kContactVariables.begin(), kContactVariables.end(), v) == kContactVariables.end()) {
+        state.warn(line.where(), "contact output variable " + v + " is not available and is ignored (available: "
+                                 "CSTR, CDIS, CSTRESS, CDISP, CFN, CFS, CELS)");
+        continue;
+      }
+      r.variables.push_back(v);
+    }
+  if (r.variables.empty()) r.variables = {"CSTR", "CDIS"};
+  state.step().outputs.push_back(std::move(r));
+}
+
+}  // namespace tether::deck

@@ -1,0 +1,57 @@
+#pragma once
+/// \file Contact as read from a deck (`*SURFACE INTERACTION`, `*SURFACE
+/// BEHAVIOR`, `*FRICTION`, `*CONTACT PAIR`): plain data.
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tether/core/error.hpp"
+
+namespace tether {
+
+/// Pressure-overclosure law (`*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=`).
+/// Overclosure h = -gap (> 0 when the surfaces interpenetrate).
+struct PressureOverclosure {
+  enum class Law {
+    Hard,         ///< gap >= 0, p >= 0, p * gap = 0 (tether: exact, by multipliers)
+    Linear,       ///< p = K h for h > 0 (CalculiX: K, sigma_inf, c0)
+    Exponential,  ///< ABAQUS: p = p0 / (exp(1) - 1) (h/c0 + 1) (exp(h/c0 + 1) - 1) for h > -c0
+    Tabular,      ///< piecewise linear p(h) through (pressure, overclosure) pairs
+  };
+  Law law = Law::Hard;
+  double stiffness = 0;  ///< Linear: K [pressure/length]
+  double sigma_inf = 0;  ///< Linear (CalculiX): tension at large clearance [pressure], 0 = none
+  double c0 = 0;         ///< Linear (CalculiX) / Exponential: clearance at which pressure starts [length]
+  double p0 = 0;         ///< Exponential: pressure at zero clearance [pressure]
+  std::vector<std::pair<double, double>> table;  ///< Tabular: (pressure, overclosure), overclosure increasing
+};
+
+/// Coulomb friction (`*FRICTION`).
+struct FrictionData {
+  double mu = 0;           ///< friction coefficient, >= 0
+  double stick_slope = 0;  ///< CalculiX's 2nd field: tangential stiffness in stick [pressure/length]; 0 = exact stick
+  double elastic_slip = 0; ///< ABAQUS ELASTIC SLIP=: slip at which full friction is reached [length]; 0 = none given
+};
+
+/// `*SURFACE INTERACTION` with its options.
+struct SurfaceInteraction {
+  std::string name;
+  PressureOverclosure behavior;          ///< HARD unless *SURFACE BEHAVIOR says otherwise
+  std::optional<FrictionData> friction;  ///< none = frictionless
+  SourceLocation where;
+};
+
+/// `*CONTACT PAIR`: one slave surface against one master surface.
+struct ContactPairData {
+  std::string interaction;  ///< name of a SurfaceInteraction (upper case)
+  std::string slave;        ///< surface name (element faces or nodes)
+  std::string master;       ///< surface name (element faces)
+  bool node_to_surface = true;  ///< TYPE=NODE TO SURFACE (tether's formulation); SURFACE TO SURFACE is refused
+  bool small_sliding = false;   ///< SMALL SLIDING: keep the first pairing
+  double adjust = 0;            ///< ADJUST=value: move slave nodes within this clearance onto the master [length]
+  SourceLocation where;
+};
+
+}  // namespace tether

@@ -1,0 +1,99 @@
+// *SURFACE INTERACTION, *SURFACE BEHAVIOR, *FRICTION, *CONTACT PAIR, contact
+// output: what they read, and every error path.
+
+#include <gtest/gtest.h>
+
+#include "deck_test_support.hpp"
+
+using namespace tether;
+using namespace tether::test;
+
+namespace {
+
+const std::string kSurfaces = "*SURFACE, NAME=SLAVE, TYPE=NODE\nRIGHT\n*SURFACE, NAME=MASTER\nE1, S1\n";
+
+std::string with_contact(const std::string& block) { return replaced(kDeck, "*STEP", kSurfaces + block + "*STEP"); }
+
+}  // namespace
+
+TEST(ContactKeywords, InteractionLawsFrictionAndPairs) {
+  const Model m = read_deck_string(
+      with_contact("*SURFACE INTERACTION, NAME=SI\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n0.01, 50.\n"
+                   "*FRICTION, ELASTIC SLIP=1e-4\n0.3\n"
+                   "*SURFACE INTERACTION, NAME=LIN\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e6, 1., 0.001\n"
+                   "*SURFACE INTERACTION, NAME=TAB\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR\n0., 0., 10., "
+                   "0.1\n100., 0.2\n*SURFACE INTERACTION, NAME=HARD\n"
+                   "*CONTACT PAIR, INTERACTION=SI, SMALL SLIDING, ADJUST=0.01\nSLAVE, MASTER\n"),
+      "c.inp");
+  ASSERT_EQ(m.interactions.size(), 4u);
+  const auto& si = m.interactions[0];
+  EXPECT_EQ(si.behavior.law, PressureOverclosure::Law::Exponential);
+  EXPECT_DOUBLE_EQ(si.behavior.c0, 0.01);
+  EXPECT_DOUBLE_EQ(si.behavior.p0, 50.);
+  ASSERT_TRUE(si.friction);
+  EXPECT_DOUBLE_EQ(si.friction->mu, 0.3);
+  EXPECT_DOUBLE_EQ(si.friction->elastic_slip, 1e-4);
+  EXPECT_EQ(m.interactions[1].behavior.law, PressureOverclosure::Law::Linear);
+  EXPECT_DOUBLE_EQ(m.interactions[1].behavior.stiffness, 1e6);
+  EXPECT_EQ(m.interactions[2].behavior.table.size(), 3u);
+  EXPECT_EQ(m.interactions[3].behavior.law, PressureOverclosure::Law::Hard);
+  EXPECT_FALSE(m.interactions[3].friction);
+  ASSERT_EQ(m.contact_pairs.size(), 1u);
+  EXPECT_EQ(m.contact_pairs[0].slave, "SLAVE");
+  EXPECT_EQ(m.contact_pairs[0].master, "MASTER");
+  EXPECT_TRUE(m.contact_pairs[0].small_sliding);
+  EXPECT_DOUBLE_EQ(m.contact_pairs[0].adjust, 0.01);
+}
+
+TEST(ContactKeywords, ContactOutputRequests) {
+  const std::string deck = replaced(with_contact("*SURFACE INTERACTION, NAME=SI\n"),
+                                    "*END STEP", "*CONTACT PRINT\nCSTR, CDIS\n*CONTACT FILE, FREQUENCY=2\nCSTR\n*END STEP");
+  const Model m = read_deck_string(deck, "c.inp");
+  ASSERT_EQ(m.steps[0].outputs.size(), 2u);
+  EXPECT_EQ(m.steps[0].outputs[0].kind, OutputRequest::Kind::ContactPrint);
+  EXPECT_EQ(m.steps[0].outputs[0].variables, (std::vector<std::string>{"CSTR", "CDIS"}));
+  EXPECT_EQ(m.steps[0].outputs[1].frequency, 2);
+}
+
+TEST(ContactKeywords, ErrorsNameTheLine) {
+  struct Case {
+    std::string block, marker;
+    std::vector<std::string> words;
+  };
+  const std::vector<Case> cases = {
+      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n", "*SURFACE BEHAVIOR", {"after *SURFACE INTERACTION"}},
+      {"*FRICTION\n0.3\n", "*FRICTION", {"after *SURFACE INTERACTION"}},
+      {"*SURFACE INTERACTION\n", "*SURFACE INTERACTION", {"NAME"}},
+      {"*SURFACE INTERACTION, NAME=A\n*SURFACE INTERACTION, NAME=A\n", "*SURFACE INTERACTION, NAME=A\n*STEP",
+       {"defined twice"}},
+      {"*SURFACE INTERACTION, NAME=A\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n", "*SURFACE BEHAVIOR",
+       {"needs a data line"}},
+      {"*SURFACE INTERACTION, NAME=A\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n-5.\n", "-5.", {"K must be > 0"}},
+      {"*SURFACE INTERACTION, NAME=A\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n0.1\n", "0.1\n",
+       {"c0, p0"}},
+      {"*SURFACE INTERACTION, NAME=A\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR\n0., 0., 5.\n", "0., 0., 5.",
+       {"pairs"}},
+      {"*SURFACE INTERACTION, NAME=A\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR\n0., 0.1, 5., 0.1\n",
+       "0., 0.1, 5.", {"increase strictly"}},
+      {"*SURFACE INTERACTION, NAME=A\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=SOFT\n", "*SURFACE BEHAVIOR", {"SOFT"}},
+      {"*SURFACE INTERACTION, NAME=A\n*FRICTION\n-0.1\n", "-0.1", {"mu >= 0"}},
+      {"*SURFACE INTERACTION, NAME=A\n*FRICTION\nx\n", "x\n", {"'x'"}},
+      {"*SURFACE INTERACTION, NAME=A\n*FRICTION\n", "*FRICTION", {"mu"}},
+      {"*CONTACT PAIR, INTERACTION=NONE\nSLAVE, MASTER\n", "*CONTACT PAIR", {"undefined INTERACTION=NONE"}},
+      {"*SURFACE INTERACTION, NAME=A\n*CONTACT PAIR\nSLAVE, MASTER\n", "*CONTACT PAIR", {"INTERACTION"}},
+      {"*SURFACE INTERACTION, NAME=A\n*CONTACT PAIR, INTERACTION=A, TYPE=SURFACE TO SURFACE\nSLAVE, MASTER\n",
+       "*CONTACT PAIR", {"NODE TO SURFACE"}},
+      {"*SURFACE INTERACTION, NAME=A\n*CONTACT PAIR, INTERACTION=A\nSLAVE, NOPE\n", "SLAVE, NOPE",
+       {"undefined master surface 'NOPE'"}},
+      {"*SURFACE INTERACTION, NAME=A\n*CONTACT PAIR, INTERACTION=A\nMASTER, SLAVE\n", "MASTER, SLAVE",
+       {"must be made of element faces"}},
+      {"*SURFACE INTERACTION, NAME=A\n*CONTACT PAIR, INTERACTION=A\nSLAVE\n", "SLAVE\n*STEP",
+       {"slave surface, master surface"}},
+      {"*SURFACE INTERACTION, NAME=A\n*CONTACT PAIR, INTERACTION=A, ADJUST=-1\nSLAVE, MASTER\n", "*CONTACT PAIR",
+       {"ADJUST"}},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.block);
+    expect_deck_error_at(with_contact(c.block), c.marker, c.words);
+  }
+}
