@@ -257,12 +257,13 @@ TEST(SegmentGeometry, CentreOfCurvatureIsReportedSingular) {
 void check_random_derivatives(int n_nodes, unsigned seed) {
   std::mt19937 rng(seed);
   constexpr double kTol = 1e-6;  // relative, see relative()
-  int checked = 0;
+  int checked = 0, max_iterations = 0;
   DerivativeErrors worst;
   for (int trial = 0; trial < 300; ++trial) {
     const Points p = random_configuration(rng, n_nodes);
     const SegmentGeometry g = geometry_of(p);
     ASSERT_EQ(g.projection.status, ProjectionStatus::converged);
+    max_iterations = std::max(max_iterations, g.projection.iterations);
     if (g.projection_stiffness < 0.2) continue;  // too close to the centre of curvature for FD
     const DerivativeErrors e = derivative_errors(p, 1e-6);
     EXPECT_LT(e.gap_gradient, kTol) << trial;
@@ -279,7 +280,7 @@ void check_random_derivatives(int n_nodes, unsigned seed) {
   EXPECT_GT(checked, 250);
   std::cout << n_nodes << "-node segments: " << checked << " configurations, worst relative error gap gradient "
             << worst.gap_gradient << ", gap Hessian " << worst.gap_hessian << ", xi Hessian " << worst.xi_hessian
-            << "\n";
+            << ", most projection iterations " << max_iterations << "\n";
 }
 
 TEST(SegmentGeometry, LinearDerivativesMatchFiniteDifferences) { check_random_derivatives(2, 11); }

@@ -98,8 +98,12 @@ struct SegmentGeometry {
   double projection_stiffness = 1;
 
   int n_dofs = 0;                     ///< 2 (1 + segment nodes)
-  ContactVector gap_gradient;         ///< ∂g_n/∂(contact dofs), incl. the variation of ξ* and n
-  ContactMatrix gap_hessian;          ///< ∂²g_n/∂(contact dofs)² (filled for ContactDerivatives::hessian)
+  /// ∂g_n/∂(contact dofs), incl. the variation of ξ* and n. Since ∂g_n/∂ξ = 0 at ξ*
+  /// this equals [n; -N_1 n; ...; -N_m n] (N_a at ξ*).
+  ContactVector gap_gradient;
+  /// ∂²g_n/∂(contact dofs)² = Eᵀ g_zz E, z = (ξ, x), E = [∂ξ*/∂xᵀ; I] (implicit function
+  /// theorem on the projection condition; see the theory page). Filled for ContactDerivatives::hessian.
+  ContactMatrix gap_hessian;
   ContactVector xi_gradient;          ///< ∂ξ*/∂(contact dofs)
   ContactMatrix xi_hessian;           ///< ∂²ξ*/∂(contact dofs)² (filled for ContactDerivatives::hessian)
   ContactVector metric_gradient;      ///< ∂|y'(ξ*)|/∂(contact dofs), for the slip increment
