@@ -34,8 +34,10 @@ bool ConvergenceCriteria::converged(const IterationNorms& n, int iteration, doub
 
   const double allowed = controls_.correction_tolerance * n.increment + floor;
   if (n.correction <= allowed) return true;
-  // Estimate of the next correction from the residual reduction (ABAQUS does the same).
-  if (n.previous_force_residual > 0) {
+  // Estimate of the next correction from the residual reduction (ABAQUS does
+  // the same). It needs two corrections: after the first, the "previous"
+  // residual is that of the new load, and the ratio says nothing about the rate.
+  if (iteration >= 2 && n.previous_force_residual > 0) {
     const double ratio = n.force_residual / n.previous_force_residual;
     if (ratio < 1 && n.correction * ratio <= allowed) return true;
   }
