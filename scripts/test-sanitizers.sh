@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 # The same options as the presets, also for gtest_discover_tests while building.
 export ASAN_OPTIONS="halt_on_error=1:abort_on_error=0:detect_leaks=1:detect_stack_use_after_return=0:strict_string_checks=1:check_initialization_order=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
 export OMP_NUM_THREADS=2
 start=$(date +%s)
 cmake --preset asan
