@@ -21,11 +21,31 @@ struct SourceLocation {
   }
 };
 
+/// `text` with every run of more than 200 non-blank characters cut to its
+/// first 60 and a note of its length, so a message quoting a runaway token
+/// (a 1 MB "number") stays readable.
+inline std::string shorten_long_tokens(const std::string& text) {
+  constexpr std::size_t kLong = 200, kKeep = 60;
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t j = i;
+    while (j < text.size() && text[j] != ' ') ++j;
+    if (j - i > kLong)
+      out.append(text, i, kKeep).append("...[" + std::to_string(j - i) + " characters]");
+    else
+      out.append(text, i, j - i);
+    if (j < text.size()) out.push_back(' ');
+    i = j + 1;
+  }
+  return out;
+}
+
 /// Error in the input deck: the message names the file and line.
 class InputError : public std::runtime_error {
  public:
   InputError(SourceLocation where, const std::string& what)
-      : std::runtime_error(where.str() + ": error: " + what), where_(std::move(where)) {}
+      : std::runtime_error(where.str() + ": error: " + shorten_long_tokens(what)), where_(std::move(where)) {}
   [[nodiscard]] const SourceLocation& where() const { return where_; }
 
  private:
