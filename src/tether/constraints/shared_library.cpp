@@ -65,4 +65,11 @@ void* SharedLibrary::symbol(const std::string& name, std::string& error) const {
   return address;
 }
 
+void check_routine_status(int status, RoutineMessage& message, const std::string& who) {
+  message.back() = '\0';
+  if (status != 0)
+    throw ModelError(who + " reported failure (status " + std::to_string(status) + ")" +
+                     (message[0] ? ": " + std::string(message.data()) : std::string()));
+}
+
 }  // namespace tether

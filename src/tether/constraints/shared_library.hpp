@@ -1,6 +1,7 @@
 #pragma once
 /// \file A shared library loaded at run time (dlopen), for user plug-ins.
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -33,5 +34,12 @@ class SharedLibrary {
   std::string path_;
   void* handle_ = nullptr;
 };
+
+/// Message buffer handed to a user routine (C interfaces take char*, size).
+using RoutineMessage = std::array<char, 512>;
+
+/// Throws ModelError "`who` reported failure (status N): message" when a user
+/// routine returned a nonzero status. Terminates `message` first.
+void check_routine_status(int status, RoutineMessage& message, const std::string& who);
 
 }  // namespace tether

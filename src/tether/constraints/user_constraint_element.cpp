@@ -91,7 +91,7 @@ void UserConstraintElement::call(const EvaluationState& state, Eigen::VectorXd& 
   Eigen::MatrixXd scratch;
   Eigen::MatrixXd& stiffness = tangent ? *tangent : scratch;
   stiffness.setZero(n, n);  // column-major, as the interface promises
-  std::array<char, 512> message{};
+  RoutineMessage message{};
 
   tether_user_constraint_output out{};
   out.n = n;
@@ -101,10 +101,7 @@ void UserConstraintElement::call(const EvaluationState& state, Eigen::VectorXd& 
   out.message_capacity = message.size();
 
   const int status = routine_(&in, &out);
-  message.back() = '\0';
-  if (status != 0)
-    throw ModelError(who() + " reported failure (status " + std::to_string(status) + ")" +
-                     (message[0] ? ": " + std::string(message.data()) : std::string()));
+  check_routine_status(status, message, who());
 
   auto describe_row = [&](int i) {
     if (i < nu)

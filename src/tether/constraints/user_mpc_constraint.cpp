@@ -125,7 +125,7 @@ UserMpcConstraint::Linearisation UserMpcConstraint::call(const Eigen::VectorXd& 
 
   std::vector<double> a(kMaxDof * kMaxDof * nn, 0.0);
   std::vector<int> jdof(kMaxDof * nn, 0);
-  std::array<char, 512> message{};
+  RoutineMessage message{};
   tether_user_mpc_output out{};
   out.mdof = mode_ == UserMpcMode::Dof ? 1 : kMaxDof;
   out.lmpc = 1;
@@ -135,10 +135,7 @@ UserMpcConstraint::Linearisation UserMpcConstraint::call(const Eigen::VectorXd& 
   out.message_capacity = message.size();
 
   const int status = routine_(&in, &out);
-  message.back() = '\0';
-  if (status != 0)
-    throw ModelError(who() + " reported failure (status " + std::to_string(status) + ")" +
-                     (message[0] ? ": " + std::string(message.data()) : std::string()));
+  check_routine_status(status, message, who());
   if (out.lmpc != 1)
     throw ModelError(who() + " set LMPC = " + std::to_string(out.lmpc) +
                      ": switching a user MPC off is not supported (its multipliers stay unknowns of the step)");
