@@ -131,3 +131,24 @@ TEST(DeckConstraints, UserMpcExampleDeckGivesTheExactAnswer) {
   EXPECT_NEAR(m[1].value[0], 0.0, 1e-9);
   EXPECT_NEAR(m[1].value[1], -1.0, 1e-9);
 }
+
+TEST(DeckConstraints, NumericalFaultsInAUserRoutineCutBackThenStopNamingIt) {
+  // A routine that fails (mode 1), returns NaN (2) or Inf in the stiffness (3): every
+  // attempt fails, the increment is cut back until the minimum, and the run
+  // stops with the constraint named — no NaN is ever written.
+  for (const char* mode : {"1", "2", "3"}) {
+    std::string deck = user_example_deck();
+    const std::string from = std::string("LIBRARY=") + TETHER_USER_CONSTRAINT_EXAMPLE;
+    deck.replace(deck.find(from), from.size(),
+                 std::string("LIBRARY=") + TETHER_USER_CONSTRAINT_FAILING + ", SYMBOL=misbehaving_constraint");
+    deck.replace(deck.find("2, 5\n1, 0.0"), 11, std::string("2, 5\n") + mode + ", 0.0");
+    const auto run = run_deck_text(deck);
+    EXPECT_FALSE(run.summary.completed) << mode;
+    EXPECT_GT(run.summary.cutbacks, 0) << mode;
+    EXPECT_NE(run.summary.message.find("TIE-BOTTOM-X"), std::string::npos) << mode << ": " << run.summary.message;
+    EXPECT_NE(run.summary.message.find("no increment converged"), std::string::npos) << run.summary.message;
+    EXPECT_TRUE(run.recorder.results.empty());
+    for (const auto& r : run.recorder.results)
+      for (const auto& u : r.displacement) EXPECT_TRUE(u.allFinite());
+  }
+}

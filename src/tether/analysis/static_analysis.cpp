@@ -119,7 +119,9 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
 
   auto stop = [&](const std::string& why) {
     summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(step_time) +
-                      ": " + why + "; the last converged increment has been written";
+                      ": " + why +
+                      (summary.increments > 0 ? "; the last converged increment has been written"
+                                              : "; no increment converged, so there are no results");
     return false;
   };
 
