@@ -526,10 +526,14 @@ def main(argv=None):
     finally:
         if not args.workdir:
             shutil.rmtree(work, ignore_errors=True)
-    rev = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
+    try:
+        rev = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
+        revision = rev.stdout.strip() or "?"
+    except OSError:
+        revision = "?"
     cmd = "/usr/bin/python3 tools/make_gallery.py" + (" --ccx " + args.ccx if args.ccx != "ccx" else "")
     meta = {"command": cmd, "date": datetime.date.today().isoformat(),
-            "revision": rev.stdout.strip() or "?", "ccx_version": ccx_version, "ccx": bool(ccx),
+            "revision": revision, "ccx_version": ccx_version, "ccx": bool(ccx),
             "ccx_missing_note": "ccx not installed", "total_wall": time.monotonic() - start}
     write_markdown(os.path.join(args.out, "verification.md"), results, meta)
     failures = [f"{r['case']}: {r['quantity']}: error {r['tether_error']} beyond {r['tolerance']}"
