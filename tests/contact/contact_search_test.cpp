@@ -184,6 +184,22 @@ TEST(ContactSearch, CurvedQuadraticMasterMatchesAllPairs) {
   }
 }
 
+TEST(ContactSearch, StarPolygonWithConvexAndConcaveCornersMatchesAllPairs) {
+  // Closed star: 2-node segments, radius alternating 1 and 0.6 (convex tips, concave notches).
+  Mesh m;
+  const int n = 40;
+  for (int i = 0; i < n; ++i) {
+    const double r = i % 2 ? 0.6 : 1.0, t = 2 * std::numbers::pi * i / n;
+    m.positions.emplace_back(r * std::cos(t), r * std::sin(t));
+    m.faces.push_back({i, (i + 1) % n});
+  }
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1.2, 1.2);
+  std::vector<Vector2d> slaves;
+  for (int i = 0; i < 4000; ++i) slaves.emplace_back(u(rng), u(rng));
+  check_against_brute_force(m, slaves, 0.25);
+}
+
 TEST(ContactSearch, GapAgreesWithSegmentGeometry) {
   const Mesh m = circle_master(40, 2.0, 3);
   const MasterSurface surface(m.faces);
@@ -316,6 +332,11 @@ TEST(ContactSearch, NoCandidateWithinTheRadius) {
   const auto r = find_closest(MasterSurface(m.faces), m.positions, std::vector<Vector2d>{{0.5, 0.06}, {5, 5}}, options);
   EXPECT_FALSE(r[0].found());
   EXPECT_FALSE(r[1].found());
+  ContactPairing bad;
+  bad.segment = 10;
+  EXPECT_THROW(find_closest(MasterSurface(m.faces), m.positions, std::vector<Vector2d>{{0, 0}}, options,
+                            std::vector<ContactPairing>{bad}),
+               std::invalid_argument);
   options.search_radius = 0;
   EXPECT_THROW(find_closest(MasterSurface(m.faces), m.positions, std::vector<Vector2d>{{0, 0}}, options),
                std::invalid_argument);

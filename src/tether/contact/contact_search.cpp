@@ -212,14 +212,15 @@ class Selector {
            SearchStatistics& stats)
       : surface_(surface), positions_(positions), options_(options), stats_(stats) {}
 
+  /// Forgets the projections of the previous slave point.
+  void next_slave() { cache_.clear(); }
+
   ContactPairing select(const Vector2d& slave, std::span<const std::pair<double, int>> ordered) {
     found_.clear();
     double d_min = std::numeric_limits<double>::infinity();
     for (const auto& [lb, s] : ordered) {
       if (lb > d_min + tie_tolerance(slave, d_min, options_.search_radius)) break;
-      const SegmentPoints seg = points_of(surface_, positions_, s);
-      const SegmentProjection p = project(slave, seg.span(), options_.projection);
-      ++stats_.n_projections;
+      const SegmentProjection p = projection(slave, s);
       if (p.status == ProjectionStatus::degenerate || p.clamped_distance > options_.search_radius) continue;
       found_.push_back({s, p});
       d_min = std::min(d_min, p.clamped_distance);
@@ -266,11 +267,22 @@ class Selector {
   }
 
  private:
+  /// project() of the current slave point, each segment projected once per slave.
+  SegmentProjection projection(const Vector2d& slave, int s) {
+    for (const Candidate& c : cache_)
+      if (c.segment == s) return c.projection;
+    const SegmentPoints seg = points_of(surface_, positions_, s);
+    cache_.push_back({s, project(slave, seg.span(), options_.projection)});
+    ++stats_.n_projections;
+    return cache_.back().projection;
+  }
+
   const MasterSurface& surface_;
   std::span<const Vector2d> positions_;
   const SearchOptions& options_;
   SearchStatistics& stats_;
   std::vector<Candidate> found_;
+  std::vector<Candidate> cache_;
 };
 
 }  // namespace
@@ -284,6 +296,10 @@ std::vector<ContactPairing> find_closest(const MasterSurface& surface, std::span
                                 " nodes, the master surface needs " + std::to_string(surface.n_nodes_required()));
   if (!previous.empty() && previous.size() != slaves.size())
     throw std::invalid_argument("contact search: previous pairings must be empty or one per slave point");
+  for (const ContactPairing& p : previous)
+    if (p.segment >= surface.n_segments())
+      throw std::invalid_argument("contact search: previous pairing names segment " + std::to_string(p.segment) +
+                                  " of a surface with " + std::to_string(surface.n_segments()));
 
   SearchStatistics local_stats;
   SearchStatistics& stats = statistics ? *statistics : local_stats;
@@ -296,6 +312,7 @@ std::vector<ContactPairing> find_closest(const MasterSurface& surface, std::span
   for (std::size_t i = 0; i < slaves.size(); ++i) {
     const Vector2d& slave = slaves[i];
     const ContactPairing* prev = previous.empty() ? nullptr : &previous[i];
+    selector.next_slave();
     if (prev && options.keep_pairing) {  // SMALL SLIDING: the extended segment of the first pairing
       if (prev->found()) {
         const SegmentPoints seg = points_of(surface, positions, prev->segment);

@@ -87,19 +87,27 @@ struct SearchStatistics {
 ///
 /// `positions`: current coordinates of all nodes, indexed by global node index
 /// (size ≥ surface.n_nodes_required()). `slaves`: current slave points.
-/// `previous`: empty for a full search, or one pairing per slave (last
-/// pairing) for the incremental update: the previous segment and its
-/// neighbours are tried first and kept when the chosen point lies inside a
-/// segment; otherwise the slave goes through the broad phase. The bins are
+/// `previous`: empty for a full search, or one pairing per slave (the last
+/// pairing) for the incremental update used during Newton: a walk from the
+/// previous segment — it and its neighbours are projected, and while the
+/// chosen segment has a neighbour not yet projected, that neighbour's
+/// neighbours are added (at most 3 steps); the result is kept when the chosen
+/// segment's neighbours were all candidates, otherwise (nothing within the
+/// radius, or the walk did not close) the slave goes through the broad phase.
+/// The walk cannot see a distant part of the surface that became closer: run a
+/// full search (empty `previous`) at least once per increment. The bins are
 /// built only if some slave needs them (cost O(n log n), n segments).
 /// Selection rule (section "Search" of the theory page): the closest point
-/// over all candidates; if it lies inside a segment, that segment (concave
-/// corner ties: smallest distance, then smallest segment index); otherwise a
-/// corner pairing (at_corner). Deterministic: the result does not depend on
-/// segment order in the bins or on `previous` when both paths find a
-/// pairing inside a segment.
+/// over all candidates within the radius; if some segment contains it in
+/// [-1,1], that segment (concave corner, or a node shared by two segments:
+/// smallest distance, ties within round-off by smallest segment index);
+/// otherwise a corner pairing (at_corner). Deterministic: the result does not
+/// depend on the order of segments in the bins; the incremental walk gives
+/// the full search's answer whenever the closest point lies on the walked
+/// segments.
 /// Throws std::invalid_argument if search_radius ≤ 0, positions is too short,
-/// or previous is neither empty nor of slaves' size.
+/// previous is neither empty nor of slaves' size, or names a segment the
+/// surface does not have.
 std::vector<ContactPairing> find_closest(const MasterSurface& surface, std::span<const Eigen::Vector2d> positions,
                                          std::span<const Eigen::Vector2d> slaves, const SearchOptions& options,
                                          std::span<const ContactPairing> previous = {},
