@@ -328,3 +328,16 @@ TEST(Constraints, MoreEquationsThanFreeDofsIsNamed) {
   EXPECT_NE(run.summary.message.find("3 constraint equations act on only 2 free displacement dofs"), std::string::npos)
       << run.summary.message;
 }
+
+TEST(Constraints, RotationDofOnANodeWithoutOneIsNamed) {
+  // dof 6 exists only at a BEAM reference node: a moment on an ordinary node
+  // stops the run naming the deck line and the node.
+  const std::string deck =
+      "*NODE\n1,0,0\n2,1,0\n3,1,1\n4,0,1\n*ELEMENT, TYPE=CPE4, ELSET=E\n1, 1,2,3,4\n"
+      "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*SOLID SECTION, ELSET=E, MATERIAL=M\n*BOUNDARY\n1, 1, 2\n4, 1\n"
+      "*STEP\n*STATIC\n*CLOAD\n3, 6, 1.\n*END STEP\n";
+  const auto run = run_deck_text(deck);
+  EXPECT_FALSE(run.summary.completed);
+  EXPECT_NE(run.summary.message.find("test.inp:18"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("node 3 has no rotation (dof 6)"), std::string::npos) << run.summary.message;
+}

@@ -6,6 +6,7 @@
 
 #include <random>
 
+#include "support/error_message.hpp"
 #include "support/tangent_check.hpp"
 #include "tether/constraints/constraint_element.hpp"
 #include "tether/constraints/linear_constraint.hpp"
@@ -65,12 +66,7 @@ double tangent_error(const Contribution& c, const Eigen::VectorXd& u, const Eige
 
 template <class F>
 std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "(no ModelError)";
+  return tether::testing::model_error_of(std::forward<F>(f));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <random>
 
+#include "support/error_message.hpp"
 #include "support/tangent_check.hpp"
 #include "tether/constraints/constraint_element.hpp"
 #include "tether/constraints/distance_constraint.hpp"
@@ -76,12 +77,7 @@ ConstraintOutput evaluate(const ConstraintFunction& f, const Eigen::VectorXd& u,
 
 template <class F>
 std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "(no ModelError)";
+  return tether::testing::model_error_of(std::forward<F>(f));
 }
 
 }  // namespace
