@@ -1,6 +1,7 @@
 #include "tether/analysis/discretization.hpp"
 
 #include "tether/analysis/constraint_builder.hpp"
+#include "tether/analysis/contact_builder.hpp"
 #include "tether/constraints/linear_constraint.hpp"
 #include "tether/core/error.hpp"
 
@@ -39,11 +40,8 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
     length_scale_ = size;
   }
 
-  if (!model.contact_pairs.empty())
-    throw ModelError(std::to_string(model.contact_pairs.size()) + " *CONTACT PAIR(s) were read (the first at " +
-                     model.contact_pairs.front().where.str() +
-                     ") but this version of tether cannot solve contact yet: the contact element is being built "
-                     "(see docs/theory/contact_geometry.md); remove the pairs or use a tied/constrained model");
+  for (const ContactPairData& pair : model.contact_pairs)
+    contact_pairs_.push_back(make_contact_pair(model, pair, model.coords, dofs_));
 
   for (const ConstraintData& data : model.constraints) {
     if (data.kind == ConstraintData::Kind::User) {

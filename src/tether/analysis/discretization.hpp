@@ -2,7 +2,7 @@
 /// \file The model turned into contributions over global unknowns.
 ///
 /// Owns the constitutive models and one ContinuumElement per mesh element, and
-/// builds the per-step loads. Later features (constraints, contact) add their
+/// builds the per-step loads. Constraints and contact pairs add their
 /// contributions and multiplier blocks here, through the same DofMap.
 
 #include <memory>
@@ -12,6 +12,7 @@
 #include "tether/assembly/equation_map.hpp"
 #include "tether/constraints/constraint_element.hpp"
 #include "tether/constraints/user_constraint_element.hpp"
+#include "tether/contact/contact_pair.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/elements/continuum_element.hpp"
 #include "tether/elements/face_pressure.hpp"
@@ -46,6 +47,9 @@ class Discretization {
     return user_constraints_;
   }
 
+  /// One per *CONTACT PAIR; each is assembled before its nodes (ContactPair::nodes()).
+  [[nodiscard]] const std::vector<std::unique_ptr<ContactPair>>& contact_pairs() const { return contact_pairs_; }
+
   /// One FacePressure per entry of `loads` (pressure set later with set_pressure).
   [[nodiscard]] std::vector<std::unique_ptr<FacePressure>> make_pressures(const std::vector<PressureLoad>& loads) const;
 
@@ -63,6 +67,7 @@ class Discretization {
   std::vector<std::unique_ptr<ConstraintElement>> constraints_;
   std::vector<std::unique_ptr<UserConstraintElement>> user_constraints_;
   std::vector<EliminatedConstraint> eliminated_;
+  std::vector<std::unique_ptr<ContactPair>> contact_pairs_;
   double length_scale_ = 1;
 };
 

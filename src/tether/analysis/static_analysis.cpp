@@ -73,6 +73,10 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   for (const auto& e : disc.elements()) contributions.push_back(e.get());
   for (const auto& c : disc.constraints()) contributions.push_back(c.get());
   for (const auto& c : disc.user_constraints()) contributions.push_back(c.get());
+  for (const auto& pair : disc.contact_pairs()) {
+    contributions.push_back(pair.get());  // searches before its nodes are evaluated
+    for (Contribution* node : pair->nodes()) contributions.push_back(node);
+  }
   std::vector<const Contribution*> load_contributions;
   for (const auto& p : pressures) contributions.push_back(p.get()), load_contributions.push_back(p.get());
 
@@ -102,7 +106,10 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
   // Cholesky is worth trying only for a symmetric positive definite tangent:
   // follower pressure makes it unsymmetric, multipliers make it indefinite.
-  const bool symmetric = !(step.nlgeom && !pressures.empty()) && dofs.n_multipliers() == 0;
+  // Friction makes it unsymmetric too.
+  bool friction = false;
+  for (const auto& pair : disc.contact_pairs()) friction = friction || pair->mu() > 0;
+  const bool symmetric = !(step.nlgeom && !pressures.empty()) && dofs.n_multipliers() == 0 && !friction;
 
   const double period = step.period > 0 ? step.period : 1.0;
   const double max_dt = step.max_increment > 0 ? step.max_increment : period;

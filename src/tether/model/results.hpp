@@ -42,6 +42,32 @@ struct MultiplierValues {
   std::vector<NodalConstraintForce> nodal_force;
 };
 
+/// Contact state of one slave node at the end of an increment.
+struct ContactNodeValues {
+  int node = 0;                 ///< slave node index
+  enum class Status { Open, Stick, Slip } status = Status::Open;  ///< closed frictionless: Slip
+  int master_element = 0;       ///< element id of the paired master face (0: not paired)
+  int master_face = 0;          ///< its face number 1..4 (S1..S4)
+  double xi = 0;                ///< ξ* on that face, in [-1, 1] (face_nodes() order)
+  double gap = 0;               ///< normal gap [length], > 0 open
+  double normal_force = 0;      ///< N >= 0 [force]
+  double pressure = 0;          ///< N / tributary area [force/area]
+  double tangential_force = 0;  ///< T [force], along the master tangent, opposing the slip Δs
+  double shear = 0;             ///< T / tributary area [force/area]
+  double slip = 0;              ///< Δs of the increment along the master tangent [length]
+  double total_slip = 0;        ///< Σ |Δs| of the slipping increments [length]
+  double dissipation = 0;       ///< Σ T Δs of the slipping increments [force × length]
+  Eigen::Vector2d force{0, 0};  ///< force of the master on the slave node (N n - T t) [force]
+};
+
+/// Contact output of one *CONTACT PAIR.
+struct ContactPairValues {
+  std::string name;
+  std::vector<ContactNodeValues> nodes;
+  Eigen::Vector2d total_force{0, 0};  ///< Σ force over the slave nodes (on the slave body)
+  double dissipation = 0;             ///< Σ dissipation
+};
+
 /// Everything written for one converged increment.
 struct IncrementResults {
   int step = 1;             ///< 1-based
@@ -55,6 +81,7 @@ struct IncrementResults {
   std::vector<Tensor4> nodal_strain;          ///< per node, as above
   std::vector<std::vector<PointValues>> points;  ///< per element, per integration point
   std::vector<MultiplierValues> multipliers;
+  std::vector<ContactPairValues> contact;     ///< one per *CONTACT PAIR
 };
 
 }  // namespace tether

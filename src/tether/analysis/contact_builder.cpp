@@ -1,0 +1,117 @@
+#include "tether/analysis/contact_builder.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include "tether/core/error.hpp"
+#include "tether/fem/quadrature.hpp"
+#include "tether/fem/shape_functions.hpp"
+
+namespace tether {
+
+namespace {
+
+/// Out-of-plane measure of the element at reference point x: thickness, or 2πr (CAX).
+double measure(const Model& model, const Element& e, const Eigen::Vector2d& x) {
+  if (e.type.family == Family::Axisymmetric) return 2 * std::numbers::pi * x.x();
+  return e.section >= 0 ? model.sections[static_cast<std::size_t>(e.section)].thickness : 1.0;
+}
+
+/// A stiffness of the element's material [stress]: E, or ~6 C10 for neo-Hooke.
+double modulus(const Model& model, const Element& e) {
+  if (e.section < 0) return 0;
+  const MaterialData& m = model.materials[static_cast<std::size_t>(model.sections[static_cast<std::size_t>(e.section)].material)];
+  if (m.elastic) return m.elastic->young;
+  if (m.neo_hooke) return 6 * m.neo_hooke->c10;
+  return 0;
+}
+
+std::vector<int> face_node_indices(const Model& model, const ElementFace& f) {
+  const Element& e = model.elements[static_cast<std::size_t>(f.element)];
+  std::vector<int> nodes;
+  for (int local : face_nodes(e.type.shape, f.face))
+    if (local >= 0) nodes.push_back(e.nodes[static_cast<std::size_t>(local)]);
+  return nodes;
+}
+
+}  // namespace
+
+std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const ContactPairData& data,
+                                               const std::vector<Eigen::Vector2d>& reference, DofMap& dofs) {
+  const std::string where = " (*CONTACT PAIR at " + data.where.str() + ")";
+  const Surface& slave = model.surfaces.at(data.slave);
+  const Surface& master = model.surfaces.at(data.master);
+  const auto interaction = std::find_if(model.interactions.begin(), model.interactions.end(),
+                                        [&](const SurfaceInteraction& s) { return s.name == data.interaction; });
+  if (interaction == model.interactions.end())
+    throw ModelError("undefined interaction " + data.interaction + where);
+
+  ContactPairSetup setup;
+  setup.name = "CONTACT PAIR " + data.slave + "-" + data.master;
+  setup.law = interaction->behavior;
+  setup.friction = interaction->friction;
+  setup.small_sliding = data.small_sliding;
+  if (setup.law.law == PressureOverclosure::Law::Linear && setup.law.sigma_inf > 0)
+    throw ModelError("PRESSURE-OVERCLOSURE=LINEAR with a tension sigma_inf > 0 (*SURFACE BEHAVIOR at " +
+                     interaction->where.str() + ") is not modelled by tether; give 'K' or 'K, 0, c0'");
+  if (setup.friction && setup.friction->mu > 0 && setup.friction->stick_slope > 0 && setup.friction->elastic_slip > 0)
+    throw ModelError("*FRICTION of " + interaction->name + " gives both a stick slope and ELASTIC SLIP; give one");
+
+  double longest = 0, stiffness = 0;
+  for (const ElementFace& f : master.faces) {
+    const std::vector<int> nodes = face_node_indices(model, f);
+    longest = std::max(longest, (reference[static_cast<std::size_t>(nodes[1])] - reference[static_cast<std::size_t>(nodes[0])]).norm());
+    setup.master_faces.push_back(nodes);
+    setup.master_face_labels.emplace_back(model.elements[static_cast<std::size_t>(f.element)].id, f.face + 1);
+  }
+  if (setup.master_faces.empty()) throw ModelError("master surface " + data.master + " has no faces" + where);
+
+  // Slave nodes and tributary areas ∫ N_a ds × thickness (2πr for CAX) in the reference configuration.
+  std::map<int, double> area;
+  if (slave.kind == Surface::Kind::Nodes) {
+    for (int n : slave.nodes) area[n] = 1.0;
+    for (const Element& e : model.elements) stiffness = std::max(stiffness, modulus(model, e) * measure(model, e, {1, 0}));
+  } else {
+    for (const ElementFace& f : slave.faces) {
+      const Element& e = model.elements[static_cast<std::size_t>(f.element)];
+      const std::vector<int> nodes = face_node_indices(model, f);
+      const int m = static_cast<int>(nodes.size());
+      longest = std::max(longest, (reference[static_cast<std::size_t>(nodes[1])] - reference[static_cast<std::size_t>(nodes[0])]).norm());
+      for (const LinePoint& q : line_points(3)) {
+        Eigen::Vector3d N, dN;
+        face_shape_functions(m, q.s, N, dN);
+        Eigen::Vector2d x(0, 0), dx(0, 0);
+        for (int a = 0; a < m; ++a)
+          x += N[a] * reference[static_cast<std::size_t>(nodes[static_cast<std::size_t>(a)])],
+              dx += dN[a] * reference[static_cast<std::size_t>(nodes[static_cast<std::size_t>(a)])];
+        const double w = q.weight * dx.norm() * measure(model, e, x);
+        for (int a = 0; a < m; ++a) area[nodes[static_cast<std::size_t>(a)]] += N[a] * w;
+      }
+      const Eigen::Vector2d mid = 0.5 * (reference[static_cast<std::size_t>(nodes[0])] + reference[static_cast<std::size_t>(nodes[1])]);
+      stiffness = std::max(stiffness, modulus(model, e) * measure(model, e, mid));
+    }
+  }
+  if (area.empty()) throw ModelError("slave surface " + data.slave + " has no nodes" + where);
+  std::set<int> master_nodes;
+  for (const auto& f : setup.master_faces) master_nodes.insert(f.begin(), f.end());
+  for (const auto& [node, a] : area) {
+    if (master_nodes.count(node))
+      throw ModelError("node " + std::to_string(model.node_ids[static_cast<std::size_t>(node)]) +
+                       " belongs to both the slave surface " + data.slave + " and the master surface " + data.master +
+                       where + ": contact is between distinct surfaces; split the node or the surfaces");
+    setup.slave_nodes.push_back(node);
+    setup.slave_area.push_back(a);
+  }
+  setup.search_radius = 2 * longest + data.adjust;
+  setup.complementarity_stiffness = stiffness > 0 ? stiffness : 1.0;
+
+  const int per_slave = ContactPair::multipliers_per_slave(setup.law, setup.friction);
+  const int first = per_slave > 0 ? dofs.add_multipliers(per_slave * static_cast<int>(setup.slave_nodes.size()),
+                                                          "contact pair " + data.slave + "-" + data.master)
+                                  : -1;
+  return std::make_unique<ContactPair>(std::move(setup), reference, first);
+}
+
+}  // namespace tether

@@ -1,0 +1,207 @@
+#include "tether/contact/contact_pair.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "tether/core/error.hpp"
+#include "tether/dofs/dof_map.hpp"
+
+namespace tether {
+
+namespace {
+
+/// Times the chattering guard may release held nodes in one increment attempt.
+constexpr int kMaxReleases = 10;
+
+Eigen::Vector2d position(const std::vector<Eigen::Vector2d>& reference, const Eigen::VectorXd& u, int node) {
+  return reference[static_cast<std::size_t>(node)] + Eigen::Vector2d(u[kDofsPerNode * node], u[kDofsPerNode * node + 1]);
+}
+
+}  // namespace
+
+int ContactPair::multipliers_per_slave(const PressureOverclosure& law, const std::optional<FrictionData>& friction) {
+  const bool exact_stick = friction && friction->mu > 0 && friction->stick_slope == 0 && friction->elastic_slip == 0;
+  return (law.law == PressureOverclosure::Law::Hard ? 1 : 0) + (exact_stick ? 1 : 0);
+}
+
+bool ContactPair::exact_stick() const {
+  const auto& f = setup_.friction;
+  return f && f->mu > 0 && f->stick_slope == 0 && f->elastic_slip == 0;
+}
+
+ContactPair::ContactPair(ContactPairSetup setup, const std::vector<Eigen::Vector2d>& reference, int first_multiplier)
+    : setup_(std::move(setup)), reference_(reference), surface_(setup_.master_faces) {
+  if (setup_.slave_nodes.size() != setup_.slave_area.size())
+    throw std::invalid_argument(setup_.name + ": one tributary area per slave node expected");
+  if (setup_.master_face_labels.size() != setup_.master_faces.size())
+    throw std::invalid_argument(setup_.name + ": one label per master face expected");
+  if (!(setup_.search_radius > 0)) throw std::invalid_argument(setup_.name + ": search radius must be > 0");
+  if (!(setup_.complementarity_stiffness > 0))
+    throw std::invalid_argument(setup_.name + ": complementarity stiffness must be > 0");
+  const int per_slave = multipliers_per_slave(setup_.law, setup_.friction);
+  if (per_slave > 0 && first_multiplier < 0) throw std::invalid_argument(setup_.name + ": multipliers not reserved");
+  const bool hard = setup_.law.law == PressureOverclosure::Law::Hard;
+
+  slaves_.resize(setup_.slave_nodes.size());
+  nodes_.reserve(slaves_.size());
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    ContactSlave& s = slaves_[i];
+    s.node = setup_.slave_nodes[i];
+    s.area = setup_.slave_area[i];
+    int next = first_multiplier + per_slave * static_cast<int>(i);
+    if (hard) s.normal_multiplier = next++;
+    if (exact_stick()) s.tangent_multiplier = next++;
+    set_pairing(s, ContactPairing{});
+    nodes_.push_back(std::make_unique<ContactNode>(*this, static_cast<int>(i)));
+  }
+  positions_.assign(static_cast<std::size_t>(surface_.n_nodes_required()), Eigen::Vector2d::Zero());
+}
+
+ContactPair::~ContactPair() = default;
+
+std::vector<Contribution*> ContactPair::nodes() const {
+  std::vector<Contribution*> out;
+  out.reserve(nodes_.size());
+  for (const auto& n : nodes_) out.push_back(n.get());
+  return out;
+}
+
+void ContactPair::set_pairing(ContactSlave& s, const ContactPairing& p) {
+  s.pairing = p;
+  s.dofs.clear();
+  s.dofs.push_back(kDofsPerNode * s.node);
+  s.dofs.push_back(kDofsPerNode * s.node + 1);
+  if (p.found())
+    for (int n : surface_.segment_nodes(p.segment)) {
+      s.dofs.push_back(kDofsPerNode * n);
+      s.dofs.push_back(kDofsPerNode * n + 1);
+    }
+  if (s.normal_multiplier >= 0) s.dofs.push_back(s.normal_multiplier);
+  if (s.tangent_multiplier >= 0) s.dofs.push_back(s.tangent_multiplier);
+}
+
+void ContactPair::start_attempt(const EvaluationState& state) {
+  attempt_time_ = state.total_time;
+  attempt_dt_ = state.dt;
+  releases_ = 0;
+  for (ContactSlave& s : slaves_) s.status_changes = 0, s.held_closed = false;
+}
+
+bool ContactPair::update_connectivity(const EvaluationState& state) {
+  const bool new_attempt = state.total_time != attempt_time_ || state.dt != attempt_dt_ || !searched_once_;
+  if (new_attempt) start_attempt(state);
+
+  for (int s = 0; s < surface_.n_segments(); ++s)
+    for (int n : surface_.segment_nodes(s)) positions_[static_cast<std::size_t>(n)] = position(reference_, state.u, n);
+  std::vector<Eigen::Vector2d> slave_positions(slaves_.size());
+  for (std::size_t i = 0; i < slaves_.size(); ++i) slave_positions[i] = position(reference_, state.u, slaves_[i].node);
+
+  SearchOptions options;
+  options.search_radius = setup_.search_radius;
+  options.keep_pairing = setup_.small_sliding;
+  std::vector<ContactPairing> previous;
+  if (searched_once_ && (setup_.small_sliding || !new_attempt)) {
+    previous.reserve(slaves_.size());
+    for (const ContactSlave& s : slaves_) previous.push_back(s.pairing);
+  }
+  SearchStatistics work;
+  std::vector<ContactPairing> pairings =
+      find_closest(surface_, positions_, slave_positions, options, previous, &work);
+  searched_once_ = true;
+
+  statistics_ = {};
+  bool changed = false;
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    ContactSlave& s = slaves_[i];
+    ContactPairing p = pairings[i];
+    // Beyond an open end of the master surface there is no contact.
+    if (p.found() && p.at_corner && surface_.neighbours(p.segment, p.xi < 0 ? 0 : 1).empty()) p = ContactPairing{};
+    if (p.segment != s.pairing.segment) {
+      set_pairing(s, p);
+      changed = true;
+      ++statistics_.repaired;
+    } else {
+      s.pairing = p;
+    }
+    if (p.found() && s.committed_segment < 0) {
+      // First pairing: the slip is measured from the projection at the start of the increment.
+      std::vector<Eigen::Vector2d> start;
+      for (int n : surface_.segment_nodes(p.segment)) start.push_back(position(reference_, state.u_start, n));
+      s.committed_segment = p.segment;
+      s.committed_xi = project(position(reference_, state.u_start, s.node), start).xi;
+    }
+  }
+
+  // Status of every node at this iterate; count changes, engage the chattering guard.
+  const bool hard = setup_.law.law == PressureOverclosure::Law::Hard;
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    ContactSlave& s = slaves_[i];
+    const ContactStatus status = nodes_[i]->status(state);
+    if (!new_attempt && status != s.status) {
+      ++statistics_.status_changes;
+      const bool flipped = (status == ContactStatus::Open) != (s.status == ContactStatus::Open);
+      if (flipped && hard && ++s.status_changes >= setup_.max_status_changes && !s.held_closed) {
+        s.held_closed = true;
+      }
+    }
+    s.status = s.held_closed ? (status == ContactStatus::Open ? ContactStatus::Slip : status) : status;
+    if (s.status != ContactStatus::Open) ++statistics_.closed;
+    if (s.held_closed) ++statistics_.held_closed;
+  }
+  return changed;
+}
+
+Acceptance ContactPair::on_converged(const EvaluationState& state) {
+  bool released = false;
+  for (ContactSlave& s : slaves_) {
+    if (!s.held_closed) continue;
+    // A held node must carry compression; in tension it should have opened.
+    if (state.u[s.normal_multiplier] < 0) {
+      s.held_closed = false;
+      s.status_changes = 0;
+      released = true;
+    }
+  }
+  if (!released) {
+    for (ContactSlave& s : slaves_) s.held_closed = false;
+    return Acceptance::Accept;
+  }
+  if (++releases_ > kMaxReleases)
+    throw ModelError(setup_.name + ": the contact active set keeps cycling (nodes held closed by the chattering "
+                     "guard carry tension after " + std::to_string(kMaxReleases) + " releases)");
+  return Acceptance::Iterate;
+}
+
+void ContactPair::commit(const EvaluationState& state) {
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    ContactSlave& s = slaves_[i];
+    const ContactNodeValues v = nodes_[i]->values(state);
+    if (!s.pairing.found()) {
+      s.committed_segment = -1;
+      s.committed_tangential_force = 0;
+      continue;
+    }
+    if (v.status == ContactNodeValues::Status::Slip && mu() > 0) {
+      s.total_slip += std::abs(v.slip);
+      s.dissipation += v.tangential_force * v.slip;
+    }
+    s.committed_tangential_force = v.tangential_force;
+    s.committed_segment = s.pairing.segment;
+    s.committed_xi = v.xi;
+  }
+}
+
+ContactPairValues ContactPair::values(const EvaluationState& state) const {
+  ContactPairValues out;
+  out.name = setup_.name;
+  out.nodes.reserve(nodes_.size());
+  for (const auto& n : nodes_) {
+    ContactNodeValues v = n->values(state);
+    out.total_force += v.force;
+    out.dissipation += v.dissipation;
+    out.nodes.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace tether

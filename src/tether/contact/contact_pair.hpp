@@ -1,0 +1,132 @@
+#pragma once
+/// \file One `*CONTACT PAIR` of 2D node-to-segment contact: the slave nodes,
+/// the master surface, their pairing (search) and history, and one
+/// ContactNode contribution per slave node.
+///
+/// The pair is itself a Contribution without unknowns: its
+/// update_connectivity() runs the search before each Newton iteration (a full
+/// search at the first iteration of every increment attempt, the incremental
+/// walk afterwards; SMALL SLIDING keeps the first pairing) and hands the new
+/// pairings to its ContactNodes, whose dof lists change accordingly. The
+/// multipliers are reserved once per slave node and never renumbered.
+/// It must come before its nodes in the assembler's list.
+///
+/// Theory, choices and limits: docs/theory/contact.md.
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tether/assembly/contribution.hpp"
+#include "tether/contact/contact_node.hpp"
+#include "tether/contact/contact_search.hpp"
+#include "tether/model/contact_data.hpp"
+#include "tether/model/results.hpp"
+
+namespace tether {
+
+/// A pair resolved to node indices (built by the analysis from the model).
+struct ContactPairSetup {
+  std::string name;  ///< for messages and output, e.g. "CONTACT PAIR SLAVE-MASTER"
+  /// Node indices of each master segment, face_nodes() order (counter-clockwise around its element).
+  std::vector<std::vector<int>> master_faces;
+  /// (element id, face number 1..4) of each master segment, for output.
+  std::vector<std::pair<int, int>> master_face_labels;
+  std::vector<int> slave_nodes;    ///< node indices
+  /// Tributary area of each slave node [length × thickness] (1 per node for a
+  /// node-based slave surface, as in ABAQUS); pressure = normal force / area.
+  std::vector<double> slave_area;
+  PressureOverclosure law;               ///< HARD: exact (multipliers); else a soft law
+  std::optional<FrictionData> friction;  ///< none or mu = 0: frictionless
+  bool small_sliding = false;
+  double search_radius = 0;  ///< [length], > 0
+  /// c of the complementarity functions min(λ/c, g) [force/length]: decides
+  /// the active set between iterations only; the converged answer does not
+  /// depend on it. Order of the slave body's E × thickness.
+  double complementarity_stiffness = 1;
+  /// Changes of status of one slave node within an increment attempt after
+  /// which it is held closed until Newton converges (chattering guard).
+  int max_status_changes = 4;
+};
+
+/// Per-slave record: pairing, dofs, committed history.
+struct ContactSlave {
+  int node = 0;
+  double area = 1;
+  int normal_multiplier = -1;      ///< global index (HARD), -1 otherwise
+  int tangent_multiplier = -1;     ///< global index (exact stick), -1 otherwise
+  ContactPairing pairing;          ///< current pairing; segment -1: free
+  std::vector<int> dofs;           ///< [slave x, y, segment nodes x, y ..., λn?, λt?]
+  // History at the last converged increment.
+  int committed_segment = -1;      ///< segment of the last converged pairing (-1: none)
+  double committed_xi = 0;         ///< ξ* there
+  double committed_tangential_force = 0;  ///< T [force] (penalty stick)
+  double total_slip = 0;           ///< Σ |Δs| over slipping increments [length]
+  double dissipation = 0;          ///< Σ T Δs over slipping increments [force × length]
+  // Within an increment attempt.
+  ContactStatus status = ContactStatus::Open;  ///< at the last update_connectivity
+  int status_changes = 0;
+  bool held_closed = false;        ///< chattering guard engaged
+};
+
+/// Work done by the last update_connectivity (for the iteration log).
+struct ContactIterationStatistics {
+  int closed = 0;         ///< slave nodes in contact (stick or slip)
+  int status_changes = 0; ///< nodes whose status changed since the previous iteration
+  int repaired = 0;       ///< nodes paired with another segment
+  int held_closed = 0;    ///< nodes held by the chattering guard
+};
+
+class ContactPair final : public Contribution {
+ public:
+  /// `reference`: reference coordinates of all nodes (must outlive the pair).
+  /// `first_multiplier`: global index of the first of multipliers_per_slave() ×
+  /// slaves multipliers (DofMap::add_multipliers), -1 when there are none.
+  ContactPair(ContactPairSetup setup, const std::vector<Eigen::Vector2d>& reference, int first_multiplier);
+  ~ContactPair() override;
+
+  /// Multipliers per slave node: 1 for HARD (normal force), +1 for friction
+  /// with exact stick (no stick slope or elastic slip given).
+  static int multipliers_per_slave(const PressureOverclosure& law, const std::optional<FrictionData>& friction);
+
+  [[nodiscard]] std::span<const int> dofs() const override { return {}; }
+  void evaluate(const EvaluationState&, LocalSystem&, bool) const override {}
+  bool update_connectivity(const EvaluationState& state) override;
+  Acceptance on_converged(const EvaluationState& state) override;
+  void commit(const EvaluationState& state) override;
+  [[nodiscard]] std::string describe() const override { return setup_.name; }
+
+  /// The per-slave contributions (to be assembled after the pair).
+  [[nodiscard]] std::vector<Contribution*> nodes() const;
+
+  [[nodiscard]] const ContactPairSetup& setup() const { return setup_; }
+  [[nodiscard]] const MasterSurface& surface() const { return surface_; }
+  [[nodiscard]] const ContactSlave& slave(int i) const { return slaves_[static_cast<std::size_t>(i)]; }
+  [[nodiscard]] int n_slaves() const { return static_cast<int>(slaves_.size()); }
+  [[nodiscard]] const std::vector<Eigen::Vector2d>& reference() const { return reference_; }
+  [[nodiscard]] bool exact_stick() const;
+  [[nodiscard]] double mu() const { return setup_.friction ? setup_.friction->mu : 0.0; }
+
+  /// Per-slave output at the state (status, gap, pressure, friction, pairing).
+  [[nodiscard]] ContactPairValues values(const EvaluationState& state) const;
+  [[nodiscard]] const ContactIterationStatistics& statistics() const { return statistics_; }
+
+ private:
+  void set_pairing(ContactSlave& s, const ContactPairing& p);
+  void start_attempt(const EvaluationState& state);
+
+  ContactPairSetup setup_;
+  const std::vector<Eigen::Vector2d>& reference_;
+  MasterSurface surface_;
+  std::vector<ContactSlave> slaves_;
+  std::vector<std::unique_ptr<ContactNode>> nodes_;
+  std::vector<Eigen::Vector2d> positions_;  ///< current positions by node index (master nodes kept current)
+  bool searched_once_ = false;
+  double attempt_time_ = -1, attempt_dt_ = -1;
+  int releases_ = 0;  ///< chattering-guard releases in this attempt
+  ContactIterationStatistics statistics_;
+};
+
+}  // namespace tether

@@ -1,0 +1,45 @@
+#include "tether/contact/pressure_overclosure.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace tether {
+
+ContactPressure contact_pressure(const PressureOverclosure& law, double h) {
+  switch (law.law) {
+    case PressureOverclosure::Law::Hard:
+      throw std::invalid_argument("contact_pressure: HARD contact has no pressure function");
+    case PressureOverclosure::Law::Linear: {
+      const double x = h + law.c0;
+      if (x <= 0) return {};
+      return {law.stiffness * x, law.stiffness};
+    }
+    case PressureOverclosure::Law::Exponential: {
+      const double x = h / law.c0 + 1;  // 0 at h = -c0, 1 at h = 0
+      if (x <= 0) return {};
+      const double scale = law.p0 / (std::numbers::e - 1);
+      const double ex = std::exp(x);
+      return {scale * x * (ex - 1), scale * (ex - 1 + x * ex) / law.c0};
+    }
+    case PressureOverclosure::Law::Tabular: {
+      const auto& t = law.table;  // (pressure, overclosure), overclosure increasing
+      const std::size_t n = t.size();
+      auto segment = [&](std::size_t i) {  // line through t[i], t[i+1]
+        const double slope = (t[i + 1].first - t[i].first) / (t[i + 1].second - t[i].second);
+        return ContactPressure{t[i].first + slope * (h - t[i].second), slope};
+      };
+      if (h <= t.front().second) {
+        if (t.front().first == 0) return {};
+        const ContactPressure c = segment(0);
+        return c.p > 0 ? c : ContactPressure{};
+      }
+      for (std::size_t i = 0; i + 1 < n; ++i)
+        if (h <= t[i + 1].second) return segment(i);
+      return segment(n - 2);
+    }
+  }
+  return {};
+}
+
+}  // namespace tether

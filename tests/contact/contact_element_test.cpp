@@ -1,0 +1,207 @@
+// The node-to-segment contact element: tangent against finite differences in
+// every branch (HARD closed/open, soft laws, friction stick/slip with exact
+// and penalty stick, linear and quadratic masters), complementarity residuals
+// and the pressure-overclosure laws.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "support/tangent_check.hpp"
+#include "tether/contact/contact_pair.hpp"
+#include "tether/contact/pressure_overclosure.hpp"
+
+namespace tether {
+namespace {
+
+using testing::tangent_error;
+
+enum class Master { Linear, Quadratic };
+enum class Friction { None, Exact, Slope, ElasticSlip };
+
+/// A slave node (node 0) over a master surface: two straight segments
+/// (nodes 1-2-3, top faces of a body below y = 0) or one curved 3-node segment.
+struct Fixture {
+  std::vector<Eigen::Vector2d> reference;
+  std::unique_ptr<ContactPair> pair;
+  Eigen::VectorXd u, u_start;
+  int n_disp = 0;
+
+  Fixture(Master master, PressureOverclosure law, Friction friction, double mu = 0.3) {
+    ContactPairSetup setup;
+    setup.name = "TEST";
+    if (master == Master::Linear) {
+      reference = {{0.3, 0.2}, {2.0, 0.0}, {0.0, 0.0}, {-2.0, 0.0}};
+      setup.master_faces = {{1, 2}, {2, 3}};
+      setup.master_face_labels = {{1, 3}, {2, 3}};
+    } else {
+      reference = {{0.3, 0.2}, {1.0, 0.0}, {-1.0, 0.0}, {0.0, 0.15}};
+      setup.master_faces = {{1, 2, 3}};
+      setup.master_face_labels = {{1, 3}};
+    }
+    setup.slave_nodes = {0};
+    setup.slave_area = {0.7};
+    setup.law = law;
+    if (friction != Friction::None) {
+      FrictionData f;
+      f.mu = mu;
+      if (friction == Friction::Slope) f.stick_slope = 2.0;
+      if (friction == Friction::ElasticSlip) f.elastic_slip = 0.05;
+      setup.friction = f;
+    }
+    setup.search_radius = 5;
+    setup.complementarity_stiffness = 1.5;
+    n_disp = 2 * static_cast<int>(reference.size());
+    const int per = ContactPair::multipliers_per_slave(setup.law, setup.friction);
+    pair = std::make_unique<ContactPair>(setup, reference, per > 0 ? n_disp : -1);
+    u.setZero(n_disp + per);
+    u_start.setZero(n_disp + per);
+  }
+
+  EvaluationState state() const { return EvaluationState{u, u_start, 1.0, 1.0, 1.0, true}; }
+  ContactNode& node() const { return *static_cast<ContactNode*>(pair->nodes().front()); }
+  /// Moves the slave to (x, y) at the end of the increment, from (x0, y0) at its start.
+  void place(double x0, double y0, double x, double y) {
+    u_start[0] = x0 - reference[0].x(), u_start[1] = y0 - reference[0].y();
+    u[0] = x - reference[0].x(), u[1] = y - reference[0].y();
+    // Master nodes moved a little, so no derivative is trivially zero.
+    for (int k = 2; k < n_disp; ++k) u[k] = 0.013 * std::sin(3.1 * k);
+    pair->update_connectivity(state());
+  }
+};
+
+PressureOverclosure hard() { return {}; }
+PressureOverclosure linear_law() {
+  PressureOverclosure p;
+  p.law = PressureOverclosure::Law::Linear;
+  p.stiffness = 40;
+  p.c0 = 0.01;
+  return p;
+}
+PressureOverclosure exponential_law() {
+  PressureOverclosure p;
+  p.law = PressureOverclosure::Law::Exponential;
+  p.c0 = 0.2;
+  p.p0 = 3;
+  return p;
+}
+
+struct Case {
+  const char* name;
+  Master master;
+  PressureOverclosure law;
+  Friction friction;
+  double lambda_n;  ///< HARD multiplier
+  double lambda_t;  ///< exact-stick multiplier
+  double slave_y;   ///< slave height at the end (penetration < 0)
+  double slip;      ///< x-motion of the slave over the increment
+  ContactStatus expected;
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+class ContactTangent : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ContactTangent, MatchesFiniteDifferences) {
+  const Case& c = GetParam();
+  Fixture f(c.master, c.law, c.friction);
+  f.place(0.3, c.slave_y, 0.3 + c.slip, c.slave_y);
+  int k = f.n_disp;
+  if (c.law.law == PressureOverclosure::Law::Hard) f.u[k++] = c.lambda_n;
+  if (c.friction == Friction::Exact) f.u[k++] = c.lambda_t;
+  EXPECT_EQ(f.node().status(f.state()), c.expected);
+  EXPECT_LT(tangent_error(f.node(), f.state(), 1e-7), 2e-6) << c.name;
+}
+
+// Forces, with c = 1.5, mu = 0.3, area 0.7: the slave penetrates by ~0.03–0.05.
+INSTANTIATE_TEST_SUITE_P(
+    Branches, ContactTangent,
+    ::testing::Values(
+        Case{"hard_closed_linear", Master::Linear, hard(), Friction::None, 0.8, 0, -0.04, 0.02, ContactStatus::Slip},
+        Case{"hard_open_linear", Master::Linear, hard(), Friction::None, -0.2, 0, 0.06, 0.02, ContactStatus::Open},
+        Case{"hard_closed_quadratic", Master::Quadratic, hard(), Friction::None, 0.8, 0, 0.1, 0.02,
+             ContactStatus::Slip},
+        Case{"linear_law", Master::Linear, linear_law(), Friction::None, 0, 0, -0.03, 0.02, ContactStatus::Slip},
+        Case{"exponential_law_quadratic", Master::Quadratic, exponential_law(), Friction::None, 0, 0, 0.12, 0.02,
+             ContactStatus::Slip},
+        Case{"exact_stick", Master::Linear, hard(), Friction::Exact, 0.8, 0.05, -0.04, 0.01, ContactStatus::Stick},
+        Case{"exact_slip", Master::Linear, hard(), Friction::Exact, 0.8, 0.5, -0.04, 0.05, ContactStatus::Slip},
+        Case{"exact_slip_negative", Master::Quadratic, hard(), Friction::Exact, 0.8, -0.5, 0.1, -0.05,
+             ContactStatus::Slip},
+        Case{"exact_open", Master::Linear, hard(), Friction::Exact, -0.3, 0.1, 0.06, 0.05, ContactStatus::Open},
+        Case{"slope_stick", Master::Linear, hard(), Friction::Slope, 0.8, 0, -0.04, 0.01, ContactStatus::Stick},
+        Case{"slope_slip", Master::Quadratic, hard(), Friction::Slope, 0.8, 0, 0.1, 0.3, ContactStatus::Slip},
+        Case{"elastic_slip_stick", Master::Linear, hard(), Friction::ElasticSlip, 0.8, 0, -0.04, 0.01,
+             ContactStatus::Stick},
+        Case{"elastic_slip_slip", Master::Linear, hard(), Friction::ElasticSlip, 0.8, 0, -0.04, 0.2,
+             ContactStatus::Slip},
+        Case{"soft_law_friction_slip", Master::Linear, linear_law(), Friction::Slope, 0, 0, -0.03, 0.3,
+             ContactStatus::Slip},
+        Case{"soft_law_friction_stick", Master::Quadratic, exponential_law(), Friction::ElasticSlip, 0, 0, 0.12,
+             0.001, ContactStatus::Stick}),
+    [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
+TEST(ContactNode, HardResidualIsTheComplementarityFunction) {
+  Fixture f(Master::Linear, hard(), Friction::None);
+  f.place(0.3, 0.2, 0.3, -0.04);  // penetrates by 0.04
+  const auto dofs = f.node().dofs();
+  LocalSystem out;
+  out.reset(static_cast<Eigen::Index>(dofs.size()));
+  f.u[f.n_disp] = 0.0;  // λ - c g = 0.06 > 0: closed, the row is -g
+  f.node().evaluate(f.state(), out, false);
+  const double g = out.residual[out.residual.size() - 1];
+  f.u[f.n_disp] = -1.0;  // λ - c g < 0: open, the row is -λ/c
+  out.reset(static_cast<Eigen::Index>(dofs.size()));
+  f.node().evaluate(f.state(), out, false);
+  EXPECT_NEAR(out.residual[out.residual.size() - 1], 1.0 / 1.5, 1e-15);
+  // The gap of the moved master: the slave is below the surface.
+  EXPECT_GT(g, 0.0);
+  EXPECT_LT(g, 0.1);
+}
+
+TEST(ContactNode, SlaveBeyondAnOpenEndIsFree) {
+  Fixture f(Master::Linear, hard(), Friction::None);
+  f.place(3.0, -0.01, 3.0, -0.01);  // right of the surface's end at x = 2, slightly below
+  EXPECT_FALSE(f.pair->slave(0).pairing.found());
+  EXPECT_EQ(f.node().dofs().size(), 3u);  // slave x, y and its multiplier only
+  EXPECT_EQ(f.node().status(f.state()), ContactStatus::Open);
+}
+
+TEST(ContactNode, ForceOnTheSlaveIsNormalForceAlongTheOutwardNormal) {
+  Fixture f(Master::Linear, linear_law(), Friction::None);
+  f.u.setZero();
+  f.u_start.setZero();
+  f.u[1] = -0.22;  // slave at (0.3, -0.02): overclosure 0.02
+  f.pair->update_connectivity(f.state());
+  const ContactNodeValues v = f.node().values(f.state());
+  EXPECT_NEAR(v.gap, -0.02, 1e-14);
+  EXPECT_NEAR(v.pressure, 40 * (0.02 + 0.01), 1e-12);
+  EXPECT_NEAR(v.normal_force, 0.7 * 40 * 0.03, 1e-12);
+  EXPECT_NEAR(v.force.y(), v.normal_force, 1e-12);
+  EXPECT_NEAR(v.force.x(), 0, 1e-14);
+  EXPECT_EQ(v.master_element, 1);
+}
+
+TEST(PressureOverclosureLaw, ValuesAndSlopes) {
+  const PressureOverclosure e = exponential_law();
+  EXPECT_NEAR(contact_pressure(e, 0).p, 3.0, 1e-14);         // p0 at zero clearance
+  EXPECT_EQ(contact_pressure(e, -0.2).p, 0.0);               // zero at clearance c0
+  EXPECT_NEAR(contact_pressure(e, -0.2 + 1e-9).dp_dh, 0, 1e-6);  // C¹ there
+  PressureOverclosure t;
+  t.law = PressureOverclosure::Law::Tabular;
+  t.table = {{0, 0}, {10, 0.1}, {50, 0.2}};
+  EXPECT_EQ(contact_pressure(t, -1).p, 0.0);
+  EXPECT_NEAR(contact_pressure(t, 0.05).p, 5, 1e-12);
+  EXPECT_NEAR(contact_pressure(t, 0.15).p, 30, 1e-12);
+  EXPECT_NEAR(contact_pressure(t, 0.3).p, 90, 1e-12);  // extended with the last slope
+  for (const PressureOverclosure& law : {e, t, linear_law()})
+    for (double h : {-0.15, -0.005, 0.03, 0.12, 0.25}) {
+      const double d = 1e-7;
+      const double fd = (contact_pressure(law, h + d).p - contact_pressure(law, h - d).p) / (2 * d);
+      EXPECT_NEAR(contact_pressure(law, h).dp_dh, fd, 1e-5 * std::max(1.0, std::abs(fd))) << h;
+    }
+  EXPECT_THROW(contact_pressure(hard(), 0.1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tether
