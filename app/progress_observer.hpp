@@ -28,6 +28,10 @@ class ProgressObserver final : public AnalysisObserver {
     msg_.print("    iteration {:2d}: max force residual {:.6e}  max constraint residual {:.6e}  "
                "max correction {:.6e}  max increment {:.6e}\n",
                iteration, n.force_residual, n.multiplier_residual, n.correction, n.increment);
+    if (n.contact_closed >= 0)
+      msg_.print("                  contact: {} closed, {} changed status, {} re-paired{}\n", n.contact_closed,
+                 n.contact_changes, n.contact_repaired,
+                 n.contact_held > 0 ? fmt::format(", {} held closed (chattering guard)", n.contact_held) : "");
   }
 
   void on_increment(const IncrementReport& r) override {

@@ -22,6 +22,12 @@ struct IterationNorms {
   double correction = 0;           ///< max |du| of the last correction (displacements)
   double increment = 0;            ///< max |u - u_start| over displacement dofs
   double previous_force_residual = 0;  ///< of the previous iteration (0 on the first)
+  /// Contact (summed over the pairs; contact_closed < 0 when the model has none),
+  /// as found by the search before this iteration's residual:
+  int contact_closed = -1;    ///< slave nodes in contact
+  int contact_changes = 0;    ///< nodes whose status (open/stick/slip) changed since the previous iteration
+  int contact_repaired = 0;   ///< nodes paired with another master segment
+  int contact_held = 0;       ///< nodes held closed by the chattering guard
 };
 
 class ConvergenceCriteria {

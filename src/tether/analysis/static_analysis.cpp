@@ -159,21 +159,38 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     int iterations = 0;
     for (int pass = 0; pass < kMaxAcceptancePasses; ++pass) {
       outcome = newton.solve(problem, averaged_force, n_averaged,
-                             [this](int it, const IterationNorms& n) { observer_.on_iteration(it, n); });
+                             [&](int it, const IterationNorms& n) {
+                               if (disc.contact_pairs().empty()) return observer_.on_iteration(it, n);
+                               IterationNorms with_contact = n;
+                               with_contact.contact_closed = 0;
+                               for (const auto& pair : disc.contact_pairs()) {
+                                 const ContactIterationStatistics& c = pair->statistics();
+                                 with_contact.contact_closed += c.closed;
+                                 with_contact.contact_changes += c.status_changes;
+                                 with_contact.contact_repaired += c.repaired;
+                                 with_contact.contact_held += c.held_closed;
+                               }
+                               observer_.on_iteration(it, with_contact);
+                             });
       iterations += outcome.iterations;
       if (outcome.status != NewtonOutcome::Status::Converged) break;
       bool again = false;
+      std::string iterating;
       const EvaluationState s = problem.state();
       try {
-        for (Contribution* c : contributions) again = (c->on_converged(s) == Acceptance::Iterate) || again;
+        for (Contribution* c : contributions)
+          if (c->on_converged(s) == Acceptance::Iterate) {
+            if (!again) iterating = c->describe();
+            again = true;
+          }
       } catch (const ModelError& e) {
         outcome.status = NewtonOutcome::Status::ElementFailure;
         outcome.message = e.what();
         break;
       }
       if (!again) break;
-      observer_.on_message("augmented Lagrangian: multipliers updated (Uzawa update " + std::to_string(pass + 1) +
-                           "), Newton pass " + std::to_string(pass + 2));
+      observer_.on_message("converged state not accepted by " + iterating + " (augmented Lagrangian update or "
+                           "contact nodes released by the chattering guard): Newton pass " + std::to_string(pass + 2));
     }
     summary.iterations += iterations;
 
