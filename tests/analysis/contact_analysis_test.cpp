@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include "run_deck.hpp"
@@ -65,6 +66,89 @@ TEST(ContactAnalysis, MatchingBlocksTransmitUniformPressureExactly) {
     EXPECT_NEAR(run.reaction_sum("BASE", 1), 10.0, 1e-9);
     EXPECT_NEAR(c.total_force.x(), 0.0, 1e-10);
   }
+}
+
+/// Top block pressed by `p`, then its top edge pushed in x by `slide` (step 2,
+/// in `increments` equal increments); every node of the bottom block is fixed
+/// (a rigid flat), so the contact normal stays vertical.
+std::string sliding_block(double p, double slide, int increments, const std::string& interaction) {
+  const Block top{0, 1, 1, 1.5, 4, 1, false, 1, 1, "TOP"};
+  const Block bottom{0, 2, 0, 1, 6, 2, false, 1001, 1001, "BOTTOM"};
+  std::ostringstream d;
+  d.precision(17);
+  top.write(d);
+  bottom.write(d);
+  top.write_surface(d, "SLAVE", 0);
+  bottom.write_surface(d, "MASTER", 2);
+  d << "*SURFACE INTERACTION, NAME=I\n" << interaction;
+  d << "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nSLAVE, MASTER\n";
+  d << "*MATERIAL, NAME=M\n*ELASTIC\n" << kE << ", " << kNu << "\n";
+  d << "*SOLID SECTION, ELSET=TOP, MATERIAL=M\n*SOLID SECTION, ELSET=BOTTOM, MATERIAL=M\n";
+  d << "*NSET, NSET=BASE, GENERATE\n" << bottom.grid(0, 0) << ", " << bottom.grid(bottom.nx, bottom.ny) << "\n";
+  d << "*NSET, NSET=PUSHED\n";
+  for (int i = 0; i <= top.nx; ++i) d << top.grid(i, top.ny) << "\n";
+  d << "*BOUNDARY\nBASE, 1, 2\nPUSHED, 1\n";
+  d << "*STEP\n*STATIC\n1, 1\n*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n*DLOAD\n";
+  for (int k = 0; k < top.nx; ++k) d << top.element(k, 0) << ", P3, " << p << "\n";
+  d << "*END STEP\n";
+  d << "*STEP, INC=1000\n*STATIC, DIRECT\n" << 1.0 / increments << ", 1\n*CONTROLS, PARAMETERS=FIELD\n1e-10, 1e-10\n";
+  d << "*BOUNDARY\nPUSHED, 1, 1, " << slide << "\n*END STEP\n";
+  return d.str();
+}
+
+struct FrictionRun {
+  double fx = 0, fy = 0;  ///< reaction of the pushed edge in x, contact normal force total
+  int stick = 0, slip = 0, open = 0;
+  double friction = 0;    ///< sum of the tangential contact forces
+};
+
+FrictionRun friction_after(const tether::testing::Run& run, std::size_t result) {
+  FrictionRun f;
+  const IncrementResults& r = run.recorder.results.at(result);
+  for (int n : run.model.node_sets.at("PUSHED")) f.fx += r.reaction[n][0];
+  for (const ContactNodeValues& v : r.contact.at(0).nodes) {
+    f.fy += v.normal_force;
+    f.friction += v.tangential_force;
+    f.stick += v.status == ContactNodeValues::Status::Stick;
+    f.slip += v.status == ContactNodeValues::Status::Slip;
+    f.open += v.status == ContactNodeValues::Status::Open;
+  }
+  return f;
+}
+
+TEST(ContactAnalysis, BlockSticksBelowMuNAndSlidesAtMuN) {
+  const double mu = 0.3, p = 10;
+  for (const char* friction : {"*FRICTION\n0.3\n", "*FRICTION\n0.3, 20000\n"}) {
+    const auto run = run_deck_text(sliding_block(p, 0.05, 50, friction));
+    ASSERT_TRUE(run.summary.completed) << run.summary.message;
+    // Step 1 (pressure, top edge held): no tangential load, all closed.
+    const FrictionRun pressed = friction_after(run, 0);
+    EXPECT_NEAR(pressed.fy, p * 1.0, 1e-9);
+    EXPECT_EQ(pressed.open, 0);
+    // First increment of the push: the block sticks (T well below mu N).
+    const FrictionRun start = friction_after(run, 1);
+    EXPECT_LT(std::abs(start.fx), 0.5 * mu * start.fy) << friction;
+    EXPECT_GT(start.stick, 0) << friction;
+    EXPECT_NEAR(start.friction, -start.fx, 1e-9 * p) << friction;
+    // End: the whole interface slides; the push force is mu N.
+    const FrictionRun end = friction_after(run, run.recorder.results.size() - 1);
+    // The push tips the block: its trailing corner may lift; every other node slides.
+    EXPECT_LE(end.open, 1) << friction;
+    EXPECT_EQ(end.slip + end.open, 5) << friction << ": " << end.stick << " nodes stick";
+    EXPECT_NEAR(std::abs(end.fx), mu * end.fy, 1e-6 * mu * end.fy) << friction;
+    EXPECT_NEAR(end.fy, p * 1.0, 1e-6 * p) << friction;
+    // Sliding dissipates mu N times the slip.
+    EXPECT_GT(run.last().contact.at(0).dissipation, 0.0) << friction;
+  }
+}
+
+TEST(ContactAnalysis, FrictionlessBlockNeedsNoPush) {
+  const auto run = run_deck_text(sliding_block(10, 0.05, 5, ""));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const FrictionRun end = friction_after(run, run.recorder.results.size() - 1);
+  EXPECT_NEAR(end.fx, 0.0, 1e-9);
+  EXPECT_NEAR(end.fy, 10.0, 1e-9);
+  EXPECT_EQ(end.slip, 5);
 }
 
 }  // namespace

@@ -70,3 +70,49 @@ TEST(Assembler, PropagatesContributionFailure) {
   SparseMatrix k;
   EXPECT_THROW(assembler.assemble(EvaluationState{u, u}, r, &k), std::runtime_error);
 }
+
+namespace {
+
+/// A spring whose second end jumps to another unknown on update_connectivity()
+/// (a re-paired contact node): same number of entries, different positions.
+class Rewiring final : public Contribution {
+ public:
+  Rewiring(int a, int b, int later) : dofs_{a, b}, later_(later) {}
+  std::span<const int> dofs() const override { return dofs_; }
+  void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override {
+    const double f = s.u[dofs_[0]] - s.u[dofs_[1]];
+    out.residual << f, -f;
+    if (need_tangent) out.tangent << 1, -1, -1, 1;
+  }
+  bool update_connectivity(const EvaluationState&) override {
+    if (dofs_[1] == later_) return false;
+    dofs_[1] = later_;
+    return true;
+  }
+  std::string describe() const override { return "rewiring spring"; }
+
+ private:
+  std::vector<int> dofs_;
+  int later_;
+};
+
+}  // namespace
+
+TEST(Assembler, TangentFollowsAPatternChangeOfEqualSize) {
+  // Unknowns 0..3 in a chain of unit springs 0-1 and 2-3, plus one spring
+  // 1-2 that moves to 1-3: the pattern keeps its number of entries.
+  Spring s01(0, 1, 1.0), s23(2, 3, 1.0);
+  Rewiring moving(1, 2, 3);
+  Assembler assembler({&s01, &s23, &moving}, EquationMap(std::vector<bool>(4, false)));
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(4), r;
+  const EvaluationState state{u, u};
+  SparseMatrix k;
+  assembler.assemble(state, r, &k);
+  const auto nnz = k.nonZeros();
+  ASSERT_TRUE(assembler.update_connectivity(state));
+  EXPECT_EQ(assembler.pattern().nonZeros(), nnz);
+  assembler.assemble(state, r, &k);  // the same matrix object, reused
+  Eigen::MatrixXd expected(4, 4);
+  expected << 1, -1, 0, 0, -1, 2, 0, -1, 0, 0, 1, -1, 0, -1, -1, 2;
+  EXPECT_LT((Eigen::MatrixXd(k) - expected).norm(), 1e-15) << Eigen::MatrixXd(k);
+}

@@ -210,6 +210,9 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
 
     if (report.converged) {
       const EvaluationState s = problem.state();
+      // Results first: they describe the increment (contact slip since the
+      // last converged state), which commit() then makes history.
+      IncrementResults results = build_results(disc, s, problem.full_residual(), assembler.equations());
       for (Contribution* c : contributions) c->commit(s);
       step_time = t_new;
       total_time_ = total_new;
@@ -219,7 +222,6 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       ++n_averaged;
       attempt = 1;
 
-      IncrementResults results = build_results(disc, s, problem.full_residual(), assembler.equations());
       results.step = index + 1;
       results.increment = increment;
       results.step_time = step_time;

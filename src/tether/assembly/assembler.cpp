@@ -167,8 +167,18 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   const auto t0 = std::chrono::steady_clock::now();
   residual.setZero(equations_.n_dofs());
   if (tangent) {
-    if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows())
-      *tangent = pattern_;
+    // A re-paired contact node can move entries without changing their
+    // number: compare the structure, not only its size.
+    const auto same_structure = [&] {
+      if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows() ||
+          tangent->cols() != pattern_.cols() || !tangent->isCompressed())
+        return false;
+      const auto n = static_cast<std::size_t>(pattern_.cols() + 1);
+      const auto nnz = static_cast<std::size_t>(pattern_.nonZeros());
+      return std::equal(pattern_.outerIndexPtr(), pattern_.outerIndexPtr() + n, tangent->outerIndexPtr()) &&
+             std::equal(pattern_.innerIndexPtr(), pattern_.innerIndexPtr() + nnz, tangent->innerIndexPtr());
+    };
+    if (!same_structure()) *tangent = pattern_;
     std::fill_n(tangent->valuePtr(), tangent->nonZeros(), 0.0);
   }
   double* values = tangent ? tangent->valuePtr() : nullptr;

@@ -294,8 +294,10 @@ ContactNodeValues ContactNode::values(const EvaluationState& state) const {
   v.tangential_force = p.tangential_force;
   v.shear = s.area > 0 ? p.tangential_force / s.area : 0.0;
   v.slip = p.slip;
-  v.total_slip = s.total_slip;
-  v.dissipation = s.dissipation;
+  // History up to the last converged increment plus this increment's slip.
+  const bool slipping = p.status == ContactStatus::Slip && pair_.mu() > 0;
+  v.total_slip = s.total_slip + (slipping ? std::abs(p.slip) : 0.0);
+  v.dissipation = s.dissipation + (slipping ? p.tangential_force * p.slip : 0.0);
   v.force = p.normal_force * p.normal - p.tangential_force * p.tangent;
   return v;
 }

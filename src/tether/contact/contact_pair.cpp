@@ -12,6 +12,10 @@ namespace {
 
 /// Times the chattering guard may release held nodes in one increment attempt.
 constexpr int kMaxReleases = 10;
+/// Extension of an open end of the master surface, as a fraction of the end segment's length.
+constexpr double kEndExtension = 0.05;
+/// Hand-over band in ξ (segment length 2) within which a slave keeps its segment during Newton.
+constexpr double kHandOverBand = 0.02;
 
 Eigen::Vector2d position(const std::vector<Eigen::Vector2d>& reference, const Eigen::VectorXd& u, int node) {
   return reference[static_cast<std::size_t>(node)] + Eigen::Vector2d(u[kDofsPerNode * node], u[kDofsPerNode * node + 1]);
@@ -114,8 +118,37 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     ContactSlave& s = slaves_[i];
     ContactPairing p = pairings[i];
-    // Beyond an open end of the master surface there is no contact.
-    if (p.found() && p.at_corner && surface_.neighbours(p.segment, p.xi < 0 ? 0 : 1).empty()) p = ContactPairing{};
+    // Beyond an open end of the master surface there is no contact, except
+    // within a short extension of the end segment (kEndExtension of its
+    // length), so that a slave node sitting on the end is not released by
+    // round-off or a slight outward motion (ABAQUS extends its master
+    // surfaces in the same spirit).
+    if (p.found() && p.at_corner && surface_.neighbours(p.segment, p.xi < 0 ? 0 : 1).empty()) {
+      std::vector<Eigen::Vector2d> y;
+      for (int n : surface_.segment_nodes(p.segment)) y.push_back(positions_[static_cast<std::size_t>(n)]);
+      const SegmentGeometry g = segment_geometry(slave_positions[i], y, ContactDerivatives::none);
+      if (g.projection.status == ProjectionStatus::converged && std::abs(g.projection.xi) <= 1 + 2 * kEndExtension) {
+        p.at_corner = false;
+        p.xi = g.projection.xi;
+        p.gap = g.gap;
+      } else {
+        p = ContactPairing{};
+      }
+    }
+    // Hysteresis during Newton: a slave that crosses a master node by less
+    // than kHandOverBand keeps its segment (extended past its end) until the
+    // next increment, so it cannot flip between two segments meeting at a
+    // kink, one per iteration.
+    if (!new_attempt && p.segment != s.pairing.segment && s.pairing.found() && !s.pairing.at_corner) {
+      std::vector<Eigen::Vector2d> y;
+      for (int n : surface_.segment_nodes(s.pairing.segment)) y.push_back(positions_[static_cast<std::size_t>(n)]);
+      const SegmentGeometry g = segment_geometry(slave_positions[i], y, ContactDerivatives::none);
+      if (g.projection.status == ProjectionStatus::converged && std::abs(g.projection.xi) <= 1 + kHandOverBand) {
+        p = s.pairing;
+        p.xi = g.projection.xi;
+        p.gap = g.gap;
+      }
+    }
     if (p.segment != s.pairing.segment) {
       set_pairing(s, p);
       changed = true;
@@ -181,10 +214,8 @@ void ContactPair::commit(const EvaluationState& state) {
       s.committed_tangential_force = 0;
       continue;
     }
-    if (v.status == ContactNodeValues::Status::Slip && mu() > 0) {
-      s.total_slip += std::abs(v.slip);
-      s.dissipation += v.tangential_force * v.slip;
-    }
+    s.total_slip = v.total_slip;
+    s.dissipation = v.dissipation;
     s.committed_tangential_force = v.tangential_force;
     s.committed_segment = s.pairing.segment;
     s.committed_xi = v.xi;

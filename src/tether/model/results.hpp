@@ -55,8 +55,8 @@ struct ContactNodeValues {
   double tangential_force = 0;  ///< T [force], along the master tangent, opposing the slip Δs
   double shear = 0;             ///< T / tributary area [force/area]
   double slip = 0;              ///< Δs of the increment along the master tangent [length]
-  double total_slip = 0;        ///< Σ |Δs| of the slipping increments [length]
-  double dissipation = 0;       ///< Σ T Δs of the slipping increments [force × length]
+  double total_slip = 0;        ///< Σ |Δs| of the slipping increments, this one included [length]
+  double dissipation = 0;       ///< Σ T Δs of the slipping increments, this one included [force × length]
   Eigen::Vector2d force{0, 0};  ///< force of the master on the slave node (N n - T t) [force]
 };
 
