@@ -16,6 +16,12 @@ std::vector<Eigen::Vector2d> coordinates_of(const Model& model, const std::vecto
   return x;
 }
 
+PressureOverclosure::Law interaction_law(const Model& model, const ContactPairData& pair) {
+  for (const SurfaceInteraction& i : model.interactions)
+    if (i.name == pair.interaction) return i.behavior.law;
+  return PressureOverclosure::Law::Hard;
+}
+
 }  // namespace
 
 Discretization::Discretization(const Model& model) : model_(model), dofs_(model.node_ids) {
@@ -40,8 +46,20 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
     length_scale_ = size;
   }
 
-  for (const ContactPairData& pair : model.contact_pairs)
+  for (const ContactPairData& pair : model.contact_pairs) {
+    // Two-pass HARD contact constrains each node against the other surface
+    // and back: where nodes coincide the constraints repeat each other.
+    for (const ContactPairData& other : model.contact_pairs)
+      if (&other != &pair && other.slave == pair.master && other.master == pair.slave &&
+          interaction_law(model, pair) == PressureOverclosure::Law::Hard &&
+          interaction_law(model, other) == PressureOverclosure::Law::Hard)
+        throw ModelError("the *CONTACT PAIRs at " + pair.where.str() + " and " + other.where.str() +
+                         " make a two-pass HARD contact of " + pair.slave + " and " + pair.master +
+                         ": exact constraints in both directions over-constrain the interface (repeated where "
+                         "nodes coincide); use one pass (slave = the finer surface) or a soft law "
+                         "(PRESSURE-OVERCLOSURE=LINEAR/EXPONENTIAL) for two-pass");
     contact_pairs_.push_back(make_contact_pair(model, pair, model.coords, dofs_));
+  }
 
   for (const ConstraintData& data : model.constraints) {
     if (data.kind == ConstraintData::Kind::User) {

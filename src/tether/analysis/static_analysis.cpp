@@ -249,7 +249,13 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                          "or *BOUNDARY conditions, or its gradient vanishes on the free dofs; remove it, or "
                          "regularise it with EPSILON"
                        : " — the model is not restrained there (a rigid-body mode, or a dof that no element "
-                         "or constraint stiffens); add *BOUNDARY conditions or check the connectivity"));
+                         "or constraint stiffens); add *BOUNDARY conditions or check the connectivity" +
+                             (disc.contact_pairs().empty()
+                                  ? std::string()
+                                  : std::string("; a body held only by contact floats while its contact is "
+                                                "open: let it start touching (a gap of exactly 0 counts as "
+                                                "closed), close initial gaps with ADJUST= on *CONTACT PAIR, or "
+                                                "move it into contact with a prescribed displacement first"))));
     if (step.direct) return stop(outcome.message + " with fixed increments (*STATIC, DIRECT)");
     if (attempt > controls.max_cutbacks)
       return stop(outcome.message + " after " + std::to_string(controls.max_cutbacks) + " cut-backs");

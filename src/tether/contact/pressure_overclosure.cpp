@@ -12,7 +12,7 @@ ContactPressure contact_pressure(const PressureOverclosure& law, double h) {
       throw std::invalid_argument("contact_pressure: HARD contact has no pressure function");
     case PressureOverclosure::Law::Linear: {
       const double x = h + law.c0;
-      if (x <= 0) return {};
+      if (x < 0) return {};  // touching (x = 0) already has the slope K: a body resting on another is held
       return {law.stiffness * x, law.stiffness};
     }
     case PressureOverclosure::Law::Exponential: {
@@ -29,7 +29,7 @@ ContactPressure contact_pressure(const PressureOverclosure& law, double h) {
         const double slope = (t[i + 1].first - t[i].first) / (t[i + 1].second - t[i].second);
         return ContactPressure{t[i].first + slope * (h - t[i].second), slope};
       };
-      if (h <= t.front().second) {
+      if (h < t.front().second || (h == t.front().second && t.front().first > 0)) {
         if (t.front().first == 0) return {};
         const ContactPressure c = segment(0);
         return c.p > 0 ? c : ContactPressure{};

@@ -6,7 +6,7 @@
 /// contact pressure p(h) [force/area] >= 0. HARD contact has no function: it
 /// is enforced exactly by a multiplier (contact_node.hpp).
 ///
-/// - LINEAR (CalculiX `K, σ∞, c0`): p = K (h + c0) for h > -c0, else 0
+/// - LINEAR (CalculiX `K, σ∞, c0`): p = K (h + c0) for h >= -c0, else 0
 ///   (c0 = 0 unless given). σ∞ (tension at large clearance) is not modelled:
 ///   a nonzero σ∞ is refused where the pair is built.
 /// - EXPONENTIAL (ABAQUS `c0, p0`): p = p0/(e - 1) (h/c0 + 1)(exp(h/c0 + 1) - 1)
@@ -14,6 +14,8 @@
 /// - TABULAR: piecewise linear through (p_i, h_i); p = 0 left of h_1 when
 ///   p_1 = 0, otherwise extended with the first slope; extended with the last
 ///   slope right of the table.
+/// At the point where the pressure starts (h = -c0, or h_1) the slope is the
+/// one on the closed side, so bodies that start exactly touching are held.
 
 #include "tether/model/contact_data.hpp"
 
