@@ -172,6 +172,56 @@ S, M
   EXPECT_TRUE(run.recorder.results.empty());
 }
 
+TEST(ContactAnalysis, AdjustClosesAnInitialGapStressFree) {
+  // The floating deck above with ADJUST=0.02: the hovering face is moved onto
+  // the bottom element before the analysis, so the force is carried at once.
+  std::string deck = R"(*NODE
+1, 0, 0
+2, 1, 0
+3, 1, 1
+4, 0, 1
+5, 0, 1.01
+6, 1, 1.01
+7, 1, 2
+8, 0, 2
+*ELEMENT, TYPE=CPE4, ELSET=E
+1, 1, 2, 3, 4
+2, 5, 6, 7, 8
+*SURFACE, NAME=S
+2, S1
+*SURFACE, NAME=M
+1, S3
+*SURFACE INTERACTION, NAME=I
+*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE, ADJUST=0.02
+S, M
+*MATERIAL, NAME=M
+*ELASTIC
+1000, 0.3
+*SOLID SECTION, ELSET=E, MATERIAL=M
+*BOUNDARY
+1, 1, 2
+2, 2
+5, 1
+*STEP
+*STATIC
+*CLOAD
+7, 2, -1.
+8, 2, -1.
+*END STEP
+)";
+  std::vector<DeckWarning> notes;
+  tether::testing::Run run;
+  run.model = read_deck_string(deck, "adjust.inp", &notes);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].message.find("moved 2 slave node(s)"), std::string::npos) << notes[0].message;
+  EXPECT_DOUBLE_EQ(run.model.coords[run.node(5)].y(), 1.0);
+  EXPECT_DOUBLE_EQ(run.model.coords[run.node(7)].y(), 2.0);  // not a slave node
+  StaticAnalysis analysis(run.model, run.recorder);
+  run.summary = analysis.run();
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  EXPECT_NEAR(pair_values(run).total_force.y(), 2.0, 1e-10);
+}
+
 /// Top block pressed by `p`, then its top edge pushed in x by `slide` (step 2,
 /// in `increments` equal increments); every node of the bottom block is fixed
 /// (a rigid flat), so the contact normal stays vertical.

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tether/contact/contact_search.hpp"
 #include "tether/io/deck_state.hpp"
 #include "tether/io/keyword_handlers.hpp"
+#include "tether/io/model_checks.hpp"
 #include "tether/io/numbers.hpp"
+#include "tether/model/element_type.hpp"
 
 namespace tether::deck {
 
@@ -158,6 +161,57 @@ void handle_contact_output(DeckState& state, const KeywordBlock& block, const Pa
     }
   if (r.variables.empty()) r.variables = {"CSTR", "CDIS"};
   state.step().outputs.push_back(std::move(r));
+}
+
+void apply_contact_adjustments(DeckState& state) {
+  Model& model = state.model;
+  for (const ContactPairData& pair : model.contact_pairs) {
+    if (!(pair.adjust > 0)) continue;
+    const Surface& master = model.surfaces.at(pair.master);
+    const Surface& slave = model.surfaces.at(pair.slave);
+    std::vector<std::vector<int>> faces;
+    double longest = 0;
+    for (const ElementFace& f : master.faces) {
+      const Element& e = model.elements[static_cast<std::size_t>(f.element)];
+      std::vector<int> nodes;
+      for (int local : face_nodes(e.type.shape, f.face))
+        if (local >= 0) nodes.push_back(e.nodes[static_cast<std::size_t>(local)]);
+      longest = std::max(longest, (model.coords[static_cast<std::size_t>(nodes[1])] -
+                                   model.coords[static_cast<std::size_t>(nodes[0])]).norm());
+      faces.push_back(std::move(nodes));
+    }
+    std::vector<int> slave_nodes = slave.nodes;
+    for (const ElementFace& f : slave.faces) {
+      const Element& e = model.elements[static_cast<std::size_t>(f.element)];
+      for (int local : face_nodes(e.type.shape, f.face))
+        if (local >= 0) slave_nodes.push_back(e.nodes[static_cast<std::size_t>(local)]);
+    }
+    std::sort(slave_nodes.begin(), slave_nodes.end());
+    slave_nodes.erase(std::unique(slave_nodes.begin(), slave_nodes.end()), slave_nodes.end());
+    const MasterSurface surface(faces);
+    std::vector<Eigen::Vector2d> points;
+    for (int n : slave_nodes) points.push_back(model.coords[static_cast<std::size_t>(n)]);
+    SearchOptions options;
+    options.search_radius = 2 * longest + pair.adjust;
+    const std::vector<ContactPairing> pairings = find_closest(surface, model.coords, points, options);
+    int moved = 0;
+    double largest = 0;
+    for (std::size_t i = 0; i < slave_nodes.size(); ++i) {
+      const ContactPairing& p = pairings[i];
+      // Nodes within the clearance (and overclosed ones) move onto the surface
+      // along its normal; corner and open-end pairings have no normal: left alone.
+      if (!p.found() || p.at_corner || p.gap > pair.adjust) continue;
+      std::vector<Eigen::Vector2d> y;
+      for (int n : surface.segment_nodes(p.segment)) y.push_back(model.coords[static_cast<std::size_t>(n)]);
+      const SegmentGeometry g = segment_geometry(points[i], y, ContactDerivatives::none);
+      model.coords[static_cast<std::size_t>(slave_nodes[i])] = g.point;
+      largest = std::max(largest, std::abs(g.gap));
+      ++moved;
+    }
+    state.warn(pair.where, "ADJUST=" + std::to_string(pair.adjust) + " moved " + std::to_string(moved) +
+                               " slave node(s) of " + pair.slave + " onto " + pair.master +
+                               " (stress-free; largest move " + std::to_string(largest) + ")");
+  }
 }
 
 }  // namespace tether::deck

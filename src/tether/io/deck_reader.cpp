@@ -71,6 +71,7 @@ Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& de
   if (state.model.steps.empty())
     state.warn({deck_path, 0}, "the deck has no *STEP: nothing will be solved");
   deck::check_model(state);
+  deck::apply_contact_adjustments(state);
   return std::move(state.model);
 }
 

@@ -13,6 +13,12 @@ namespace tether::deck {
 /// axisymmetric elements).
 void check_model(DeckState& state);
 
+/// ADJUST= of *CONTACT PAIR: moves the slave nodes whose gap is at most the
+/// clearance (overclosed ones included) onto the master surface in the
+/// reference configuration, before any element is built (stress-free, as
+/// ABAQUS does), and notes how many moved. In contact_keywords.cpp.
+void apply_contact_adjustments(DeckState& state);
+
 /// Determinant of the isoparametric Jacobian at each corner of `e` (in
 /// corner order), from the reference coordinates of the model.
 std::vector<double> corner_jacobians(const Model& model, const Element& e);
