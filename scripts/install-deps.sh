@@ -1,6 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages tether needs to build, test and compare with CalculiX.
 # Safe to run again: packages already present are skipped by apt-get.
+#
+#   bash scripts/install-deps.sh         what scripts/test.sh and scripts/demo.sh need
+#   bash scripts/install-deps.sh fuzz    the same plus Clang and its libFuzzer/sanitizer
+#                                        runtimes for scripts/fuzz.sh (about 350 MB more,
+#                                        so not installed for everyone)
 set -euo pipefail
 
 packages=(
@@ -11,6 +16,12 @@ packages=(
   gmsh calculix-ccx
   python3 python3-numpy python3-matplotlib python3-meshio python3-vtk9
 )
+for group in "$@"; do
+  case "$group" in
+    fuzz) packages+=(clang-14 libclang-rt-14-dev llvm-14) ;;  # llvm-14: llvm-symbolizer for the reports
+    *) echo "install-deps: unknown group '$group' (known: fuzz)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
