@@ -3,10 +3,18 @@
 A block is a header line `<title> for set <SET> and time <T>` followed by rows
 of whitespace-separated numbers. `read(path)` returns a list of dicts with
 keys title, set, time and rows (lists of floats).
+
+Contact headers are read too: ccx's `<title> for all contact elements and time
+<T>` (`forall` in ccx's CELS header) and `<title> for time <T>` (set ""), and
+tether's `<title> for pair <NAME> and time <T>` (set NAME, e.g.
+`last_block(blocks, "contact state", "SLAVE-MASTER")`).
 """
 import re
 
 _HEADER = re.compile(r"^\s*(?P<title>\S.*?)\s+for\s*set\s+(?P<set>\S+)\s+and\s+time\s+(?P<time>\S+)\s*$")
+_CONTACT_HEADER = re.compile(
+    r"^\s*(?P<title>\S.*?)\s*\bfor\s*(?:pair\s+(?P<set>\S+)\s+and\s+|all\s+contact\s+elements\s+and\s+)?"
+    r"time\s*(?P<time>[-+0-9.]\S*)\s*$")
 
 
 def _number(token):
@@ -19,9 +27,10 @@ def parse(text):
     for number, line in enumerate(text.splitlines(), start=1):
         if not line.strip():
             continue
-        header = _HEADER.match(line)
+        header = _HEADER.match(line) or _CONTACT_HEADER.match(line)
         if header:
-            current = {"title": header["title"], "set": header["set"], "time": _number(header["time"]), "rows": []}
+            current = {"title": header["title"], "set": header["set"] or "", "time": _number(header["time"]),
+                       "rows": []}
             blocks.append(current)
             continue
         if current is None:

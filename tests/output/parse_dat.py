@@ -3,7 +3,9 @@
 
 A block is a header line `<title> for set <SET> and time <T>` (older ccx writes
 `forset` in the strain header) followed by rows of whitespace-separated
-numbers; blank lines are ignored. Fortran `D` exponents are accepted.
+numbers; blank lines are ignored. Fortran `D` exponents are accepted. Contact
+headers `... for all contact elements and time T`, `... for time T` (set "")
+and tether's `... for pair NAME and time T` (set NAME) are blocks too.
 
 Usage: parse_dat.py FILE.dat EXPECTED.json
 EXPECTED.json is a list of blocks, each {"title", "set", "time"} and either
@@ -16,6 +18,11 @@ import re
 import sys
 
 HEADER = re.compile(r"^\s*(?P<title>\S.*?)\s+for\s*set\s+(?P<set>\S+)\s+and\s+time\s+(?P<time>\S+)\s*$")
+# Contact blocks: ccx's "... for all contact elements and time T" ("forall" in the
+# CELS header) and "... for time T" (set ""), tether's "... for pair NAME and time T".
+CONTACT_HEADER = re.compile(
+    r"^\s*(?P<title>\S.*?)\s*\bfor\s*(?:pair\s+(?P<set>\S+)\s+and\s+|all\s+contact\s+elements\s+and\s+)?"
+    r"time\s*(?P<time>[-+0-9.]\S*)\s*$")
 
 
 def to_float(token):
@@ -29,11 +36,11 @@ def parse(text):
     for number, line in enumerate(text.splitlines(), start=1):
         if not line.strip():
             continue
-        header = HEADER.match(line)
+        header = HEADER.match(line) or CONTACT_HEADER.match(line)
         if header:
             current = {
                 "title": header["title"],
-                "set": header["set"],
+                "set": header["set"] or "",
                 "time": to_float(header["time"]),
                 "rows": [],
             }

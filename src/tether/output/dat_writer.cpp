@@ -2,13 +2,18 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
+#include <cmath>
 #include <iterator>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "tether/core/error.hpp"
+#include "tether/fem/shape_functions.hpp"
 #include "tether/output/fortran_format.hpp"
 #include "tether/output/output_schedule.hpp"
 
@@ -24,6 +29,11 @@ double unsigned_zero(double x) { return x + 0.0; }
 bool is_print(const OutputRequest& r) {
   return r.kind == OutputRequest::Kind::NodePrint || r.kind == OutputRequest::Kind::ElementPrint;
 }
+
+bool is_contact_print(const OutputRequest& r) { return r.kind == OutputRequest::Kind::ContactPrint; }
+
+constexpr std::array<std::string_view, 7> kContactPrintVariables = {"CSTR", "CDIS", "CSTRESS", "CDISP",
+                                                                    "CFN",  "CFS",  "CELS"};
 
 /// Node or element indices the request covers, and the set name to print.
 struct Selection {
@@ -93,6 +103,146 @@ void write_points(Out out, const Model& model, const Selection& sel, const Incre
   }
 }
 
+// ---------------------------------------------------------------- contact
+
+bool closed(const ContactNodeValues& v) { return v.status != ContactNodeValues::Status::Open; }
+
+int status_code(ContactNodeValues::Status s) {
+  switch (s) {
+    case ContactNodeValues::Status::Open: return 0;
+    case ContactNodeValues::Status::Stick: return 1;
+    case ContactNodeValues::Status::Slip: return 2;
+  }
+  return 0;
+}
+
+/// Unit tangent t (face node 1 -> 2) and outward normal n = (t_y, -t_x) of the
+/// current master face at ξ*.
+struct MasterFrame {
+  Eigen::Vector2d t{1, 0};
+  Eigen::Vector2d n{0, -1};
+};
+
+/// The frame of the face a slave node is paired with; nullopt when it is not
+/// paired or the face cannot be evaluated (unknown element or face number,
+/// zero-length face). `u` may be empty (reference configuration).
+std::optional<MasterFrame> master_frame(const Model& model, const std::vector<Eigen::Vector2d>& u,
+                                        const ContactNodeValues& v) {
+  if (v.master_element == 0) return std::nullopt;
+  const auto it = model.element_index.find(v.master_element);
+  if (it == model.element_index.end()) return std::nullopt;
+  const Element& e = model.elements[static_cast<std::size_t>(it->second)];
+  const int face = v.master_face - 1;
+  if (face < 0 || face >= n_faces(e.type.shape)) return std::nullopt;
+  const auto local = face_nodes(e.type.shape, face);
+  const int nf = n_face_nodes(e.type.shape);
+  Eigen::Vector3d N, dN;
+  face_shape_functions(nf, v.xi, N, dN);
+  Eigen::Vector2d dy = Eigen::Vector2d::Zero();
+  for (int a = 0; a < nf; ++a) {
+    const auto node = static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(local[static_cast<std::size_t>(a)])]);
+    Eigen::Vector2d x = model.coords[node];
+    if (node < u.size()) x += u[node];
+    dy += dN[a] * x;
+  }
+  const double length = dy.norm();
+  if (!(length > 0) || !std::isfinite(length)) return std::nullopt;
+  MasterFrame f;
+  f.t = dy / length;
+  f.n = Eigen::Vector2d(f.t.y(), -f.t.x());
+  return f;
+}
+
+/// ccx's in-plane tangent direction (springforc_n2f) relative to tether's t:
+/// not vertical -> tang1 = sign(t_x) t, tang2 out of plane; vertical
+/// (1 - |n_x| < 1.5231e-6) -> tang1 = e3, tang2 = n x e3 = -t.
+struct CcxTangent {
+  double factor = 1;      ///< value along ccx's in-plane tangent = factor * value along t
+  bool vertical = false;  ///< true: the in-plane value goes to tang2
+};
+
+CcxTangent ccx_tangent(const std::optional<MasterFrame>& frame) {
+  CcxTangent c;
+  if (!frame) return c;
+  if (1.0 - std::abs(frame->n.x()) < 1.5231e-6) {
+    c.vertical = true;
+    c.factor = -1;
+  } else {
+    c.factor = frame->t.x() >= 0 ? 1.0 : -1.0;
+  }
+  return c;
+}
+
+std::size_t checked_node(const Model& model, const ContactPairValues& pair, int node) {
+  if (node < 0 || node >= model.n_nodes())
+    throw std::invalid_argument(fmt::format("DatWriter: contact pair '{}' names slave node index {} outside the mesh",
+                                            pair.name, node));
+  return static_cast<std::size_t>(node);
+}
+
+/// "... for all contact elements and time 0.1000000E+01" (ccx: 'time',e14.7).
+void write_contact_header(Out out, std::string_view what, double time) {
+  fmt::format_to(out, "\n {} for all contact elements and time{:>14}\n\n", what, fortran_e(time, 7));
+}
+
+/// CSTR (stress = true) or CDIS rows of every closed slave node of every pair.
+void write_contact_rows(Out out, const Model& model, const IncrementResults& r, const RelativeSlip& relative_slip,
+                        bool stress) {
+  write_contact_header(out,
+                       stress ? "contact stress (slave node,press,tang1,tang2)"
+                              : "relative contact displacement (slave node,normal,tang1,tang2)",
+                       r.total_time);
+  for (std::size_t p = 0; p < r.contact.size(); ++p) {
+    const ContactPairValues& pair = r.contact[p];
+    for (const ContactNodeValues& v : pair.nodes) {
+      const std::size_t node = checked_node(model, pair, v.node);
+      if (!closed(v)) continue;
+      const CcxTangent c = ccx_tangent(master_frame(model, r.displacement, v));
+      const double in_plane = stress ? c.factor * v.shear : relative_slip[p].at(v.node);
+      const double tang1 = c.vertical ? 0.0 : in_plane;
+      const double tang2 = c.vertical ? in_plane : 0.0;
+      fmt::format_to(out, "{:10d} {:13.6E} {:13.6E} {:13.6E}\n", model.node_ids[node],
+                     unsigned_zero(stress ? v.pressure : v.gap), unsigned_zero(tang1), unsigned_zero(tang2));
+    }
+  }
+}
+
+/// CFN (normal = true: sum of N n) or CFS (sum of -T t) blocks, one per pair.
+void write_contact_forces(Out out, const Model& model, const IncrementResults& r, bool normal) {
+  for (std::size_t p = 0; p < r.contact.size(); ++p) {
+    const ContactPairValues& pair = r.contact[p];
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (const ContactNodeValues& v : pair.nodes) {
+      checked_node(model, pair, v.node);
+      if (v.normal_force == 0 && v.tangential_force == 0) continue;
+      const auto frame = master_frame(model, r.displacement, v);
+      if (!frame)
+        throw std::invalid_argument(fmt::format(
+            "DatWriter: contact pair '{}': slave node {} carries a force but its master face (element {}, face {}) "
+            "cannot be evaluated",
+            pair.name, model.node_ids[static_cast<std::size_t>(v.node)], v.master_element, v.master_face));
+      sum += normal ? Eigen::Vector2d(v.normal_force * frame->n) : Eigen::Vector2d(-v.tangential_force * frame->t);
+    }
+    fmt::format_to(out, "\n {} for pair {}{}\n\n",
+                   normal ? "total normal contact force (fx,fy,fz)" : "total shear contact force (fx,fy,fz)",
+                   contact_pair_set_name(model, r.contact, p), time_suffix(r.total_time));
+    fmt::format_to(out, "       {:13.6E} {:13.6E} {:13.6E}\n", unsigned_zero(sum.x()), unsigned_zero(sum.y()), 0.0);
+  }
+}
+
+/// `slip` advanced by this increment: + Δs along ccx's in-plane tangent for
+/// every closed node. Pairs and nodes not seen before start at 0.
+RelativeSlip advanced_slip(const Model& model, const IncrementResults& r, RelativeSlip slip) {
+  slip.resize(r.contact.size());
+  for (std::size_t p = 0; p < r.contact.size(); ++p)
+    for (const ContactNodeValues& v : r.contact[p].nodes) {
+      double& sum = slip[p][v.node];
+      if (closed(v) && std::isfinite(v.slip))
+        sum += ccx_tangent(master_frame(model, r.displacement, v)).factor * v.slip;
+    }
+  return slip;
+}
+
 }  // namespace
 
 std::string multiplier_set_name(const std::string& owner, int number) {
@@ -117,12 +267,46 @@ void write_multiplier_blocks(std::string& text, const std::vector<MultiplierValu
   }
 }
 
+std::string contact_pair_set_name(const Model& model, const std::vector<ContactPairValues>& contact,
+                                  std::size_t k) {
+  if (k < model.contact_pairs.size()) {
+    const ContactPairData& data = model.contact_pairs[k];
+    if (!data.slave.empty() && !data.master.empty()) return multiplier_set_name(data.slave + "-" + data.master, 0);
+  }
+  const std::string name = k < contact.size() ? contact[k].name : std::string();
+  return name.empty() ? fmt::format("P{}", k + 1) : multiplier_set_name(name, 0);
+}
+
+void write_contact_state_blocks(std::string& text, const Model& model, const std::vector<ContactPairValues>& contact,
+                                double time) {
+  const auto out = std::back_inserter(text);
+  for (std::size_t p = 0; p < contact.size(); ++p) {
+    fmt::format_to(out, "\n {} for pair {}{}\n\n", kContactStateTitle, contact_pair_set_name(model, contact, p),
+                   time_suffix(time));
+    for (const ContactNodeValues& v : contact[p].nodes) {
+      const std::size_t node = checked_node(model, contact[p], v.node);
+      fmt::format_to(out, "{:10d}{:5d} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}{:10d}{:5d} {:13.6E}\n",
+                     model.node_ids[node], status_code(v.status), unsigned_zero(v.gap), unsigned_zero(v.pressure),
+                     unsigned_zero(v.shear), unsigned_zero(v.slip), unsigned_zero(v.total_slip), v.master_element,
+                     v.master_face, unsigned_zero(v.xi));
+    }
+  }
+}
+
 DatWriter::DatWriter(const Model& model, std::filesystem::path file)
     : model_(model), file_(std::move(file)), out_(file_, std::ios::binary | std::ios::trunc) {
   if (!out_) throw std::runtime_error("cannot create '" + file_.string() + "'");
 }
 
 void DatWriter::check(const Model& model, const OutputRequest& r) {
+  if (is_contact_print(r)) {
+    for (const auto& v : r.variables)
+      if (std::find(kContactPrintVariables.begin(), kContactPrintVariables.end(), v) == kContactPrintVariables.end())
+        throw InputError(r.where, fmt::format("*CONTACT PRINT: variable '{}' cannot be printed (tether prints CSTR, "
+                                              "CDIS, CSTRESS, CDISP, CFN, CFS; CELS is accepted)",
+                                              v));
+    return;
+  }
   if (!is_print(r)) return;
   const bool nodal = r.kind == OutputRequest::Kind::NodePrint;
   const char* keyword = nodal ? "*NODE PRINT" : "*EL PRINT";
@@ -143,10 +327,26 @@ void DatWriter::check(const Model& model, const OutputRequest& r) {
 void DatWriter::write_increment(const IncrementResults& results, const std::vector<OutputRequest>& requests,
                                 bool last_in_step) {
   for (const auto& r : requests) check(model_, r);
+  const auto relative_slip = advanced_slip(model_, results, relative_slip_);
   std::string text;
   const auto out = std::back_inserter(text);
+  bool contact_due = false;
   for (const auto& r : requests) {
-    if (!is_print(r) || !is_due(r, results.increment, last_in_step)) continue;
+    if (!is_due(r, results.increment, last_in_step)) continue;
+    if (is_contact_print(r)) {
+      contact_due = true;
+      for (const auto& v : r.variables) {
+        if (v == "CSTR" || v == "CSTRESS")
+          write_contact_rows(out, model_, results, relative_slip, true);
+        else if (v == "CDIS" || v == "CDISP")
+          write_contact_rows(out, model_, results, relative_slip, false);
+        else if (v == "CFN" || v == "CFS")
+          write_contact_forces(out, model_, results, v == "CFN");
+        // CELS: no contact energy in the results (see DatWriter).
+      }
+      continue;
+    }
+    if (!is_print(r)) continue;
     const Selection sel = select(model_, r);
     for (const auto& v : r.variables) {
       if (v == "U")
@@ -159,10 +359,12 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
         write_points(out, model_, sel, results, v == "S");
     }
   }
+  if (contact_due) write_contact_state_blocks(text, model_, results.contact, results.total_time);
   write_multiplier_blocks(text, results.multipliers, results.total_time);
   out_ << text;
   out_.flush();
   if (!out_) throw std::runtime_error("error while writing '" + file_.string() + "' (disk full?)");
+  relative_slip_ = relative_slip;
 }
 
 }  // namespace tether

@@ -17,7 +17,8 @@ std::filesystem::path prepared(const std::filesystem::path& directory) {
 
 bool vtu_due(const std::vector<OutputRequest>& requests, int increment, bool last_in_step) {
   const auto is_file = [](const OutputRequest& r) {
-    return r.kind == OutputRequest::Kind::NodeFile || r.kind == OutputRequest::Kind::ElementFile;
+    return r.kind == OutputRequest::Kind::NodeFile || r.kind == OutputRequest::Kind::ElementFile ||
+           r.kind == OutputRequest::Kind::ContactFile;
   };
   if (std::none_of(requests.begin(), requests.end(), is_file)) return true;
   return std::any_of(requests.begin(), requests.end(), [&](const OutputRequest& r) {

@@ -25,13 +25,17 @@ struct ResultWriterOptions {
 /// - `DIR/JOB_<step>_<increment>.vtu` per written increment and the
 ///   collection `DIR/JOB.pvd` listing them with their total times (both
 ///   replaced atomically, so the `.pvd` is valid at every moment);
-/// - `DIR/JOB.dat`: `*NODE PRINT` / `*EL PRINT` output in CalculiX's layout;
+/// - `DIR/JOB.dat`: `*NODE PRINT` / `*EL PRINT` / `*CONTACT PRINT` output in
+///   CalculiX's layout (see DatWriter);
 /// - `DIR/JOB.sta`: one line per increment attempt and a final verdict.
 ///
 /// A `.vtu` is written for every increment, unless the step's requests
-/// contain `*NODE FILE` / `*EL FILE` entries: then only when one of them is
-/// due (see is_due(); the last increment of a step always is, unless all
-/// have FREQUENCY=0). The `.vtu` always holds every field.
+/// contain `*NODE FILE` / `*EL FILE` / `*CONTACT FILE` (or `*CONTACT
+/// OUTPUT`) entries: then only when one of them is due (see is_due(); the
+/// last increment of a step always is, unless all have FREQUENCY=0). The
+/// `.vtu` always holds every field (the CONTACT_* arrays whenever the model
+/// has contact pairs); the variables listed under these keywords do not
+/// select fields.
 ///
 /// The constructor creates DIR when needed and truncates JOB.dat and JOB.sta.
 /// The Model must outlive the writer and not change. Errors: std::runtime_error

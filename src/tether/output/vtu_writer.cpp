@@ -136,6 +136,39 @@ void check_size(std::size_t actual, std::size_t expected, const char* what) {
                                             what, actual, expected));
 }
 
+/// CONTACT_* point data (see VtuWriter): several pairs on one node are
+/// combined (sums; smallest gap; highest status).
+void write_contact_point_data(Sink& sink, VtuEncoding enc, std::string_view indent,
+                              const std::vector<ContactPairValues>& contact, std::size_t n_nodes) {
+  std::vector<std::int64_t> slave(n_nodes, 0), status(n_nodes, -1);
+  std::vector<double> pressure(n_nodes, 0.0), gap(n_nodes, 0.0), shear(n_nodes, 0.0), slip(n_nodes, 0.0);
+  std::vector<Eigen::Vector2d> force(n_nodes, Eigen::Vector2d::Zero());
+  for (const auto& pair : contact)
+    for (const auto& v : pair.nodes) {
+      if (v.node < 0 || static_cast<std::size_t>(v.node) >= n_nodes)
+        throw std::invalid_argument(
+            fmt::format("VtuWriter: contact pair '{}' names slave node index {} outside the mesh", pair.name, v.node));
+      const auto i = static_cast<std::size_t>(v.node);
+      const std::int64_t code = v.status == ContactNodeValues::Status::Open    ? 0
+                                : v.status == ContactNodeValues::Status::Stick ? 1
+                                                                               : 2;
+      gap[i] = slave[i] != 0 ? std::min(gap[i], v.gap) : v.gap;
+      slave[i] = 1;
+      status[i] = std::max(status[i], code);
+      pressure[i] += v.pressure;
+      shear[i] += v.shear;
+      slip[i] += v.total_slip;
+      force[i] += v.force;
+    }
+  write_data_array(sink, enc, indent, "CONTACT_SLAVE", 1, slave);
+  write_data_array(sink, enc, indent, "CONTACT_STATUS", 1, status);
+  write_data_array(sink, enc, indent, "CONTACT_PRESSURE", 1, pressure);
+  write_data_array(sink, enc, indent, "CONTACT_GAP", 1, gap);
+  write_data_array(sink, enc, indent, "CONTACT_SHEAR", 1, shear);
+  write_data_array(sink, enc, indent, "CONTACT_SLIP", 1, slip);
+  write_data_array(sink, enc, indent, "CONTACT_FORCE", 3, vectors3(force));
+}
+
 }  // namespace
 
 VtuWriter::VtuWriter(const Model& model, VtuEncoding encoding) : model_(model), encoding_(encoding) {
@@ -245,6 +278,7 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
     write_data_array(sink, enc, kIndent, "LAGRANGE_MULTIPLIER", 1, lambda);
     write_data_array(sink, enc, kIndent, "CONSTRAINT_FORCE", 3, vectors3(force));
   }
+  if (!r.contact.empty()) write_contact_point_data(sink, enc, kIndent, r.contact, n_nodes);
   sink.append("      </PointData>\n      <CellData Scalars=\"ElementId\">\n");
   write_data_array(sink, enc, kIndent, "ElementId", 1, element_ids_);
   if (!r.points.empty()) {

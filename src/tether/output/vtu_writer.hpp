@@ -33,7 +33,8 @@ std::uint8_t vtk_cell_type(Shape shape);
 /// - PointData `NodeId` (node labels), `U`, `RF` (3 components, z = 0),
 ///   `S`, `E` (6 components in VTK's symmetric-tensor order XX, YY, ZZ, XY,
 ///   YZ, XZ; tensor shear strains), `S_Mises`, and `LAGRANGE_MULTIPLIER`
-///   and `CONSTRAINT_FORCE` when the increment has multipliers (see below);
+///   and `CONSTRAINT_FORCE` when the increment has multipliers (see below),
+///   and the `CONTACT_*` arrays when it has contact pairs (see below);
 /// - CellData `ElementId` (element labels), `S` and `S_Mises`: the arithmetic
 ///   mean of the integration-point stresses and its von Mises value.
 /// - after the elements, one VTK_VERTEX cell per node that no element uses
@@ -56,6 +57,22 @@ std::uint8_t vtk_cell_type(Shape shape);
 /// Constraints with several equations (MPC TIE/PIN, multi-row formulas) are
 /// left out: their multipliers belong to equations, not nodes — they are in
 /// CONSTRAINT_FORCE and, per equation, in the `.dat` multiplier blocks.
+///
+/// Contact (IncrementResults::contact not empty, i.e. the model has
+/// *CONTACT PAIRs), point data on every node, 0 on nodes that are no slave:
+/// - `CONTACT_SLAVE` (Int64): 1 on slave nodes, 0 elsewhere (the mask that
+///   tells a zero gap from "not a slave");
+/// - `CONTACT_STATUS` (Int64): 0 open, 1 stick, 2 slip (closed frictionless
+///   is slip), -1 not a slave;
+/// - `CONTACT_PRESSURE` [force/area] (ContactNodeValues::pressure, > 0 in
+///   compression), `CONTACT_GAP` [length] (> 0 open), `CONTACT_SHEAR`
+///   [force/area] (T/area along the master tangent, face node 1 -> 2, with the
+///   sign of the slip), `CONTACT_SLIP` [length] (total slip: the sum of |Δs|
+///   over the slipping increments);
+/// - `CONTACT_FORCE` (3 components, z = 0) [force]: the force of the master on
+///   the slave node, N n - T t.
+/// A node that is slave in several pairs gets the sums of pressure, shear,
+/// slip and force, the smallest gap and the highest status.
 ///
 /// The mesh arrays are built once at construction; the Model must outlive the
 /// writer and must not change.
