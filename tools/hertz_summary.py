@@ -1,10 +1,12 @@
 #!/usr/bin/python3
 """Contact pressure of a Hertz run (deck from tools/make_hertz_deck.py) against the exact solution.
 
-    hertz_summary.py JOB.dat [--deck JOB.inp] [--png p.png] [--json out.json] [--time T]
-                     [--label ccx] [--tol 0.01] [--source auto|cstr|rf|stress]
+    hertz_summary.py JOB.dat [MORE.dat ...] [--deck JOB.inp] [--png p.png] [--json out.json]
+                     [--time T] [--label ccx [--label tether ...]] [--tol 0.01]
+                     [--source auto|cstr|rf|stress]
 
-Reads the .dat with tools/datfile.py and the deck (default: JOB.inp next to the
+Reads the .dat with tools/datfile.py (several: runs of the same deck, e.g. ccx
+and tether, plotted together) and the deck (default: JOB.inp next to the first
 .dat) for the node coordinates, the slave/master node sets and the model data
 written into its *HEADING (R, E, nu, P, rigid_flat). Prints the peak pressure,
 the half-width of the contact strip, their errors against the exact plane-strain
@@ -66,7 +68,6 @@ sys.path.insert(0, TOOLS)
 import datfile  # noqa: E402
 import hertz_exact  # noqa: E402
 
-_CONTACT_HEADER = re.compile(r"for all contact elements and time", re.I)
 NODES_PER_TYPE = {"CPE4": 4, "CPE8": 8, "CPS4": 4, "CPS8": 8, "CPE4R": 4, "CPE8R": 8}
 
 
@@ -134,12 +135,13 @@ class Deck:
 
 # ----------------------------------------------------------------------------- pressures
 def read_dat(path):
-    with open(path) as f:
-        return datfile.parse(_CONTACT_HEADER.sub("for set CONTACT and time", f.read()))
+    return datfile.read(path)  # reads ccx's and tether's contact headers too
 
 
 def pick(blocks, title, set_name, time):
-    found = [b for b in blocks if b["title"].lower().startswith(title) and b["set"].upper() == set_name.upper()]
+    """The last block (or the one at `time`) whose title starts with `title` for set `set_name` (None: any set)."""
+    found = [b for b in blocks if b["title"].lower().startswith(title)
+             and (set_name is None or b["set"].upper() == set_name.upper())]
     if time is not None:
         found = [b for b in found if abs(b["time"] - time) <= 1e-6 * max(1.0, abs(time))]
     return found[-1] if found else None
@@ -159,8 +161,14 @@ def from_cstr(block, deck):
 
 
 def from_nodal_forces(block, deck):
-    """{node: RF_y} of the master nodes."""
-    return {int(r[0]): r[2] for r in block["rows"]}
+    """{node: force on the block, y} from RF_y of the master nodes.
+
+    ccx prints the support reaction (+y under a pushing cylinder); the sign is chosen so that the
+    forces push the block down (sum < 0), whatever the code's RF convention.
+    """
+    rf = {int(r[0]): r[2] for r in block["rows"]}
+    sign = -1.0 if sum(rf.values()) > 0 else 1.0
+    return {n: sign * f for n, f in rf.items()}
 
 
 GAUSS = {2: ([-1.0 / math.sqrt(3.0), 1.0 / math.sqrt(3.0)], [1.0, 1.0]),
@@ -318,7 +326,7 @@ def summarise(dat, deck_path=None, time=None, source="auto"):
     points = None
     threshold = 0.0
     if source in ("auto", "cstr"):
-        cstr = pick(blocks, "contact stress", "CONTACT", time)
+        cstr = pick(blocks, "contact stress", None, time)
         if cstr is not None:
             pressure = from_cstr(cstr, deck)
             for n in deck.nsets.get("SLAVEN", []):
@@ -388,57 +396,70 @@ def report(r, label=""):
           + (f"   support {r['support']} = {r['support_force']:.5g} ({pct(r['support_error'])})" if "support" in r else ""))
 
 
-def plot(r, png, label=""):
+def plot(results, png, labels=None):
+    """p(x) of one run or several runs of the same case (a list) over the exact curve."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import numpy as np
-    ex = r["exact"]
+    results = results if isinstance(results, list) else [results]
+    labels = labels if isinstance(labels, list) else [labels or ""] * len(results)
+    ex = results[0]["exact"]
     a, p0 = ex["a"], ex["p0"]
     xs = np.linspace(0.0, 1.6 * a, 400)
     fig, ax = plt.subplots(figsize=(7, 4.2))
     ax.plot(xs, hertz_exact.pressure(xs, a, p0), "k-", lw=1.2, label=f"exact (a = {a:.4g} mm, p0 = {p0:.4g} MPa)")
-    pts = [(x, p) for x, p in r["points"] if x <= 1.6 * a]
-    ax.plot([x for x, _ in pts], [p for _, p in pts], "o", ms=4, mfc="none",
-            label=f"{label or 'FE'} ({r['element']}, {r['dofs']} dofs, {r['source']}): "
-                  f"peak {pct(r.get('peak_error'))}, a (fit) {pct(r.get('a_fit_error'))}")
+    peak = p0
+    for r, label, marker in zip(results, labels, "osd^v<>"):
+        pts = [(x, p) for x, p in r["points"] if x <= 1.6 * a]
+        ax.plot([x for x, _ in pts], [p for _, p in pts], marker, ms=4, mfc="none",
+                label=f"{label or 'FE'} ({r['element']}, {r['dofs']} dofs, {r['source']}): "
+                      f"peak {pct(r.get('peak_error'))}, a (fit) {pct(r.get('a_fit_error'))}")
+        peak = max(peak, r.get("peak", 0.0))
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("contact pressure [MPa]")
     ax.set_title(f"plane-strain Hertz, {'rigid flat' if ex['rigid_flat'] else 'elastic block'}, P = {ex['P']:g} N/mm")
     ax.set_xlim(0, 1.6 * a)
-    ax.set_ylim(0, 1.15 * max(p0, r.get("peak", 0.0)))
+    ax.set_ylim(0, 1.15 * peak)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8, loc="lower left")
+    ax.legend(fontsize=7, loc="upper right")
     fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    fig.savefig(png, dpi=110)
     plt.close(fig)
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
-    ap.add_argument("dat")
-    ap.add_argument("--deck", help="the deck (default: JOB.inp next to JOB.dat)")
+    ap.add_argument("dat", nargs="+", help="one .dat, or several runs of the same deck (one plot)")
+    ap.add_argument("--deck", help="the deck (default: JOB.inp next to the first JOB.dat)")
     ap.add_argument("--time", type=float, help="step time of the blocks to use (default: the last)")
     ap.add_argument("--png", help="plot p(x) over the exact curve into this PNG")
-    ap.add_argument("--json", help="write the figures (and the points) to this JSON file")
-    ap.add_argument("--label", default="", help="name of the code, for the printout and the plot")
+    ap.add_argument("--json", help="write the figures (and the points) to this JSON file (one run)")
+    ap.add_argument("--label", action="append", default=[], help="name of the code, once per .dat (printout, plot)")
     ap.add_argument("--source", default="auto", choices=["auto", "cstr", "rf", "stress"],
                     help="where the pressure comes from (default: CSTR, else RF on MASTERN, else stresses)")
     ap.add_argument("--tol", type=float, help="exit 1 when |peak error| or |fitted a error| exceeds this (e.g. 0.01)")
     args = ap.parse_args(argv)
-    r = summarise(args.dat, args.deck, args.time, args.source)
-    report(r, args.label)
+    labels = args.label + [""] * (len(args.dat) - len(args.label))
+    deck = args.deck or os.path.splitext(args.dat[0])[0] + ".inp"
+    results = []
+    for dat, label in zip(args.dat, labels):
+        r = summarise(dat, deck, args.time, args.source)
+        report(r, label)
+        results.append(r)
     if args.png:
-        plot(r, args.png, args.label)
+        plot(results, args.png, labels)
     if args.json:
         with open(args.json, "w") as f:
-            json.dump(r, f, indent=2)
-    if "peak" not in r:
-        return 2
-    if args.tol is not None and (abs(r["peak_error"]) > args.tol or abs(r.get("a_fit_error", math.inf)) > args.tol):
-        return 1
-    return 0
+            json.dump(results[0] if len(results) == 1 else results, f, indent=2)
+    status = 0
+    for r in results:
+        if "peak" not in r:
+            status = 2
+        elif args.tol is not None and (abs(r["peak_error"]) > args.tol or abs(r.get("a_fit_error", math.inf)) > args.tol):
+            status = max(status, 1)
+    return status
 
 
 if __name__ == "__main__":

@@ -38,29 +38,29 @@ s = node spacing (h for CPE4, h/2 for CPE8), gmax = 0.3 (CPE4) or 0.5 (CPE8), so
 that the number of displacement dofs (2 x all nodes, the fixed rigid strip
 included) is within 5 % of the target; --h sets h directly.
 
-Why two steps. The undeformed cylinder touches the block at one point (gap 0 at
-the origin), so under pure load control its vertical rigid motion is held by
-nothing but contact, and a code that does not count a node at exactly zero gap
-as closed starts from a singular matrix. The deck therefore has
-  step 1 "seat": the top-face nodes (TOPN) are moved down by --seat (default
-         1e-4 mm) under displacement control, which closes the contact at a few
-         nodes with a small force (printed: RF total of TOPN, about 2 N of the
-         1000 N on the 25k mesh);
+Pure load control (default) and the optional seating step. The undeformed
+cylinder touches the block at one point (gap 0 at the origin), so under pure load
+control its vertical rigid motion is held by nothing but contact. Measured with
+ccx 2.20 and tether (docs/hertz_benchmark.md): both run this deck as it is, one
+load-controlled step, ccx because its penalty contact element is generated and
+stiff at zero clearance, tether because a node at zero gap starts closed. (The
+note that ccx "floats" holds for a body that does not touch: with the cylinder
+lifted by 0.01 mm ccx generates no contact element and stops with "too many
+cutbacks", exit 201; lifted by 1e-6 or 1e-4 mm it still runs.)
+For a code that needs it, --seat DELTA writes two steps:
+  step 1 "seat": the top-face nodes (TOPN) are moved down by DELTA (e.g. 1e-4
+         mm) under displacement control, which closes the contact at a few
+         nodes with a small force (printed: RF total of TOPN, about 1 N at 2k);
   step 2 "load": *BOUNDARY, OP=NEW drops the seating condition (the supports are
-         repeated) and the pressure is ramped to P/(2R) in --increments equal
-         increments. The contact closed in step 1 holds the cylinder.
-At the end of step 2 the only loads are the pressure and the contact forces, so
-the result is the load-controlled Hertz solution. Both codes run the deck
-unchanged. --no-seat writes the single load-controlled step.
-Measured with ccx 2.20 (docs/hertz_benchmark.md): this touching deck runs in ccx
-with or without the seating step and gives the same pressures to all printed
-digits; lifting the cylinder by 0.01 mm makes ccx generate no contact element, the cylinder floats and ccx
-stops with "too many cutbacks" (exit 201). *CONTROLS (--controls R_n C_n) is
-read by both codes.
+         repeated) and the pressure is ramped to P/(2R).
+The end state is the same load-controlled solution (ccx: the same pressures to
+all printed digits with and without the seat). --no-seat (the default) writes
+the single step. *CONTROLS (--controls R_n C_n) is read by both codes.
+The generator needs only Python's standard library and the gmsh program.
 
 Usage:
   make_hertz_deck.py OUT.inp [--dofs 25k | --h H] [--element CPE4|CPE8] [--rigid-flat]
-                     [--load 2000] [--increments 10] [--seat 1e-4 | --no-seat]
+                     [--load 2000] [--increments 10] [--seat DELTA | --no-seat]
                      [--linear K] [--controls R_n C_n] [--nlgeom] [--core 3] [--block 20]
                      [--gmsh gmsh] [--json OUT.json]
 Prints one line with the mesh parameters; --json writes them (and a, p0) to a file.
@@ -420,8 +420,10 @@ def main(argv=None):
     ap.add_argument("--load", type=float, default=hertz_exact.P, help="line load P of the whole cylinder [N/mm] (default 2000)")
     ap.add_argument("--increments", type=int, default=10, help="equal load increments in the load step (default 10)")
     seat = ap.add_mutually_exclusive_group()
-    seat.add_argument("--seat", type=float, default=1e-4, help="downward displacement of the top face in the seating step [mm] (default 1e-4)")
-    seat.add_argument("--no-seat", dest="seat", action="store_const", const=0.0, help="no seating step: pure load control")
+    seat.add_argument("--seat", type=float, default=0.0, metavar="DELTA",
+                      help="first a seating step moving the top face down by DELTA [mm] (e.g. 1e-4)")
+    seat.add_argument("--no-seat", dest="seat", action="store_const", const=0.0,
+                      help="one load-controlled step (the default)")
     ap.add_argument("--linear", type=float, metavar="K", help="PRESSURE-OVERCLOSURE=LINEAR with slope K [MPa/mm] instead of HARD")
     ap.add_argument("--controls", type=float, nargs=2, metavar=("R_n", "C_n"), help="write *CONTROLS, PARAMETERS=FIELD with these")
     ap.add_argument("--nlgeom", action="store_true", help="NLGEOM steps (Hertz theory is small-strain: off by default)")
