@@ -79,6 +79,30 @@ TEST(ContactAnalysis, MatchingBlocksTransmitUniformPressureExactly) {
   }
 }
 
+TEST(ContactAnalysis, RegularisedPenaltyAndAugmentedHardContact) {
+  // Matching meshes, p = 10: every option carries the load; the gap is
+  // -eps N (regularised), -N / rho (penalty), within TOLERANCE (augmented).
+  // The compliance acts on nodal forces, so the end nodes (half the area)
+  // penetrate half as much and the pressure is uniform only to ~2 %.
+  struct Option {
+    std::string parameters;
+    double expected_gap_per_force;  ///< gap = -this * N (0: exact or augmented)
+    double tolerance;
+  };
+  for (const Option& o : {Option{", EPSILON=1e-4", 1e-4, 1e-10}, Option{", ENFORCEMENT=PENALTY, PENALTY=1e5", 1e-5, 1e-10},
+                          Option{", ENFORCEMENT=AUGMENTED, PENALTY=1e3, TOLERANCE=1e-9", 0, 1e-9}}) {
+    const auto run =
+        run_deck_text(stacked_blocks(4, 4, false, 10.0, "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD" + o.parameters + "\n"));
+    ASSERT_TRUE(run.summary.completed) << o.parameters << ": " << run.summary.message;
+    const ContactPairValues& c = pair_values(run);
+    EXPECT_NEAR(c.total_force.y(), 10.0, 1e-6) << o.parameters;
+    for (const ContactNodeValues& v : c.nodes) {
+      EXPECT_NEAR(v.pressure, 10.0, o.expected_gap_per_force > 0 ? 0.2 : 1e-5) << o.parameters;
+      EXPECT_NEAR(v.gap, -o.expected_gap_per_force * v.normal_force, o.tolerance) << o.parameters;
+    }
+  }
+}
+
 // The contact patch test: uniform pressure through a flat interface between
 // non-matching meshes. One-pass node-to-segment transmits the load in
 // equilibrium but not as a uniform pressure: the slave nodal forces reach the

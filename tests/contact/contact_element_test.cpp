@@ -71,6 +71,13 @@ struct Fixture {
 };
 
 PressureOverclosure hard() { return {}; }
+PressureOverclosure hard_with(Enforcement::Method method, double epsilon = 0) {
+  PressureOverclosure p;
+  p.enforcement.method = method;
+  p.enforcement.epsilon = epsilon;
+  p.enforcement.penalty = 25;
+  return p;
+}
 PressureOverclosure linear_law() {
   PressureOverclosure p;
   p.law = PressureOverclosure::Law::Linear;
@@ -107,7 +114,8 @@ TEST_P(ContactTangent, MatchesFiniteDifferences) {
   Fixture f(c.master, c.law, c.friction);
   f.place(0.3, c.slave_y, 0.3 + c.slip, c.slave_y);
   int k = f.n_disp;
-  if (c.law.law == PressureOverclosure::Law::Hard) f.u[k++] = c.lambda_n;
+  if (c.law.law == PressureOverclosure::Law::Hard && c.law.enforcement.method == Enforcement::Method::Lagrange)
+    f.u[k++] = c.lambda_n;
   if (c.friction == Friction::Exact) f.u[k++] = c.lambda_t;
   EXPECT_EQ(f.node().status(f.state()), c.expected);
   EXPECT_LT(tangent_error(f.node(), f.state(), 1e-7), 2e-6) << c.name;
@@ -121,6 +129,12 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"hard_open_linear", Master::Linear, hard(), Friction::None, -0.2, 0, 0.06, 0.02, ContactStatus::Open},
         Case{"hard_closed_quadratic", Master::Quadratic, hard(), Friction::None, 0.8, 0, 0.1, 0.02,
              ContactStatus::Slip},
+        Case{"hard_regularised", Master::Quadratic, hard_with(Enforcement::Method::Lagrange, 0.01), Friction::None,
+             0.8, 0, 0.1, 0.02, ContactStatus::Slip},
+        Case{"hard_penalty", Master::Linear, hard_with(Enforcement::Method::Penalty), Friction::None, 0, 0, -0.03,
+             0.02, ContactStatus::Slip},
+        Case{"hard_augmented_friction", Master::Quadratic, hard_with(Enforcement::Method::Augmented),
+             Friction::Exact, 0, 0.5, 0.1, 0.05, ContactStatus::Slip},
         Case{"linear_law", Master::Linear, linear_law(), Friction::None, 0, 0, -0.03, 0.02, ContactStatus::Slip},
         Case{"exponential_law_quadratic", Master::Quadratic, exponential_law(), Friction::None, 0, 0, 0.12, 0.02,
              ContactStatus::Slip},

@@ -105,6 +105,8 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
     setup.slave_area.push_back(a);
   }
   setup.search_radius = 2 * longest + data.adjust;
+  if (setup.law.enforcement.method == Enforcement::Method::Augmented && setup.law.enforcement.tolerance == 0)
+    setup.law.enforcement.tolerance = 1e-8 * longest;
   setup.complementarity_stiffness = stiffness > 0 ? stiffness : 1.0;
 
   const int per_slave = ContactPair::multipliers_per_slave(setup.law, setup.friction);

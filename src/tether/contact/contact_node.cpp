@@ -7,6 +7,7 @@
 #include "tether/contact/segment_geometry.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/fem/shape_functions.hpp"
+#include "tether/model/constraint_data.hpp"
 
 namespace tether {
 
@@ -128,15 +129,16 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
   const ContactPairSetup& setup = pair_.setup();
   const double c = setup.complementarity_stiffness;
   const bool hard = setup.law.law == PressureOverclosure::Law::Hard;
+  const bool hard_multiplier = hard && setup.law.enforcement.method == Enforcement::Method::Lagrange;
   const double mu = pair_.mu();
   const bool friction = mu > 0;
   const bool exact_stick = friction && pair_.exact_stick();
   const int n_local = static_cast<int>(s.dofs.size());
-  const int n_mult = (hard ? 1 : 0) + (exact_stick ? 1 : 0);
+  const int n_mult = (hard_multiplier ? 1 : 0) + (exact_stick ? 1 : 0);
   const int nu = n_local - n_mult;  // displacement dofs
-  const int in = hard ? nu : -1;    // local index of λn
-  const int it = exact_stick ? nu + (hard ? 1 : 0) : -1;  // local index of λt
-  const double lambda_n = hard ? state.u[s.dofs[static_cast<std::size_t>(in)]] : 0.0;
+  const int in = hard_multiplier ? nu : -1;  // local index of λn
+  const int it = exact_stick ? nu + (hard_multiplier ? 1 : 0) : -1;  // local index of λt
+  const double lambda_n = hard_multiplier ? state.u[s.dofs[static_cast<std::size_t>(in)]] : 0.0;
   const double lambda_t = exact_stick ? state.u[s.dofs[static_cast<std::size_t>(it)]] : 0.0;
   need_tangent = need_tangent && out;
 
@@ -161,36 +163,49 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
   Vec dN = Vec::Zero(n_local);
   double N = 0;
   bool closed = false;
-  if (hard) {
-    closed = lambda_n - c * gap.g >= 0 || s.held_closed;
+  const Enforcement& enforcement = setup.law.enforcement;
+  if (hard && enforcement.method == Enforcement::Method::Lagrange) {
+    // min(λn/c, g + ε λn) = 0: exact for ε = 0, regularised otherwise.
+    const double eps = enforcement.epsilon;
+    const double g_reg = gap.g + eps * lambda_n;
+    closed = lambda_n - c * g_reg >= 0 || s.held_closed;
     N = closed ? std::max(lambda_n, 0.0) : 0.0;
     if (closed && lambda_n > 0) dN[in] = 1;
     if (out) {
       out->residual.head(nu) -= lambda_n * gap.gradient;
-      if (closed) {
-        out->residual[in] = -gap.g;
-      } else {
-        out->residual[in] = -lambda_n / c;
-      }
+      out->residual[in] = closed ? -g_reg : -lambda_n / c;
       if (need_tangent) {
         out->tangent.topLeftCorner(nu, nu) -= lambda_n * gap.hessian;
         out->tangent.col(in).head(nu) -= gap.gradient;
-        if (closed)
+        if (closed) {
           out->tangent.row(in).head(nu) -= gap.gradient.transpose();
-        else
+          out->tangent(in, in) = -eps;
+        } else {
           out->tangent(in, in) = -1 / c;
+        }
       }
     }
   } else {
-    const ContactPressure p = contact_pressure(setup.law, -gap.g);
-    N = s.area * p.p;
-    closed = N > 0;
-    dN.head(nu) = -s.area * p.dp_dh * gap.gradient;
+    // A force law without multiplier: soft pressure-overclosure, or HARD by
+    // penalty N = ρ<-g> / augmented Lagrangian N = <λ̄ - ρ g>.
+    if (!hard) {
+      const ContactPressure p = contact_pressure(setup.law, -gap.g);
+      N = s.area * p.p;
+      dN.head(nu) = -s.area * p.dp_dh * gap.gradient;
+    } else {
+      const double rho = enforcement.penalty;
+      const double base = enforcement.method == Enforcement::Method::Augmented ? s.lambda_bar : 0.0;
+      const double trial = base - rho * gap.g;
+      if (trial >= 0 && (trial > 0 || gap.g <= 0)) {
+        N = trial;
+        dN.head(nu) = -rho * gap.gradient;
+      }
+    }
+    closed = N > 0 || dN.head(nu).squaredNorm() > 0;
     if (out) {
       out->residual.head(nu) -= N * gap.gradient;
       if (need_tangent)
-        out->tangent.topLeftCorner(nu, nu) +=
-            s.area * p.dp_dh * gap.gradient * gap.gradient.transpose() - N * gap.hessian;
+        out->tangent.topLeftCorner(nu, nu) -= gap.gradient * dN.head(nu).transpose() + N * gap.hessian;
     }
   }
   point.normal_force = N;

@@ -25,7 +25,9 @@ Eigen::Vector2d position(const std::vector<Eigen::Vector2d>& reference, const Ei
 
 int ContactPair::multipliers_per_slave(const PressureOverclosure& law, const std::optional<FrictionData>& friction) {
   const bool exact_stick = friction && friction->mu > 0 && friction->stick_slope == 0 && friction->elastic_slip == 0;
-  return (law.law == PressureOverclosure::Law::Hard ? 1 : 0) + (exact_stick ? 1 : 0);
+  const bool hard_multiplier =
+      law.law == PressureOverclosure::Law::Hard && law.enforcement.method == Enforcement::Method::Lagrange;
+  return (hard_multiplier ? 1 : 0) + (exact_stick ? 1 : 0);
 }
 
 bool ContactPair::exact_stick() const {
@@ -44,7 +46,8 @@ ContactPair::ContactPair(ContactPairSetup setup, const std::vector<Eigen::Vector
     throw std::invalid_argument(setup_.name + ": complementarity stiffness must be > 0");
   const int per_slave = multipliers_per_slave(setup_.law, setup_.friction);
   if (per_slave > 0 && first_multiplier < 0) throw std::invalid_argument(setup_.name + ": multipliers not reserved");
-  const bool hard = setup_.law.law == PressureOverclosure::Law::Hard;
+  const bool hard = setup_.law.law == PressureOverclosure::Law::Hard &&
+                    setup_.law.enforcement.method == Enforcement::Method::Lagrange;
 
   slaves_.resize(setup_.slave_nodes.size());
   nodes_.reserve(slaves_.size());
@@ -88,6 +91,7 @@ void ContactPair::start_attempt(const EvaluationState& state) {
   attempt_time_ = state.total_time;
   attempt_dt_ = state.dt;
   releases_ = 0;
+  uzawa_updates_ = 0;
   for (ContactSlave& s : slaves_) s.status_changes = 0, s.held_closed = false;
 }
 
@@ -166,7 +170,8 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
   }
 
   // Status of every node at this iterate; count changes, engage the chattering guard.
-  const bool hard = setup_.law.law == PressureOverclosure::Law::Hard;
+  const bool hard = setup_.law.law == PressureOverclosure::Law::Hard &&
+                    setup_.law.enforcement.method == Enforcement::Method::Lagrange;
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     ContactSlave& s = slaves_[i];
     const ContactStatus status = nodes_[i]->status(state);
@@ -185,6 +190,24 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
 }
 
 Acceptance ContactPair::on_converged(const EvaluationState& state) {
+  const Enforcement& enforcement = setup_.law.enforcement;
+  if (setup_.law.law == PressureOverclosure::Law::Hard && enforcement.method == Enforcement::Method::Augmented) {
+    // Uzawa: λ̄ ← N until the largest penetration is within the tolerance.
+    double penetration = 0;
+    std::vector<double> force(slaves_.size(), 0.0);
+    for (std::size_t i = 0; i < slaves_.size(); ++i) {
+      const ContactNodeValues v = nodes_[i]->values(state);
+      force[i] = v.normal_force;
+      if (v.status != ContactNodeValues::Status::Open) penetration = std::max(penetration, -v.gap);
+    }
+    if (penetration <= enforcement.tolerance) return Acceptance::Accept;
+    if (++uzawa_updates_ > enforcement.max_updates)
+      throw ModelError(setup_.name + ": augmented Lagrangian left a penetration of " + std::to_string(penetration) +
+                       " after " + std::to_string(enforcement.max_updates) + " updates (tolerance " +
+                       std::to_string(enforcement.tolerance) + "); raise PENALTY");
+    for (std::size_t i = 0; i < slaves_.size(); ++i) slaves_[i].lambda_bar = force[i];
+    return Acceptance::Iterate;
+  }
   bool released = false;
   for (ContactSlave& s : slaves_) {
     if (!s.held_closed) continue;

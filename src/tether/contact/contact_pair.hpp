@@ -65,6 +65,7 @@ struct ContactSlave {
   double committed_tangential_force = 0;  ///< T [force] (penalty stick)
   double total_slip = 0;           ///< Σ |Δs| over slipping increments [length]
   double dissipation = 0;          ///< Σ T Δs over slipping increments [force × length]
+  double lambda_bar = 0;           ///< HARD, AUGMENTED: Uzawa normal force [force] (kept between increments)
   // Within an increment attempt.
   ContactStatus status = ContactStatus::Open;  ///< at the last update_connectivity
   int status_changes = 0;
@@ -126,6 +127,7 @@ class ContactPair final : public Contribution {
   bool searched_once_ = false;
   double attempt_time_ = -1, attempt_dt_ = -1;
   int releases_ = 0;  ///< chattering-guard releases in this attempt
+  int uzawa_updates_ = 0;  ///< augmented-Lagrangian updates in this attempt
   ContactIterationStatistics statistics_;
 };
 

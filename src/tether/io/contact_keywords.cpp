@@ -54,10 +54,28 @@ void handle_surface_behavior(DeckState& state, const KeywordBlock& block, const 
     rows.push_back(std::move(row));
   }
   const SourceLocation at = block.data.empty() ? block.where : block.data.front().where();
+  const bool enforcement_given = params.given("ENFORCEMENT") || params.given("EPSILON") || params.given("PENALTY") ||
+                                 params.given("TOLERANCE");
   if (law == "HARD") {
     b = PressureOverclosure{};
+    Enforcement& e = b.enforcement;
+    const std::string method = params.name("ENFORCEMENT");
+    if (method == "PENALTY") e.method = Enforcement::Method::Penalty;
+    if (method == "AUGMENTED") e.method = Enforcement::Method::Augmented;
+    e.epsilon = params.real("EPSILON");
+    e.penalty = params.real("PENALTY");
+    e.tolerance = params.real("TOLERANCE");
+    if (e.epsilon < 0) throw InputError(block.where, "EPSILON must be >= 0 (a regularisation, length per force)");
+    if (e.tolerance < 0) throw InputError(block.where, "TOLERANCE must be >= 0 (a penetration)");
+    if (e.method != Enforcement::Method::Lagrange && !(e.penalty > 0))
+      throw InputError(block.where, "ENFORCEMENT=" + method + " needs PENALTY=rho > 0 (force per unit overclosure)");
+    if (params.given("EPSILON") && e.method != Enforcement::Method::Lagrange)
+      throw InputError(block.where, "EPSILON applies to ENFORCEMENT=LAGRANGE only");
     return;
   }
+  if (enforcement_given)
+    throw InputError(block.where, "ENFORCEMENT, EPSILON, PENALTY and TOLERANCE apply to PRESSURE-OVERCLOSURE=HARD "
+                                  "only; PRESSURE-OVERCLOSURE=" + law + " is already a penalty law");
   if (rows.empty()) throw InputError(block.where, "PRESSURE-OVERCLOSURE=" + law + " needs a data line");
   if (law == "LINEAR") {
     b.law = PressureOverclosure::Law::Linear;

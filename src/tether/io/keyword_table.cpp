@@ -258,7 +258,15 @@ std::vector<KeywordSpec> build_table() {
        "HARD: none; LINEAR: `K[, sigma_inf, c0]` (CalculiX); EXPONENTIAL: `c0, p0`; TABULAR: pairs `pressure, "
        "overclosure` with overclosure increasing",
        {{"PRESSURE-OVERCLOSURE", PT::Choice, "HARD", {"HARD", "LINEAR", "EXPONENTIAL", "TABULAR"}, false, "",
-         "HARD contact is enforced exactly (by multipliers, not CalculiX's K = 50 E penalty)."}},
+         "HARD contact is enforced exactly (by multipliers, not CalculiX's K = 50 E penalty)."},
+        choice("ENFORCEMENT", "LAGRANGE", {"LAGRANGE", "PENALTY", "AUGMENTED"},
+               "tether extension, HARD only: LAGRANGE multipliers (exact; regularised with EPSILON), PENALTY "
+               "(N = PENALTY x overclosure) or AUGMENTED Lagrangian (penalty plus Uzawa updates until the largest "
+               "penetration is below TOLERANCE)."),
+        real("EPSILON", "0", "HARD, LAGRANGE: regularise to gap + EPSILON x normal force >= 0 [length/force]."),
+        real("PENALTY", "", "HARD, PENALTY or AUGMENTED: penalty stiffness [force/length]."),
+        real("TOLERANCE", "0", "HARD, AUGMENTED: penetration [length] that ends the Uzawa updates (0: 1e-8 times "
+                               "the longest contact face).")},
        handle_surface_behavior, ""},
       {"FRICTION", kInteraction, "Coulomb friction of the interaction.",
        "`mu[, stick slope]` (the stick slope is CalculiX's; 0 or absent: exact stick)",

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tether/core/error.hpp"
+#include "tether/model/constraint_data.hpp"
 
 namespace tether {
 
@@ -26,6 +27,12 @@ struct PressureOverclosure {
   double c0 = 0;         ///< Linear (CalculiX) / Exponential: clearance at which pressure starts [length]
   double p0 = 0;         ///< Exponential: pressure at zero clearance [pressure]
   std::vector<std::pair<double, double>> table;  ///< Tabular: (pressure, overclosure), overclosure increasing
+  /// Hard: how the normal constraint g >= 0 is enforced (tether extension):
+  /// Lagrange (exact; regularised g + epsilon*N >= 0 when epsilon > 0, epsilon
+  /// [length/force]), Penalty (N = rho <-g>, rho [force/length]) or Augmented
+  /// (N = <lambda_bar - rho g> with Uzawa updates until the largest
+  /// penetration is below tolerance [length]). Elimination is not available.
+  Enforcement enforcement;
 };
 
 /// Coulomb friction (`*FRICTION`).
