@@ -246,6 +246,80 @@ S, M
   EXPECT_NEAR(pair_values(run).total_force.y(), 2.0, 1e-10);
 }
 
+TEST(ContactAnalysis, SlipThatKeepsReversingIsHeldInStick) {
+  // Two bodies squeezed with the top held in x: the Poisson expansions differ,
+  // the friction force at the two closed nodes is small and of either sign,
+  // and the semi-smooth Newton alternated between slip to the left and to the
+  // right forever (no open/closed change, so the open/closed guard did not
+  // see it). The friction guard holds such nodes in stick until convergence.
+  const std::string deck = R"(*NODE
+1, 0, 0
+2, 1, 0
+3, 2, 0
+4, 0, 1
+5, 1, 1
+6, 2, 1
+11, 0.5, 1
+12, 1.0, 1
+13, 1.5, 1.05
+14, 0.5, 2
+15, 1.0, 2
+16, 1.5, 2
+*ELEMENT, TYPE=CPE4, ELSET=LOWER
+1, 1, 2, 5, 4
+2, 2, 3, 6, 5
+*ELEMENT, TYPE=CPE4, ELSET=UPPER
+11, 11, 12, 15, 14
+12, 12, 13, 16, 15
+*ELSET, ELSET=EALL
+LOWER, UPPER
+*NSET, NSET=BOT
+1, 2, 3
+*NSET, NSET=TOP
+14, 15, 16
+*SURFACE, NAME=LTOP
+1, S3
+2, S3
+*SURFACE, NAME=UBOT
+11, S1
+12, S1
+*MATERIAL, NAME=STEEL
+*ELASTIC
+200000, 0.3
+*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL
+*SURFACE INTERACTION, NAME=SI
+*FRICTION
+0.2
+*CONTACT PAIR, INTERACTION=SI, TYPE=NODE TO SURFACE
+UBOT, LTOP
+*BOUNDARY
+BOT, 1, 2
+*STEP, NLGEOM
+*STATIC
+0.5, 1.0
+*BOUNDARY
+TOP, 1, 1, 0
+TOP, 2, 2, -0.001
+*END STEP
+*STEP, NLGEOM
+*STATIC
+0.5, 1.0
+*BOUNDARY
+TOP, 1, 1, 0.01
+TOP, 2, 2, -0.001
+*END STEP
+)";
+  const auto run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  EXPECT_EQ(run.summary.cutbacks, 0);
+  // Step 2 slides the top by 0.01: both closed nodes slip at T = mu N.
+  for (const ContactNodeValues& v : pair_values(run).nodes) {
+    if (v.status == ContactNodeValues::Status::Open) continue;
+    EXPECT_EQ(v.status, ContactNodeValues::Status::Slip);
+    EXPECT_NEAR(std::abs(v.tangential_force), 0.2 * v.normal_force, 1e-9 * v.normal_force);
+  }
+}
+
 /// Top block pressed by `p`, then its top edge pushed in x by `slide` (step 2,
 /// in `increments` equal increments); every node of the bottom block is fixed
 /// (a rigid flat), so the contact normal stays vertical.

@@ -234,7 +234,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
         out->residual[it] = -lambda_t / c;
         if (need_tangent) out->tangent(it, it) = -1 / c;
       }
-    } else if (std::abs(tau) < bound) {
+    } else if (std::abs(tau) < bound || s.held_stick) {
       point.status = ContactStatus::Stick;
       if (out) {
         out->residual[it] = ds;
@@ -263,7 +263,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     }
     const double trial = s.committed_tangential_force + k * ds;
     Vec dT = Vec::Zero(n_local);
-    if (N > 0 && std::abs(trial) <= mu * N) {
+    if (N > 0 && (std::abs(trial) <= mu * N || s.held_stick)) {
       T = trial;
       point.status = ContactStatus::Stick;
       dT.head(nu) += k * grad_ds;
@@ -317,6 +317,10 @@ ContactNodeValues ContactNode::values(const EvaluationState& state) const {
   return v;
 }
 
-ContactStatus ContactNode::status(const EvaluationState& state) const { return compute(state, nullptr, false).status; }
+std::pair<ContactStatus, int> ContactNode::status_and_direction(const EvaluationState& state) const {
+  const Point p = compute(state, nullptr, false);
+  const int direction = p.status == ContactStatus::Slip && pair_.mu() > 0 ? (p.tangential_force >= 0 ? 1 : -1) : 0;
+  return {p.status, direction};
+}
 
 }  // namespace tether

@@ -20,6 +20,8 @@
 /// tangent since the last converged increment, N >= 0 the normal force, c the
 /// pair's complementarity stiffness. Derivations: docs/theory/contact.md.
 
+#include <utility>
+
 #include "tether/assembly/contribution.hpp"
 #include "tether/model/results.hpp"
 
@@ -39,7 +41,10 @@ class ContactNode final : public Contribution {
   [[nodiscard]] std::string describe() const override;
 
   /// Status at the state (as the residual sees it).
-  [[nodiscard]] ContactStatus status(const EvaluationState& state) const;
+  [[nodiscard]] ContactStatus status(const EvaluationState& state) const { return status_and_direction(state).first; }
+  /// Status and, for a slipping node with friction, the direction of the
+  /// friction force (+1 or -1 along the master tangent; 0 otherwise).
+  [[nodiscard]] std::pair<ContactStatus, int> status_and_direction(const EvaluationState& state) const;
 
   /// Output values at the state (status, gap, forces, slip).
   [[nodiscard]] ContactNodeValues values(const EvaluationState& state) const;

@@ -92,7 +92,8 @@ void ContactPair::start_attempt(const EvaluationState& state) {
   attempt_dt_ = state.dt;
   releases_ = 0;
   uzawa_updates_ = 0;
-  for (ContactSlave& s : slaves_) s.status_changes = 0, s.held_closed = false;
+  for (ContactSlave& s : slaves_)
+    s.status_changes = 0, s.held_closed = false, s.slip_direction = 0, s.direction_flips = 0, s.held_stick = false;
 }
 
 bool ContactPair::update_connectivity(const EvaluationState& state) {
@@ -174,7 +175,12 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
                     setup_.law.enforcement.method == Enforcement::Method::Lagrange;
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     ContactSlave& s = slaves_[i];
-    const ContactStatus status = nodes_[i]->status(state);
+    const auto [status, direction] = nodes_[i]->status_and_direction(state);
+    // Friction guard: a node whose slip keeps reversing is really sticking.
+    if (!new_attempt && direction != 0 && s.slip_direction != 0 && direction != s.slip_direction &&
+        ++s.direction_flips >= setup_.max_direction_flips)
+      s.held_stick = true;
+    s.slip_direction = direction;
     if (!new_attempt && status != s.status) {
       ++statistics_.status_changes;
       const bool flipped = (status == ContactStatus::Open) != (s.status == ContactStatus::Open);
@@ -184,7 +190,7 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
     }
     s.status = s.held_closed ? (status == ContactStatus::Open ? ContactStatus::Slip : status) : status;
     if (s.status != ContactStatus::Open) ++statistics_.closed;
-    if (s.held_closed) ++statistics_.held_closed;
+    if (s.held_closed || s.held_stick) ++statistics_.held_closed;
   }
   return changed;
 }
@@ -209,22 +215,31 @@ Acceptance ContactPair::on_converged(const EvaluationState& state) {
     return Acceptance::Iterate;
   }
   bool released = false;
-  for (ContactSlave& s : slaves_) {
-    if (!s.held_closed) continue;
-    // A held node must carry compression; in tension it should have opened.
-    if (state.u[s.normal_multiplier] < 0) {
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    ContactSlave& s = slaves_[i];
+    // A node held closed must carry compression; in tension it should have opened.
+    if (s.held_closed && state.u[s.normal_multiplier] < 0) {
       s.held_closed = false;
       s.status_changes = 0;
       released = true;
     }
+    // A node held in stick must stay inside the friction cone.
+    if (s.held_stick) {
+      const ContactNodeValues v = nodes_[i]->values(state);
+      if (std::abs(v.tangential_force) > mu() * v.normal_force * (1 + 1e-9) + 1e-12 * std::abs(v.normal_force)) {
+        s.held_stick = false;
+        s.direction_flips = 0;
+        released = true;
+      }
+    }
   }
   if (!released) {
-    for (ContactSlave& s : slaves_) s.held_closed = false;
+    for (ContactSlave& s : slaves_) s.held_closed = false, s.held_stick = false;
     return Acceptance::Accept;
   }
   if (++releases_ > kMaxReleases)
-    throw ModelError(setup_.name + ": the contact active set keeps cycling (nodes held closed by the chattering "
-                     "guard carry tension after " + std::to_string(kMaxReleases) + " releases)");
+    throw ModelError(setup_.name + ": the contact active set keeps cycling (nodes held closed or in stick by the "
+                     "chattering guard violate their condition after " + std::to_string(kMaxReleases) + " releases)");
   return Acceptance::Iterate;
 }
 

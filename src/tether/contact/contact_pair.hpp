@@ -49,6 +49,9 @@ struct ContactPairSetup {
   /// Changes of status of one slave node within an increment attempt after
   /// which it is held closed until Newton converges (chattering guard).
   int max_status_changes = 4;
+  /// Reversals of the slip direction of one node within an attempt after
+  /// which it is held in stick until Newton converges (friction guard).
+  int max_direction_flips = 2;
 };
 
 /// Per-slave record: pairing, dofs, committed history.
@@ -70,6 +73,9 @@ struct ContactSlave {
   ContactStatus status = ContactStatus::Open;  ///< at the last update_connectivity
   int status_changes = 0;
   bool held_closed = false;        ///< chattering guard engaged
+  int slip_direction = 0;          ///< friction force direction at the last update_connectivity (slip only)
+  int direction_flips = 0;         ///< reversals of the slip direction in this attempt
+  bool held_stick = false;         ///< friction guard engaged: held in stick until Newton converges
 };
 
 /// Work done by the last update_connectivity (for the iteration log).
@@ -77,7 +83,7 @@ struct ContactIterationStatistics {
   int closed = 0;         ///< slave nodes in contact (stick or slip)
   int status_changes = 0; ///< nodes whose status changed since the previous iteration
   int repaired = 0;       ///< nodes paired with another segment
-  int held_closed = 0;    ///< nodes held by the chattering guard
+  int held_closed = 0;    ///< nodes held by the chattering guard (closed, or in stick)
 };
 
 class ContactPair final : public Contribution {
