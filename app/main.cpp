@@ -62,11 +62,18 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
     writer.finish(false, e.what());
     throw;
   }
-  writer.finish(summary.completed, summary.message);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const SolveTiming& t = summary.timing;
+  const std::string timing =
+      fmt::format("time {:.2f} s: contact search {:.2f}, assembly {:.2f}, analyse {:.2f}, factorize {:.2f} ({} "
+                  "factorizations), solve {:.2f}, output {:.2f}",
+                  seconds, t.contact_search, t.assembly, t.analyse, t.factorize, t.factorizations, t.solve, t.output);
+  observer.on_message(timing);
+  writer.finish(summary.completed, summary.message);
   if (!quiet) {
     fmt::print("{}: {} ({} increments, {} iterations, {} cut-backs, {:.2f} s)\n", job, summary.message,
                summary.increments, summary.iterations, summary.cutbacks, seconds);
+    fmt::print("{}\n", timing);
     fmt::print("results: {}  {}  {}\n", writer.pvd_path().string(), writer.dat_path().string(),
                writer.sta_path().string());
   }

@@ -1,5 +1,6 @@
 #include "tether/analysis/increment_problem.hpp"
 
+#include <chrono>
 #include <cmath>
 
 namespace tether {
@@ -23,9 +24,13 @@ EvaluationState IncrementProblem::state() const {
 bool IncrementProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent, IterationNorms& norms,
                                 double& force_scale) {
   const EvaluationState s = state();
+  const auto t0 = std::chrono::steady_clock::now();
   const bool changed = assembler_.update_connectivity(s);
+  const auto t1 = std::chrono::steady_clock::now();
   assembler_.assemble(s, full_, tangent);
   full_ -= external_;
+  search_seconds_ = std::chrono::duration<double>(t1 - t0).count();
+  assembly_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
 
   const EquationMap& eqs = assembler_.equations();
   const int n_disp = dofs_.n_displacement_dofs();

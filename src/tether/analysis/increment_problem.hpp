@@ -33,6 +33,10 @@ class IncrementProblem final : public NewtonProblem {
   [[nodiscard]] bool symmetric() const override { return symmetric_; }
   [[nodiscard]] std::string describe_equation(int eq) const override;
   [[nodiscard]] bool is_multiplier_equation(int eq) const override;
+  void add_evaluation_time(SolveTiming& timing) const override {
+    timing.contact_search += search_seconds_;
+    timing.assembly += assembly_seconds_;
+  }
 
   /// Residual over all global dofs from the last evaluate (reactions at prescribed dofs).
   [[nodiscard]] const Eigen::VectorXd& full_residual() const { return full_; }
@@ -48,6 +52,7 @@ class IncrementProblem final : public NewtonProblem {
   IncrementTime time_;
   bool symmetric_;
   Eigen::VectorXd full_;
+  double search_seconds_ = 0, assembly_seconds_ = 0;  ///< of the last evaluate()
 };
 
 }  // namespace tether

@@ -1,10 +1,17 @@
 #include "tether/analysis/newton.hpp"
 
+#include <chrono>
 #include <cmath>
 
 #include "tether/core/error.hpp"
 
 namespace tether {
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
 
 NewtonSolver::NewtonSolver(LinearSolver& solver, const Controls& controls, double length_scale)
     : solver_(solver), controls_(controls), criteria_(controls, length_scale) {}
@@ -20,7 +27,9 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
   for (int iteration = 0;; ++iteration) {
     double q = 0;
     try {
-      if (problem.evaluate(residual, &tangent, norms, q)) analysed_ = false;
+      const bool changed = problem.evaluate(residual, &tangent, norms, q);
+      problem.add_evaluation_time(timing_);
+      if (changed) analysed_ = false;
     } catch (const ModelError& e) {
       out.status = NewtonOutcome::Status::ElementFailure;
       out.message = e.what();
@@ -53,9 +62,18 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
     }
 
     try {
-      if (!analysed_) solver_.analyze(tangent), analysed_ = true;
+      auto t0 = std::chrono::steady_clock::now();
+      if (!analysed_) {
+        solver_.analyze(tangent), analysed_ = true;
+        timing_.analyse += seconds_since(t0);
+        t0 = std::chrono::steady_clock::now();
+      }
       solver_.factorize(tangent, problem.symmetric());
+      ++timing_.factorizations;
+      timing_.factorize += seconds_since(t0);
+      t0 = std::chrono::steady_clock::now();
       solver_.solve(-residual, correction);
+      timing_.solve += seconds_since(t0);
     } catch (const SolverError& e) {
       out.status = NewtonOutcome::Status::SingularMatrix;
       out.singular_at_start = iteration == 0;
@@ -82,6 +100,7 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
       for (int k = 0; k < 5; ++k) {
         try {
           problem.evaluate(trial, nullptr, trial_norms, trial_q);
+          problem.add_evaluation_time(timing_);
         } catch (const ModelError&) {
           trial_norms.force_residual = INFINITY;
         }

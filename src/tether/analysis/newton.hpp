@@ -15,6 +15,17 @@
 
 namespace tether {
 
+/// Wall-clock seconds spent in the parts of the solution (summed over calls).
+struct SolveTiming {
+  double contact_search = 0;  ///< update_connectivity: contact search and pattern rebuilds
+  double assembly = 0;        ///< residual and tangent (elements, constraints, contact)
+  double analyse = 0;         ///< symbolic analysis (ordering) of the linear solver
+  double factorize = 0;       ///< numeric factorization
+  double solve = 0;           ///< triangular solves
+  double output = 0;          ///< results and writers (set by the analysis)
+  int factorizations = 0;
+};
+
 /// The nonlinear system of one increment, in terms of its free equations.
 class NewtonProblem {
  public:
@@ -34,6 +45,8 @@ class NewtonProblem {
   [[nodiscard]] virtual std::string describe_equation(int eq) const = 0;
   /// True when free equation `eq` is a constraint (multiplier) row.
   [[nodiscard]] virtual bool is_multiplier_equation(int eq) const = 0;
+  /// Adds the time of the last evaluate() to `timing` (search and assembly).
+  virtual void add_evaluation_time(SolveTiming& /*timing*/) const {}
 };
 
 /// How an attempt ended.
@@ -60,11 +73,15 @@ class NewtonSolver {
   NewtonOutcome solve(NewtonProblem& problem, double averaged_force, int n_averaged,
                       const IterationListener& listener = {});
 
+  /// Time spent so far in the problem's evaluations and in the linear solver.
+  [[nodiscard]] const SolveTiming& timing() const { return timing_; }
+
  private:
   LinearSolver& solver_;
   Controls controls_;
   ConvergenceCriteria criteria_;
   bool analysed_ = false;
+  SolveTiming timing_;
 };
 
 }  // namespace tether

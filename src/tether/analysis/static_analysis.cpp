@@ -1,6 +1,7 @@
 #include "tether/analysis/static_analysis.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -124,6 +125,21 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   int n_averaged = 0;
   const double step_start_time = total_time_;
 
+  double output_seconds = 0;
+  // Adds this step's timing to the summary (at every exit of the step).
+  struct TimingGuard {
+    AnalysisSummary& summary;
+    const NewtonSolver& newton;
+    const double& output;
+    ~TimingGuard() {
+      const SolveTiming& t = newton.timing();
+      SolveTiming& s = summary.timing;
+      s.contact_search += t.contact_search, s.assembly += t.assembly, s.analyse += t.analyse;
+      s.factorize += t.factorize, s.solve += t.solve, s.factorizations += t.factorizations;
+      s.output += output;
+    }
+  } timing_guard{summary, newton, output_seconds};
+
   auto stop = [&](const std::string& why) {
     summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(step_time) +
                       ": " + why +
@@ -210,6 +226,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
 
     if (report.converged) {
       const EvaluationState s = problem.state();
+      const auto output_start = std::chrono::steady_clock::now();
       // Results first: they describe the increment (contact slip since the
       // last converged state), which commit() then makes history.
       IncrementResults results = build_results(disc, s, problem.full_residual(), assembler.equations());
@@ -228,6 +245,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       results.total_time = total_time_;
       results.iterations = iterations;
       observer_.on_results(results, step, step_time >= period * (1 - 1e-12));
+      output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
 
       if (!step.direct) {
         easy_in_row = iterations <= controls.easy_iterations ? easy_in_row + 1 : 0;

@@ -15,6 +15,7 @@
 
 #include "tether/analysis/analysis_observer.hpp"
 #include "tether/analysis/discretization.hpp"
+#include "tether/analysis/newton.hpp"
 #include "tether/solvers/linear_solver.hpp"
 
 namespace tether {
@@ -30,6 +31,7 @@ struct AnalysisSummary {
   int increments = 0;       ///< converged increments in all steps
   int iterations = 0;       ///< Newton iterations in all attempts
   int cutbacks = 0;         ///< failed attempts
+  SolveTiming timing;       ///< where the time went (all steps)
 };
 
 class StaticAnalysis {
