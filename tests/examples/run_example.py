@@ -3,7 +3,7 @@
 
 Usage: run_example.py EXAMPLE TETHER_EXE SOURCE_DIR WORK_DIR USER_CONSTRAINT_MODULE
 
-EXAMPLE is rigid_link, formula_constraint, user_constraint or periodic_rve. The deck is copied
+EXAMPLE is rigid_link, formula_constraint, user_constraint, periodic_rve or hertz. The deck is copied
 into WORK_DIR (the user constraint's LIBRARY= is pointed at the module the build
 made), run with `tether run -q`, and its .dat is read with tools/datfile.py.
 The expected values are the exact ones quoted in the example's README.
@@ -114,6 +114,16 @@ def main(argv):
               f"across {across:.4f} (inverse rule 150.9434)")
         if abs(along - 437.5) > 1e-3 or abs(across - 150.943396) > 1e-3:
             fail("effective moduli differ from the rules of mixtures")
+    elif example == "hertz":
+        blocks = run(tether, os.path.join(folder, "hertz.inp"), work)
+        stress = [b for b in blocks if b["title"].startswith("contact stress")]
+        if not stress:
+            fail("no contact stress block")
+        peak = max(r[1] for r in stress[-1]["rows"])
+        p0 = 2644.96
+        print(f"hertz: peak contact pressure {peak:.1f} MPa (exact p0 = {p0}), error {100 * (peak / p0 - 1):+.2f} %")
+        if abs(peak / p0 - 1) > 0.01:
+            fail("peak pressure more than 1 % from Hertz")
     else:
         fail(f"unknown example {example}")
     return 0
