@@ -1,0 +1,51 @@
+#!/usr/bin/python3
+"""Plots the nodal contact pressure of both patch-test runs against the exact
+uniform pressure (reads the .dat 'contact state' block and the decks' nodes)."""
+import os
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+import datfile  # noqa: E402
+
+P = 10.0
+
+
+def nodes_of(deck):
+    x, reading = {}, False
+    for line in open(deck):
+        if line.startswith("*"):
+            reading = line.upper().startswith("*NODE") and not line.upper().startswith("*NODE PRINT")
+            continue
+        if reading:
+            f = line.split(",")
+            x[int(f[0])] = float(f[1])
+    return x
+
+
+def main():
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for name, marker in (("fine_on_coarse", "o"), ("coarse_on_fine", "s")):
+        x = nodes_of(f"{name}.inp")
+        blocks = [b for b in datfile.read(os.path.join(name, name + ".dat")) if b["title"].startswith("contact state")]
+        rows = sorted(blocks[-1]["rows"], key=lambda r: x[int(r[0])])
+        xs, ps = [x[int(r[0])] for r in rows], [r[3] for r in rows]
+        error = max(abs(p / P - 1) for p in ps)
+        print(f"{name}: max pressure error {100 * error:.2f} %")
+        ax.plot(xs, ps, marker + "-", label=f"{name.replace('_', ' ')}: max error {100 * error:.1f} %")
+    ax.axhline(P, color="k", lw=1, label="exact (uniform)")
+    ax.set_xlabel("x of the slave node")
+    ax.set_ylabel("contact pressure")
+    ax.set_title("contact patch test, one-pass node-to-segment, CPE4")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig("contact_patch.png", dpi=100)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
