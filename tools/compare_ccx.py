@@ -132,6 +132,7 @@ class DeckInfo:
         self.keywords = set()
         self.cload_nodes, self.pressure_nodes, self.constrained = set(), set(), set()
         self.max_node = 0
+        self.node_labels = set()
         self.params = []
         for params, data, _ in self.cards:
             kw = params["_kw"]
@@ -140,6 +141,7 @@ class DeckInfo:
             if kw == "*NODE":
                 ids = [int(l.split(",")[0]) for l in data]
                 self.max_node = max([self.max_node] + ids)
+                self.node_labels.update(ids)
                 if "NSET" in params:
                     self.nsets.setdefault(params["NSET"].upper(), []).extend(ids)
             elif kw == "*ELEMENT":
@@ -389,12 +391,23 @@ class Stat:
         return self.max_abs / self.max_value if self.max_value > 0 else (0.0 if self.max_abs == 0 else float("inf"))
 
 
-def contact_rows_by_node(rows, max_node):
-    """ccx numbers contact slave nodes in the expanded 3D mesh (2D node n -> nk + 3(n-1) + 1..3): map back, average."""
+def contact_rows_by_node(rows, max_node, node_labels=()):
+    """Contact pressure per 2D node label, layers averaged.
+
+    ccx numbers contact slave nodes in its expanded 3D mesh: the k-th node of
+    the sorted label list (k = 1, 2, ...) becomes nk + 3(k-1) + 1..3, nk the
+    highest label (measured on ccx 2.20 with gaps in the labels: 2D node 11 of
+    labels 1-6, 11-16 became 35..37). Labels up to nk are tether's own rows.
+    """
+    ordered = sorted(node_labels)
     acc = {}
     for r in rows:
         nid = int(r[0])
-        n2d = (nid - max_node - 1) // 3 + 1 if nid > max_node else nid
+        if nid > max_node:
+            k = (nid - max_node - 1) // 3
+            n2d = ordered[k] if k < len(ordered) else k + 1
+        else:
+            n2d = nid
         acc.setdefault(n2d, []).append(r[1])
     return {n: sum(v) / len(v) for n, v in acc.items()}
 
@@ -483,8 +496,8 @@ def compare(ccx_blocks, tet_blocks, info, rf_scale):
                         for k in range(4):
                             stats[kind].add(ref[k], vals[k], f"{where0} elem {e} ip {ip} {COMPONENTS[kind][k]}")
             elif kind == "P":
-                cp = contact_rows_by_node(cb["rows"], info.max_node)
-                tp = contact_rows_by_node(tb["rows"], info.max_node)
+                cp = contact_rows_by_node(cb["rows"], info.max_node, info.node_labels)
+                tp = contact_rows_by_node(tb["rows"], info.max_node, info.node_labels)
                 for n, v in tp.items():
                     if n in cp:
                         stats[kind].add(cp[n], v, f"{where0} node {n}")
