@@ -540,7 +540,7 @@ def model_differences(info):
         if "NODE TO SURFACE" in types_c:
             out.append("NODE TO SURFACE (ccx): re-pairs up to iteration 8 then freezes; fails the contact patch test "
                        "(-14..+11 % pressure on CPE4). Contact pressures are mapped from ccx's 3D node ids "
-                       "(nk + 3(n-1) + 1..3) back to 2D nodes and averaged.")
+                       "(k-th sorted label -> nk + 3(k-1) + 1..3) back to 2D nodes and averaged.")
         if info.has("*FRICTION"):
             out.append("*FRICTION: ccx reads 'mu, stick slope'; ABAQUS reads the 2nd field differently.")
     if info.has("*TIE"):
