@@ -53,6 +53,14 @@ TEST(ContactKeywords, ContactOutputRequests) {
   EXPECT_EQ(m.steps[0].outputs[0].kind, OutputRequest::Kind::ContactPrint);
   EXPECT_EQ(m.steps[0].outputs[0].variables, (std::vector<std::string>{"CSTR", "CDIS"}));
   EXPECT_EQ(m.steps[0].outputs[1].frequency, 2);
+
+  // CELS is accepted (ccx decks ask for it) but tether has no contact energy: said so.
+  std::vector<DeckWarning> warnings;
+  read_deck_string(replaced(with_contact("*SURFACE INTERACTION, NAME=SI\n"), "*END STEP", "*CONTACT PRINT\nCSTR, CELS\n*END STEP"),
+                   "c.inp", &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].message.find("CELS"), std::string::npos);
+  EXPECT_NE(warnings[0].message.find("not written"), std::string::npos);
 }
 
 TEST(ContactKeywords, ErrorsNameTheLine) {

@@ -175,6 +175,9 @@ void handle_contact_output(DeckState& state, const KeywordBlock& block, const Pa
                                  "CSTR, CDIS, CSTRESS, CDISP, CFN, CFS, CELS)");
         continue;
       }
+      if (v == "CELS")
+        state.warn(line.where(), "contact output variable CELS (contact elastic energy) is not computed by tether "
+                                 "and is not written");
       r.variables.push_back(v);
     }
   if (r.variables.empty()) r.variables = {"CSTR", "CDIS"};
