@@ -2,7 +2,8 @@
 """Plane-strain Hertz benchmark: generates the decks, runs CalculiX and tether, compares with the exact solution.
 
     hertz_bench.py [CASE ...] [--codes ccx,tether] [--workdir DIR] [--results FILE.md]
-                   [--json FILE.json] [--ccx-reference FILE.json] [--ccx-max 230k]
+                   [--json FILE.json] [--ccx-reference FILE.json [--reference-from OLD.json]]
+                   [--ccx-max 230k]
                    [--tether build/bin/tether] [--ccx ccx] [--timeout 3600] [--threads 1]
                    [--increments 10] [--seat DELTA] [--wait-load 1.0 --wait-max 900]
 
@@ -26,8 +27,10 @@ from tools/hertz_summary.py on each code's .dat (its docstring says how).
 A run that fails (exit status, timeout, no contact pressure) becomes a row
 "CODE: failed (message)"; the script goes on with the next run. The table is
 printed and written as Markdown to --results (with the machine, the load, the
-versions and the command); --json writes everything; --ccx-reference writes the
-ccx rows only (the reference figures of bench/hertz/ccx_reference.json).
+versions and the command); --json writes everything; --ccx-reference merges
+compact ccx records (one per case, with date, command and load) into a reference
+file (bench/hertz/ccx_reference.json): records of the cases run replace the old
+ones, the others are kept; --reference-from takes them from an earlier --json.
 --wait-load X waits (up to --wait-max s) before each run until the 1-minute load
 average is below X (the machine is shared); the load at the start of each run is
 recorded either way. Exit status 0 (failed runs are reported, not fatal), 2 bad
@@ -320,6 +323,8 @@ def main(argv=None):
     ap.add_argument("--results", help="write the Markdown table here (e.g. bench/hertz/results.md)")
     ap.add_argument("--json", help="write all figures here")
     ap.add_argument("--ccx-reference", help="write the ccx figures here (bench/hertz/ccx_reference.json)")
+    ap.add_argument("--reference-from", metavar="RESULTS.json",
+                    help="no runs: merge the ccx rows of an earlier --json file into --ccx-reference")
     ap.add_argument("--ccx-max", default="230k", type=make_hertz_deck.parse_count,
                     help="largest target size run in ccx (default 230k: ~260 s, 3.9 GB; 1M needs far more)")
     ap.add_argument("--tether", default=os.path.join(ROOT, "build", "bin", "tether"))
@@ -332,6 +337,11 @@ def main(argv=None):
     ap.add_argument("--wait-load", type=float, help="wait before each run until the 1-minute load is below this")
     ap.add_argument("--wait-max", type=float, default=900, help="longest wait for --wait-load [s] (default 900)")
     args = ap.parse_args(argv)
+    if args.reference_from:
+        if not args.ccx_reference:
+            ap.error("--reference-from needs --ccx-reference")
+        import_reference(args.ccx_reference, args.reference_from)
+        return 0
     try:
         cases = [parse_case(c, args.element) for c in args.cases]
     except argparse.ArgumentTypeError as e:
@@ -376,17 +386,75 @@ def main(argv=None):
     if args.results:
         write_results(args.results, rows, decks, meta)
         print(f"\nwritten: {args.results}")
-    if args.json or args.ccx_reference:
-        def dump(path, selected):
-            with open(path, "w") as f:
-                json.dump({"meta": meta, "decks": [{"case": c["spec"], **i} for c, i in decks],
-                           "runs": [{**r, "case": r["case"]["spec"]} for r in selected]}, f, indent=2, default=str)
-            print(f"written: {path}")
-        if args.json:
-            dump(args.json, rows)
-        if args.ccx_reference:
-            dump(args.ccx_reference, [r for r in rows if r["code"] == "ccx"])
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({"meta": meta, "decks": [{"case": c["spec"], **i} for c, i in decks],
+                       "runs": [{**r, "case": r["case"]["spec"]} for r in rows]}, f, indent=2, default=str)
+        print(f"written: {args.json}")
+    if args.ccx_reference:
+        merge_reference(args.ccx_reference, reference_records(rows, {c["spec"]: i for c, i in decks}, meta), meta)
     return 0
+
+
+def import_reference(reference, results_json):
+    """Merges the ccx rows of an earlier --json file into the reference file (no runs)."""
+    with open(results_json) as f:
+        data = json.load(f)
+    decks = {d["case"]: d for d in data["decks"]}
+    merge_reference(reference, reference_records(data["runs"], decks, data["meta"]), data["meta"])
+
+
+def reference_records(rows, decks, meta):
+    """Compact ccx records (one per case) with the run's context."""
+    out = []
+    for r in rows:
+        if r["code"] != "ccx" or r.get("status") not in ("ok", "failed"):
+            continue
+        spec = r["case"]["spec"] if isinstance(r["case"], dict) else r["case"]
+        info = decks.get(spec, {})
+        s = r.get("summary", {})
+        rec = {"case": spec, "element": info.get("element"), "body": "rigid flat" if info.get("rigid_flat") else "elastic block",
+               "dofs": r["dofs"], "nodes": info.get("nodes"), "elements": info.get("elements"), "h": info.get("h"),
+               "seat_mm": info.get("seat"), "increments_requested": info.get("increments"),
+               "status": r["status"], "message": r.get("message"),
+               "wall_s": round(r["wall"], 2) if r.get("wall") is not None else None,
+               "cpu_s": round(r["cpu"], 2) if r.get("cpu") is not None else None,
+               "peak_memory_mb": round(r["rss_kb"] / 1024, 1) if r.get("rss_kb") else None,
+               "newton_iterations": r.get("iterations"), "newton_iterations_all": r.get("iterations_all"),
+               "increments": r.get("increments"), "load_at_start": round(r.get("load_at_start", 0), 2),
+               "peak_pressure": s.get("peak"), "peak_error": s.get("peak_error"),
+               "p0_fit_error": s.get("p0_fit_error"), "a_fit_error": s.get("a_fit_error"),
+               "a_edge_error": s.get("edge_error"), "contact_force_error": s.get("contact_force_error"),
+               "pressure_from": s.get("source"),
+               "date": meta["date"], "command": r.get("command"), "bench_command": meta["command"],
+               "deck_command": info.get("generator_command")}
+        out.append(rec)
+    return out
+
+
+def merge_reference(path, records, run_meta):
+    """Writes the records into the reference file, replacing those of the same case and keeping the others."""
+    old = {"records": []}
+    if os.path.exists(path):
+        with open(path) as f:
+            old = json.load(f)
+    cases = {r["case"] for r in records}
+    kept = [r for r in old.get("records", []) if r["case"] not in cases]
+    head = dict(REFERENCE_META, machine=run_meta["machine"], ccx_version=run_meta["versions"].get("ccx"),
+                threads=run_meta.get("threads"))
+    with open(path, "w") as f:
+        json.dump({**head, "records": kept + records}, f, indent=2)
+    print(f"written: {path} ({len(records)} record(s) updated, {len(kept)} kept)")
+
+
+REFERENCE_META = {
+    "what": "CalculiX 2.20 on the plane-strain Hertz decks of tools/make_hertz_deck.py (half model, R 10 mm, "
+            "E 200 GPa, nu 0.3, P 2000 N/mm); written by tools/hertz_bench.py --ccx-reference",
+    "fields": "wall_s/cpu_s/peak_memory_mb from /usr/bin/time -v (cpu = user + system); newton_iterations = sum of ITRS "
+              "in the .sta, _all = rows of the .cvg; errors relative to the exact a, p0 (tools/hertz_summary.py: peak "
+              "= largest nodal CSTR pressure, fit = p^2 = A - B x^2 over p >= peak/2, edge = profile through the last "
+              "two closed nodes); load_at_start = 1-minute load average of the shared machine",
+}
 
 
 if __name__ == "__main__":

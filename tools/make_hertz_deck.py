@@ -62,8 +62,9 @@ Usage:
   make_hertz_deck.py OUT.inp [--dofs 25k | --h H] [--element CPE4|CPE8] [--rigid-flat]
                      [--load 2000] [--increments 10] [--seat DELTA | --no-seat]
                      [--linear K] [--controls R_n C_n] [--nlgeom] [--core 3] [--block 20]
-                     [--gmsh gmsh] [--json OUT.json]
-Prints one line with the mesh parameters; --json writes them (and a, p0) to a file.
+                     [--gmsh gmsh] [--json OUT.json] [--plot MESH.png]
+Prints one line with the mesh parameters; --json writes them (and a, p0) to a file;
+--plot draws the mesh (needs matplotlib: /usr/bin/python3 on Debian).
 """
 import argparse
 import json
@@ -402,6 +403,32 @@ def write_deck(path, mesh, opts, exact):
             "behavior": f"LINEAR {opts.linear:g}" if opts.linear else "HARD"}
 
 
+def plot_mesh(mesh, path, a):
+    """Three views of the mesh (whole model, cylinder, contact zone) into a PNG (needs matplotlib)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import PolyCollection
+    xy = mesh["xy"]
+    polys = [[xy[n] for n in e[:4]] for e in mesh["cyl"] + mesh["block"]]
+    c = mesh["c"]
+    ymin = min(y for _, y in xy)
+    views = [("model", (-0.02 * R, max(x for x, _ in xy), ymin, 1.05 * R)),
+             ("cylinder and the block near it", (-0.02 * R, 1.2 * R, -0.6 * R, 1.05 * R)),
+             (f"contact zone (a = {a:.3g} mm)", (-0.05 * c, 1.3 * c, -0.7 * c, 0.9 * c))]
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5))
+    for ax, (title, (x0, x1, y0, y1)) in zip(axes, views):
+        ax.add_collection(PolyCollection(polys, facecolors="none", edgecolors="k", linewidths=0.25))
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
+        ax.set_aspect("equal")
+        ax.set_title(title, fontsize=10)
+    axes[2].axvline(a, color="tab:red", lw=0.8, ls="--")
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
 def growth_for(h, a, element):
     """Size growth per unit distance outside the core: 2 (node spacing)/a, at most 0.3 (CPE4) or 0.5 (CPE8)."""
     spacing = h / 2.0 if element == "CPE8" else h
@@ -431,6 +458,7 @@ def main(argv=None):
     ap.add_argument("--block", type=float, default=20.0, help="block half-width and depth in units of R (default 20)")
     ap.add_argument("--gmsh", default="gmsh", help="gmsh program (default gmsh)")
     ap.add_argument("--json", help="also write the mesh parameters to this JSON file")
+    ap.add_argument("--plot", metavar="PNG", help="also draw the mesh (whole, cylinder, contact zone) into this PNG (matplotlib)")
     opts = ap.parse_args(argv)
     exact = hertz_exact.hertz(opts.load, R, E, NU, opts.rigid_flat)
     a = exact["a"]
@@ -452,6 +480,8 @@ def main(argv=None):
                 h *= math.sqrt(n / target) ** 1.1
             mesh = min(tried, key=lambda t: t[0])[2]
     info = write_deck(opts.out, mesh, opts, exact)
+    if opts.plot:
+        plot_mesh(mesh, opts.plot, a)
     if opts.json:
         with open(opts.json, "w") as f:
             json.dump(info, f, indent=2)
