@@ -96,8 +96,8 @@ int main(int argc, char** argv) {
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
   run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
   run_cmd->add_option("-o,--output", output_dir, "Output directory (default: next to the deck, named after it)");
-  run_cmd->add_option("--solver", solver, "Linear solver: auto, umfpack, cholmod or sparselu")
-      ->check(CLI::IsMember({"auto", "umfpack", "cholmod", "sparselu"}, CLI::ignore_case));
+  run_cmd->add_option("--solver", solver, "Linear solver: auto, umfpack, cholmod, mumps or sparselu")
+      ->check(CLI::IsMember({"auto", "umfpack", "cholmod", "mumps", "sparselu"}, CLI::ignore_case));
   run_cmd->add_flag("--ascii", ascii, "Write ASCII instead of binary VTU (for debugging)");
   run_cmd->add_flag("-q,--quiet", quiet, "Print nothing but errors");
   auto* check_cmd = app.add_subcommand("check", "Read and validate a deck without solving it");

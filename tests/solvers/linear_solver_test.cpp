@@ -60,13 +60,14 @@ TEST_P(EverySolver, ReportsSingularMatrixWithEquation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Kinds, EverySolver,
-                         ::testing::Values(SolverKind::Auto, SolverKind::Umfpack, SolverKind::Cholmod, SolverKind::SparseLU));
+                         ::testing::Values(SolverKind::Auto, SolverKind::Umfpack, SolverKind::Cholmod, SolverKind::SparseLU,
+                                           SolverKind::Mumps));
 
 TEST(LinearSolver, AutoAndUmfpackSolveSaddlePoint) {
   const SparseMatrix a = saddle_point();
   const Eigen::Vector3d x_exact(1, 2, 3);
   const Eigen::VectorXd b = a * x_exact;
-  for (auto kind : {SolverKind::Auto, SolverKind::Umfpack, SolverKind::SparseLU}) {
+  for (auto kind : {SolverKind::Auto, SolverKind::Umfpack, SolverKind::SparseLU, SolverKind::Mumps}) {
     auto solver = make_linear_solver(kind);
     solver->analyze(a);
     solver->factorize(a, true);
@@ -85,5 +86,41 @@ TEST(LinearSolver, CholmodRefusesIndefinite) {
 
 TEST(LinearSolver, ParsesNames) {
   EXPECT_EQ(parse_solver_kind("UMFPACK"), SolverKind::Umfpack);
-  EXPECT_THROW(parse_solver_kind("mumps"), std::invalid_argument);
+  EXPECT_EQ(parse_solver_kind("Mumps"), SolverKind::Mumps);
+  EXPECT_THROW(parse_solver_kind("pardiso"), std::invalid_argument);
+}
+
+TEST(LinearSolver, AutoUsesLdltForSymmetricSaddlePointsAndLuOtherwise) {
+  // A symmetric saddle point (multipliers) goes to MUMPS LDLT; an SPD matrix to
+  // CHOLMOD; an unsymmetric one to UMFPACK.
+  auto solver = make_linear_solver(SolverKind::Auto);
+  const SparseMatrix saddle = saddle_point();
+  solver->analyze(saddle);
+  solver->factorize(saddle, true);
+  EXPECT_EQ(solver->name(), "MUMPS LDLT");
+  const SparseMatrix spd = laplacian(20, 1.0);
+  solver->analyze(spd);
+  solver->factorize(spd, true);
+  EXPECT_NE(solver->name().find("CHOLMOD"), std::string::npos) << solver->name();
+  solver->analyze(saddle);
+  solver->factorize(saddle, false);
+  EXPECT_NE(solver->name().find("UMFPACK"), std::string::npos) << solver->name();
+}
+
+TEST(LinearSolver, MumpsNamesTheRedundantConstraintRow) {
+  // Two identical constraint rows u_0 - u_1 = 0 on an SPD block: the second is
+  // redundant; LDLT finds a zero pivot in a multiplier row (2 or 3).
+  std::vector<Eigen::Triplet<double>> t{{0, 0, 2}, {1, 1, 2}, {0, 1, -1}, {1, 0, -1}};
+  for (int r : {2, 3}) t.insert(t.end(), {{r, 0, 1}, {0, r, 1}, {r, 1, -1}, {1, r, -1}});
+  SparseMatrix a(4, 4);
+  a.setFromTriplets(t.begin(), t.end());
+  a.makeCompressed();
+  auto solver = make_linear_solver(SolverKind::Mumps);
+  solver->analyze(a);
+  try {
+    solver->factorize(a, true);
+    FAIL() << "redundant constraints accepted";
+  } catch (const SolverError& e) {
+    EXPECT_TRUE(e.equation() == 2 || e.equation() == 3) << e.what() << " at " << e.equation();
+  }
 }

@@ -105,12 +105,14 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   check_constraints(disc, assembler.equations(), EvaluationState{u_, u_, 0, total_time_, 0, step.nlgeom});
   auto solver = make_linear_solver(options_.solver);
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
-  // Cholesky is worth trying only for a symmetric positive definite tangent:
-  // follower pressure makes it unsymmetric, multipliers make it indefinite.
-  // Friction makes it unsymmetric too.
-  bool friction = false;
-  for (const auto& pair : disc.contact_pairs()) friction = friction || pair->mu() > 0;
-  const bool symmetric = !(step.nlgeom && !pressures.empty()) && dofs.n_multipliers() == 0 && !friction;
+  // The tangent is symmetric unless follower pressure, friction or a user
+  // routine (its Hessian comes from finite differences) makes it otherwise;
+  // the solver then picks Cholesky (positive definite) or LDLT (multipliers).
+  bool unsymmetric = step.nlgeom && !pressures.empty();
+  for (const auto& pair : disc.contact_pairs()) unsymmetric = unsymmetric || pair->mu() > 0;
+  unsymmetric = unsymmetric || !disc.user_constraints().empty();
+  for (const ConstraintData& c : model_.constraints) unsymmetric = unsymmetric || c.kind == ConstraintData::Kind::UserMpc;
+  const bool symmetric = !unsymmetric;
 
   const double period = step.period > 0 ? step.period : 1.0;
   const double max_dt = step.max_increment > 0 ? step.max_increment : period;

@@ -171,13 +171,20 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     closed = lambda_n - c * g_reg >= 0 || s.held_closed;
     N = closed ? std::max(lambda_n, 0.0) : 0.0;
     if (closed && lambda_n > 0) dN[in] = 1;
+    // An open node's multiplier is driven to zero by its own row; its force
+    // term -λn ∇g is left out of r_u, so that the tangent stays symmetric (the
+    // system is the same at every solution, where λn = 0 on open nodes).
     if (out) {
-      out->residual.head(nu) -= lambda_n * gap.gradient;
-      out->residual[in] = closed ? -g_reg : -lambda_n / c;
+      if (closed) {
+        out->residual.head(nu) -= lambda_n * gap.gradient;
+        out->residual[in] = -g_reg;
+      } else {
+        out->residual[in] = -lambda_n / c;
+      }
       if (need_tangent) {
-        out->tangent.topLeftCorner(nu, nu) -= lambda_n * gap.hessian;
-        out->tangent.col(in).head(nu) -= gap.gradient;
         if (closed) {
+          out->tangent.topLeftCorner(nu, nu) -= lambda_n * gap.hessian;
+          out->tangent.col(in).head(nu) -= gap.gradient;
           out->tangent.row(in).head(nu) -= gap.gradient.transpose();
           out->tangent(in, in) = -eps;
         } else {

@@ -6,6 +6,7 @@
 
 #include "tether/core/error.hpp"
 #include "tether/solvers/cholmod_solver.hpp"
+#include "tether/solvers/mumps_solver.hpp"
 #include "tether/solvers/sparse_lu_solver.hpp"
 #include "tether/solvers/umfpack_solver.hpp"
 
@@ -13,26 +14,44 @@ namespace tether {
 
 namespace {
 
-/// CHOLMOD while the system is symmetric positive definite, UMFPACK otherwise.
-/// Once CHOLMOD has failed (indefinite system) the choice sticks to UMFPACK
-/// until the pattern changes.
+/// True when some diagonal entry is absent or not positive (a multiplier
+/// row of a saddle-point system): Cholesky cannot factor such a matrix.
+bool has_nonpositive_diagonal(const SparseMatrix& a) {
+  for (Eigen::Index j = 0; j < a.cols(); ++j) {
+    const int* begin = a.innerIndexPtr() + a.outerIndexPtr()[j];
+    const int* end = a.innerIndexPtr() + a.outerIndexPtr()[j + 1];
+    const int* it = std::lower_bound(begin, end, static_cast<int>(j));
+    if (it == end || *it != j || !(a.valuePtr()[it - a.innerIndexPtr()] > 0)) return true;
+  }
+  return false;
+}
+
+/// Symmetric systems: CHOLMOD while positive definite, MUMPS LDLT when
+/// indefinite (multipliers, or once CHOLMOD has failed — the choice sticks
+/// until the pattern changes). Unsymmetric systems: UMFPACK.
 class AutoSolver final : public LinearSolver {
  public:
   void analyze(const SparseMatrix& a) override {
     cholmod_failed_ = false;
-    cholmod_ready_ = umfpack_ready_ = false;
+    cholmod_ready_ = umfpack_ready_ = mumps_ready_ = false;
     (void)a;
   }
   void factorize(const SparseMatrix& a, bool symmetric) override {
-    if (symmetric && !cholmod_failed_) {
-      try {
-        if (!cholmod_ready_) cholmod_.analyze(a), cholmod_ready_ = true;
-        cholmod_.factorize(a, true);
-        active_ = &cholmod_;
-        return;
-      } catch (const SolverError&) {
-        cholmod_failed_ = true;  // indefinite: retry with LU, which also diagnoses singularity
+    if (symmetric) {
+      if (!cholmod_failed_ && !has_nonpositive_diagonal(a)) {
+        try {
+          if (!cholmod_ready_) cholmod_.analyze(a), cholmod_ready_ = true;
+          cholmod_.factorize(a, true);
+          active_ = &cholmod_;
+          return;
+        } catch (const SolverError&) {
+          cholmod_failed_ = true;  // indefinite: LDLT, which also diagnoses singularity
+        }
       }
+      if (!mumps_ready_) mumps_.analyze(a), mumps_ready_ = true;
+      mumps_.factorize(a, true);
+      active_ = &mumps_;
+      return;
     }
     if (!umfpack_ready_) umfpack_.analyze(a), umfpack_ready_ = true;
     umfpack_.factorize(a, symmetric);
@@ -46,9 +65,10 @@ class AutoSolver final : public LinearSolver {
 
  private:
   CholmodSolver cholmod_;
+  MumpsSolver mumps_;
   UmfpackSolver umfpack_;
   LinearSolver* active_ = nullptr;
-  bool cholmod_ready_ = false, umfpack_ready_ = false, cholmod_failed_ = false;
+  bool cholmod_ready_ = false, umfpack_ready_ = false, mumps_ready_ = false, cholmod_failed_ = false;
 };
 
 }  // namespace
@@ -60,7 +80,9 @@ SolverKind parse_solver_kind(const std::string& name) {
   if (n == "umfpack") return SolverKind::Umfpack;
   if (n == "cholmod") return SolverKind::Cholmod;
   if (n == "sparselu") return SolverKind::SparseLU;
-  throw std::invalid_argument("unknown linear solver '" + name + "' (expected auto, umfpack, cholmod or sparselu)");
+  if (n == "mumps") return SolverKind::Mumps;
+  throw std::invalid_argument("unknown linear solver '" + name +
+                              "' (expected auto, umfpack, cholmod, mumps or sparselu)");
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind) {
@@ -68,6 +90,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind) {
     case SolverKind::Umfpack: return std::make_unique<UmfpackSolver>();
     case SolverKind::Cholmod: return std::make_unique<CholmodSolver>();
     case SolverKind::SparseLU: return std::make_unique<SparseLuSolver>();
+    case SolverKind::Mumps: return std::make_unique<MumpsSolver>();
     case SolverKind::Auto: break;
   }
   return std::make_unique<AutoSolver>();

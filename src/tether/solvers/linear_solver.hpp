@@ -19,13 +19,14 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 /// Which factorization to use.
 enum class SolverKind {
-  Auto,      ///< CHOLMOD for symmetric systems (falls back to UMFPACK if not positive definite), UMFPACK otherwise
+  Auto,      ///< symmetric: CHOLMOD, or MUMPS LDLT when indefinite (multipliers); unsymmetric: UMFPACK
   Umfpack,   ///< SuiteSparse UMFPACK: unsymmetric and symmetric-indefinite (saddle-point) systems
   Cholmod,   ///< SuiteSparse CHOLMOD supernodal Cholesky: symmetric positive definite only
   SparseLU,  ///< Eigen's SparseLU with COLAMD: fallback without SuiteSparse
+  Mumps,     ///< MUMPS LDLT with 2x2 pivots: symmetric (positive or indefinite) systems only
 };
 
-/// Parses "auto", "umfpack", "cholmod", "sparselu" (case-insensitive); throws std::invalid_argument.
+/// Parses "auto", "umfpack", "cholmod", "mumps", "sparselu" (case-insensitive); throws std::invalid_argument.
 SolverKind parse_solver_kind(const std::string& name);
 
 class LinearSolver {
@@ -35,8 +36,8 @@ class LinearSolver {
   /// Symbolic analysis (ordering) of the pattern of `a`; call again when the pattern changes.
   virtual void analyze(const SparseMatrix& a) = 0;
 
-  /// Numeric factorization of `a` (same pattern as analysed). `symmetric` is a
-  /// hint that `a` is symmetric (lets Auto pick Cholesky). Throws SolverError
+  /// Numeric factorization of `a` (same pattern as analysed). `symmetric`
+  /// says that `a` is symmetric (lets Auto pick Cholesky or LDLT). Throws SolverError
   /// for a singular matrix, naming the equation where a pivot vanished.
   virtual void factorize(const SparseMatrix& a, bool symmetric) = 0;
 
