@@ -323,7 +323,8 @@ TOP, 2, 2, -0.001
 /// Top block pressed by `p`, then its top edge pushed in x by `slide` (step 2,
 /// in `increments` equal increments); every node of the bottom block is fixed
 /// (a rigid flat), so the contact normal stays vertical.
-std::string sliding_block(double p, double slide, int increments, const std::string& interaction) {
+std::string sliding_block(double p, double slide, int increments, const std::string& interaction,
+                          const std::string& pair_options = "") {
   const Block top{0, 1, 1, 1.5, 4, 1, false, 1, 1, "TOP"};
   const Block bottom{0, 2, 0, 1, 6, 2, false, 1001, 1001, "BOTTOM"};
   std::ostringstream d;
@@ -333,7 +334,7 @@ std::string sliding_block(double p, double slide, int increments, const std::str
   top.write_surface(d, "SLAVE", 0);
   bottom.write_surface(d, "MASTER", 2);
   d << "*SURFACE INTERACTION, NAME=I\n" << interaction;
-  d << "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nSLAVE, MASTER\n";
+  d << "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE" << pair_options << "\nSLAVE, MASTER\n";
   d << "*MATERIAL, NAME=M\n*ELASTIC\n" << kE << ", " << kNu << "\n";
   d << "*SOLID SECTION, ELSET=TOP, MATERIAL=M\n*SOLID SECTION, ELSET=BOTTOM, MATERIAL=M\n";
   d << "*NSET, NSET=BASE, GENERATE\n" << bottom.grid(0, 0) << ", " << bottom.grid(bottom.nx, bottom.ny) << "\n";
@@ -401,6 +402,28 @@ TEST(ContactAnalysis, FrictionlessBlockNeedsNoPush) {
   EXPECT_NEAR(end.fx, 0.0, 1e-9);
   EXPECT_NEAR(end.fy, 10.0, 1e-9);
   EXPECT_EQ(end.slip, 5);
+}
+
+TEST(ContactAnalysis, SmallSlidingKeepsTheFirstPairingFiniteSlidingFollows) {
+  // The top block slides by 0.6 (almost two master segments of 1/3). With
+  // finite sliding every slave node moves on to other master faces; SMALL
+  // SLIDING keeps the faces found at the start (extended past their ends).
+  for (const bool small : {false, true}) {
+    const auto run = run_deck_text(sliding_block(10, 0.6, 20, "", small ? ", SMALL SLIDING" : ""));
+    ASSERT_TRUE(run.summary.completed) << run.summary.message;
+    const auto& first = run.recorder.results.front().contact.at(0).nodes;
+    const auto& last = run.last().contact.at(0).nodes;
+    int changed = 0;
+    for (std::size_t k = 0; k < first.size(); ++k) changed += first[k].master_element != last[k].master_element;
+    if (small)
+      EXPECT_EQ(changed, 0);
+    else
+      EXPECT_EQ(changed, static_cast<int>(first.size()));
+    // Frictionless: the push needs no force either way.
+    double fx = 0;
+    for (int n : run.model.node_sets.at("PUSHED")) fx += run.last().reaction[n][0];
+    EXPECT_NEAR(fx, 0.0, 1e-8) << (small ? "small sliding" : "finite sliding");
+  }
 }
 
 }  // namespace
