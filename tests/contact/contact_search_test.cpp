@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <omp.h>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -425,4 +426,50 @@ TEST(ContactSearch, ProjectionsPerSlaveStayBoundedAsTheSurfaceGrows) {
               << double(incremental.n_projections) / incremental.n_slaves << " (incremental), " << stats.n_bins
               << " bins, " << 1e6 * seconds / n_slaves << " us/slave incl. bin build, " << 1e6 * seconds_incremental / n_slaves << " us/slave incremental\n";
   }
+}
+
+TEST(ContactSearch, ParallelSearchGivesTheSerialAnswer) {
+  // 10^5 segments, 2·10^5 slave points: the loop over slaves runs on every
+  // thread; pairings and work counters must equal the one-thread run exactly.
+  const int n = 100000;
+  const double R = 1.0, h = 2 * std::numbers::pi * R / n;
+  const Mesh m = circle_master(n, R, 3);
+  const MasterSurface surface(m.faces);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> ut(0, 2 * std::numbers::pi), ug(-0.5 * h, 0.5 * h);
+  std::vector<Vector2d> slaves;
+  for (int i = 0; i < 2 * n; ++i) {
+    const double t = ut(rng), r = R + ug(rng);
+    slaves.emplace_back(r * std::cos(t), r * std::sin(t));
+  }
+  SearchOptions options;
+  options.search_radius = 2 * h;
+  const int threads = omp_get_max_threads();
+  auto run = [&](int t, std::span<const ContactPairing> previous, SearchStatistics& stats, double& seconds) {
+    omp_set_num_threads(t);
+    const auto start = std::chrono::steady_clock::now();
+    auto out = find_closest(surface, m.positions, slaves, options, previous, &stats);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  };
+  SearchStatistics s1, sn, i1, in;
+  double t1 = 0, tn = 0, ti1 = 0, tin = 0;
+  const auto serial = run(1, {}, s1, t1);
+  const auto parallel = run(threads, {}, sn, tn);
+  const auto serial_incremental = run(1, serial, i1, ti1);
+  const auto parallel_incremental = run(threads, serial, in, tin);
+  omp_set_num_threads(threads);
+  for (std::size_t k = 0; k < slaves.size(); ++k) {
+    ASSERT_EQ(serial[k].segment, parallel[k].segment) << k;
+    ASSERT_EQ(serial[k].xi, parallel[k].xi) << k;
+    ASSERT_EQ(serial[k].gap, parallel[k].gap) << k;
+    ASSERT_EQ(serial_incremental[k].segment, parallel_incremental[k].segment) << k;
+    ASSERT_EQ(serial_incremental[k].xi, parallel_incremental[k].xi) << k;
+  }
+  EXPECT_EQ(s1.n_projections, sn.n_projections);
+  EXPECT_EQ(s1.n_broad_phase, sn.n_broad_phase);
+  EXPECT_EQ(i1.n_local, in.n_local);
+  std::cout << "[ search ] parallel, " << threads << " threads, " << slaves.size() << " slaves on " << n
+            << " segments: full " << t1 << " s -> " << tn << " s (speed-up " << t1 / tn << "), incremental " << ti1
+            << " s -> " << tin << " s (speed-up " << ti1 / tin << ")\n";
 }

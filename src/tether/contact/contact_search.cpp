@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -61,6 +62,9 @@ std::span<const int> MasterSurface::neighbours(int s, int corner) const {
 }
 
 namespace {
+
+/// Slave points below which the search runs serially (thread start-up costs more).
+constexpr std::int64_t kParallelSlaves = 2048;
 
 /// Current node positions of one segment.
 struct SegmentPoints {
@@ -304,67 +308,82 @@ std::vector<ContactPairing> find_closest(const MasterSurface& surface, std::span
   SearchStatistics local_stats;
   SearchStatistics& stats = statistics ? *statistics : local_stats;
   stats.n_slaves += static_cast<std::int64_t>(slaves.size());
-  Selector selector(surface, positions, options, stats);
-  std::unique_ptr<SegmentBins> bins;  // built on first need
-  std::vector<std::pair<double, int>> ordered;
+  std::unique_ptr<SegmentBins> bins;  // built on first need, once
+  std::once_flag bins_built;
   std::vector<ContactPairing> result(slaves.size());
+  const auto n_slaves = static_cast<std::int64_t>(slaves.size());
 
-  for (std::size_t i = 0; i < slaves.size(); ++i) {
-    const Vector2d& slave = slaves[i];
-    const ContactPairing* prev = previous.empty() ? nullptr : &previous[i];
-    selector.next_slave();
-    if (prev && options.keep_pairing) {  // SMALL SLIDING: the extended segment of the first pairing
-      if (prev->found()) {
-        const SegmentPoints seg = points_of(surface, positions, prev->segment);
-        const SegmentProjection p = project(slave, seg.span(), options.projection);
-        ++stats.n_projections;
-        ContactPairing& out = result[i];
-        out.segment = prev->segment;
-        out.xi = p.status == ProjectionStatus::degenerate ? prev->xi : p.xi;
-        const auto [y, n] = point_and_normal(seg, out.xi);
-        out.gap = (slave - y).dot(n);
-        out.distance = (slave - y).norm();
-      }
-      continue;
-    }
-    if (prev && prev->found()) {  // walk from the previous segment over neighbours
-      ordered.clear();
-      auto add_with_neighbours = [&](int s) {
-        ordered.emplace_back(0.0, s);
-        for (int corner = 0; corner < 2; ++corner)
-          for (int q : surface.neighbours(s, corner)) ordered.emplace_back(0.0, q);
-        std::sort(ordered.begin(), ordered.end());
-        ordered.erase(std::unique(ordered.begin(), ordered.end()), ordered.end());
-      };
-      auto evaluated = [&](int s) { return std::binary_search(ordered.begin(), ordered.end(), std::pair{0.0, s}); };
-      add_with_neighbours(prev->segment);
-      bool accepted = false;
-      for (int step = 0; step < kMaxWalkSteps; ++step) {
-        const ContactPairing local = selector.select(slave, ordered);
-        if (!local.found()) break;
-        bool closed = true;  // every neighbour of the chosen segment was a candidate
-        for (int corner = 0; corner < 2; ++corner)
-          for (int q : surface.neighbours(local.segment, corner)) closed = closed && evaluated(q);
-        if (closed) {
-          result[i] = local;
-          accepted = true;
-          break;
+  // Each slave point is paired independently: the loop runs in parallel
+  // (per-thread selector, buffers and counters) and gives the serial answer.
+#pragma omp parallel if (n_slaves >= kParallelSlaves)
+  {
+    SearchStatistics thread_stats;
+    Selector selector(surface, positions, options, thread_stats);
+    std::vector<std::pair<double, int>> ordered;
+#pragma omp for schedule(dynamic, 128)
+    for (std::int64_t k = 0; k < n_slaves; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      const Vector2d& slave = slaves[i];
+      const ContactPairing* prev = previous.empty() ? nullptr : &previous[i];
+      selector.next_slave();
+      if (prev && options.keep_pairing) {  // SMALL SLIDING: the extended segment of the first pairing
+        if (prev->found()) {
+          const SegmentPoints seg = points_of(surface, positions, prev->segment);
+          const SegmentProjection p = project(slave, seg.span(), options.projection);
+          ++thread_stats.n_projections;
+          ContactPairing& out = result[i];
+          out.segment = prev->segment;
+          out.xi = p.status == ProjectionStatus::degenerate ? prev->xi : p.xi;
+          const auto [y, n] = point_and_normal(seg, out.xi);
+          out.gap = (slave - y).dot(n);
+          out.distance = (slave - y).norm();
         }
-        add_with_neighbours(local.segment);
-      }
-      if (accepted) {
-        ++stats.n_local;
         continue;
       }
+      if (prev && prev->found()) {  // walk from the previous segment over neighbours
+        ordered.clear();
+        auto add_with_neighbours = [&](int s) {
+          ordered.emplace_back(0.0, s);
+          for (int corner = 0; corner < 2; ++corner)
+            for (int q : surface.neighbours(s, corner)) ordered.emplace_back(0.0, q);
+          std::sort(ordered.begin(), ordered.end());
+          ordered.erase(std::unique(ordered.begin(), ordered.end()), ordered.end());
+        };
+        auto evaluated = [&](int s) { return std::binary_search(ordered.begin(), ordered.end(), std::pair{0.0, s}); };
+        add_with_neighbours(prev->segment);
+        bool accepted = false;
+        for (int step = 0; step < kMaxWalkSteps; ++step) {
+          const ContactPairing local = selector.select(slave, ordered);
+          if (!local.found()) break;
+          bool closed = true;  // every neighbour of the chosen segment was a candidate
+          for (int corner = 0; corner < 2; ++corner)
+            for (int q : surface.neighbours(local.segment, corner)) closed = closed && evaluated(q);
+          if (closed) {
+            result[i] = local;
+            accepted = true;
+            break;
+          }
+          add_with_neighbours(local.segment);
+        }
+        if (accepted) {
+          ++thread_stats.n_local;
+          continue;
+        }
+      }
+      std::call_once(bins_built,
+                     [&] { bins = std::make_unique<SegmentBins>(surface, positions, options.search_radius); });
+      bins->candidates(slave, ordered);
+      result[i] = selector.select(slave, ordered);
+      ++thread_stats.n_broad_phase;
     }
-    if (!bins) {
-      bins = std::make_unique<SegmentBins>(surface, positions, options.search_radius);
-      stats.n_bins = bins->n_bins();
+#pragma omp critical(contact_search_statistics)
+    {
+      stats.n_projections += thread_stats.n_projections;
+      stats.n_broad_phase += thread_stats.n_broad_phase;
+      stats.n_local += thread_stats.n_local;
     }
-    bins->candidates(slave, ordered);
-    result[i] = selector.select(slave, ordered);
-    ++stats.n_broad_phase;
   }
+  if (bins) stats.n_bins = bins->n_bins();
   return result;
 }
 
