@@ -61,12 +61,14 @@ status=0
 end=$(date +%s)
 
 stat() { sed -n "s/^stat::$1: *//p" "$log" | tail -1; }
-coverage=$(grep -oE 'cov: [0-9]+ ft: [0-9]+' "$log" | tail -1 || true)
+# libFuzzer's last status line: cov = coverage points (edges) reached, ft = features
+# (edges with hit-count buckets, comparisons), corp = inputs kept in memory / their size.
+coverage=$(grep -oE 'cov: [0-9]+ ft: [0-9]+ corp: [0-9]+/[0-9]+[A-Za-z]+' "$log" | tail -1 || true)
 findings=$(($(find "$artifacts" -type f | wc -l) - before))
 echo "fuzz: executions   $(stat number_of_executed_units)"
 echo "fuzz: wall time    $((end - start)) s"
 echo "fuzz: exec/s       $(stat average_exec_per_sec)"
-echo "fuzz: coverage     ${coverage:-?}   corpus $(find "$corpus" -type f | wc -l) inputs"
+echo "fuzz: coverage     ${coverage:-?}   ($(find "$corpus" -type f | wc -l) files in $corpus)"
 echo "fuzz: peak RSS     $(stat peak_rss_mb) MB"
 echo "fuzz: findings     $findings (in $artifacts/)"
 if [ "$status" -ne 0 ]; then
