@@ -11,11 +11,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "progress_observer.hpp"
 #include "tether/analysis/static_analysis.hpp"
 #include "tether/core/error.hpp"
 #include "tether/io/deck_reader.hpp"
+#include "tether/output/restart_file.hpp"
 #include "tether/output/result_writer.hpp"
 
 namespace fs = std::filesystem;
@@ -40,24 +42,70 @@ int check(const std::string& deck) {
   return kOk;
 }
 
-int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool ascii, bool quiet) {
+/// Forwards the analysis' reports to an observer set later (the result
+/// files are opened only once a restart state has been accepted).
+class Relay final : public AnalysisObserver {
+ public:
+  AnalysisObserver* to = nullptr;
+  void on_iteration(int i, const IterationNorms& n) override { if (to) to->on_iteration(i, n); }
+  void on_increment(const IncrementReport& r) override { if (to) to->on_increment(r); }
+  void on_results(const IncrementResults& r, const Step& s, bool last) override { if (to) to->on_results(r, s, last); }
+  void on_restart_state(const RestartState& s) override { if (to) to->on_restart_state(s); }
+  void on_message(const std::string& m) override { if (to) to->on_message(m); }
+};
+
+/// The restart file to continue from: --restart, else FILE= of *RESTART, READ
+/// (relative to the deck); "" when the run starts from the beginning.
+std::string restart_source(const Model& model, const std::string& deck, const std::string& restart) {
+  if (!restart.empty()) return restart;
+  if (!model.restart_read) return "";
+  if (model.restart_read->file.empty())
+    throw InputError(model.restart_read->where,
+                     "*RESTART, READ without FILE=: name the restart file there or run `tether run " + deck +
+                         " --restart FILE.rst`");
+  const fs::path file(model.restart_read->file);
+  return (file.is_absolute() ? file : fs::path(deck).parent_path() / file).string();
+}
+
+int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool ascii, bool quiet,
+        const std::string& restart) {
   const auto t0 = std::chrono::steady_clock::now();
   const Model model = read_with_warnings(deck);
   const fs::path dir = output_dir.empty() ? fs::path(deck).parent_path() / fs::path(deck).stem() : fs::path(output_dir);
   const std::string job = fs::path(deck).stem().string();
 
+  AnalysisOptions options;
+  options.solver = parse_solver_kind(solver);
+  Relay relay;
+  std::unique_ptr<StaticAnalysis> analysis;
+  const std::string restart_file = restart_source(model, deck, restart);
+  RestartState state;
+  if (!restart_file.empty()) {
+    // Read and check the state before any output file is touched: a refused
+    // restart leaves the previous results (and the file itself) as they were.
+    state = read_restart_file(restart_file);
+    analysis = std::make_unique<StaticAnalysis>(model, relay, options);
+    analysis->resume(state, restart_file);
+  }
+
   ResultWriterOptions writer_options;
   if (ascii) writer_options.encoding = VtuEncoding::Ascii;
   ResultWriter writer(model, dir, job, writer_options);
   const bool progress = !quiet && isatty(fileno(stdout));
+  if (!restart_file.empty()) {
+    try {
+      writer.load_output_state(state.output_state);
+    } catch (const std::runtime_error& e) {
+      throw InputError(SourceLocation{restart_file, 0}, e.what());
+    }
+  }
   ProgressObserver observer(writer, progress);
+  relay.to = &observer;
 
-  AnalysisOptions options;
-  options.solver = parse_solver_kind(solver);
   AnalysisSummary summary;
   try {
-    StaticAnalysis analysis(model, observer, options);
-    summary = analysis.run();
+    if (!analysis) analysis = std::make_unique<StaticAnalysis>(model, relay, options);
+    summary = analysis->run();
   } catch (const ModelError& e) {
     writer.finish(false, e.what());
     throw;
@@ -91,13 +139,16 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("tether ") + TETHER_VERSION);
   app.require_subcommand(1);
 
-  std::string deck, output_dir, solver = "auto";
+  std::string deck, output_dir, solver = "auto", restart;
   bool ascii = false, quiet = false;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
   run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
   run_cmd->add_option("-o,--output", output_dir, "Output directory (default: next to the deck, named after it)");
   run_cmd->add_option("--solver", solver, "Linear solver: auto, umfpack, cholmod, mumps or sparselu")
       ->check(CLI::IsMember({"auto", "umfpack", "cholmod", "mumps", "sparselu"}, CLI::ignore_case));
+  run_cmd->add_option("--restart", restart,
+                      "Continue from this restart file (JOB.rst written by *RESTART, WRITE) instead of the "
+                      "beginning; the results go to a fresh output directory (use -o)");
   run_cmd->add_flag("--ascii", ascii, "Write ASCII instead of binary VTU (for debugging)");
   run_cmd->add_flag("-q,--quiet", quiet, "Print nothing but errors");
   auto* check_cmd = app.add_subcommand("check", "Read and validate a deck without solving it");
@@ -117,7 +168,7 @@ int main(int argc, char** argv) {
       return kOk;
     }
     if (*check_cmd) return check(deck);
-    return run(deck, output_dir, solver, ascii, quiet);
+    return run(deck, output_dir, solver, ascii, quiet, restart);
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInput;

@@ -63,6 +63,12 @@ class ProgressObserver final : public AnalysisObserver {
     writer_.write_increment(results, step.outputs, last_in_step);
   }
 
+  void on_restart_state(const RestartState& state) override {
+    writer_.write_restart(state);
+    msg_.print("  restart state written to {} (step {}, increment {}{})\n", writer_.restart_path().string(),
+               state.step, state.increment, state.step_completed ? ", end of the step" : "");
+  }
+
   void on_message(const std::string& message) override {
     msg_.print("  {}\n", message);
     if (progress_) fmt::print("  {}\n", message);

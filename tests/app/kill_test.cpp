@@ -1,6 +1,6 @@
 // Crash safety: an analysis killed (SIGKILL) at random moments leaves a valid
-// .pvd whose every listed .vtu is complete (each increment is written to a
-// temporary file and renamed).
+// .pvd whose every listed .vtu is complete, and a complete restart file
+// (each is written to a temporary file and renamed).
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -14,6 +14,9 @@
 #include <regex>
 #include <sstream>
 #include <thread>
+
+#include "tether/core/error.hpp"
+#include "tether/output/restart_file.hpp"
 
 namespace fs = std::filesystem;
 
@@ -42,7 +45,7 @@ std::string long_deck(int nx, int ny) {
   d << "*NSET, NSET=LEFT, GENERATE\n1, " << ny * (nx + 1) + 1 << ", " << nx + 1 << "\n";
   d << "*NSET, NSET=RIGHT, GENERATE\n" << nx + 1 << ", " << (ny + 1) * (nx + 1) << ", " << nx + 1 << "\n";
   d << "*MATERIAL, NAME=R\n*HYPERELASTIC, NEO HOOKE\n1., 0.1\n*SOLID SECTION, ELSET=E, MATERIAL=R\n"
-    << "*BOUNDARY\nLEFT, 1, 2\n*STEP, NLGEOM, INC=1000\n*STATIC, DIRECT\n0.0025, 1.\n"
+    << "*BOUNDARY\nLEFT, 1, 2\n*RESTART, WRITE, FREQUENCY=1\n*STEP, NLGEOM, INC=1000\n*STATIC, DIRECT\n0.0025, 1.\n"
     << "*BOUNDARY\nRIGHT, 1, 1, 2.\n*END STEP\n";
   return d.str();
 }
@@ -61,6 +64,17 @@ int check_results(const fs::path& dir, const std::string& job) {
     const std::string body = slurp(vtu);
     EXPECT_NE(body.find("</VTKFile>"), std::string::npos) << "incomplete " << vtu;
     ++count;
+  }
+  // The restart state, when one has been written, is complete (it decodes:
+  // magic, length and checksum) and at most one increment behind the last
+  // listed one (it is written after the increment's results).
+  if (fs::exists(dir / (job + ".rst"))) {
+    try {
+      const tether::RestartState state = tether::read_restart_file(dir / (job + ".rst"));
+      EXPECT_GE(state.increment, count - 1) << "the restart state lags behind the results";
+    } catch (const tether::InputError& e) {
+      ADD_FAILURE() << "incomplete restart file: " << e.what();
+    }
   }
   for (const auto& entry : fs::directory_iterator(dir))
     if (entry.path().extension() == ".vtu") {

@@ -5,6 +5,7 @@
 
 #include "tether/analysis/convergence.hpp"
 #include "tether/model/model.hpp"
+#include "tether/model/restart_state.hpp"
 #include "tether/model/results.hpp"
 
 namespace tether {
@@ -35,6 +36,10 @@ class AnalysisObserver {
   virtual void on_increment(const IncrementReport& /*report*/) {}
   /// After each converged increment, with its results. `last_in_step` is true for the final one.
   virtual void on_results(const IncrementResults& /*results*/, const Step& /*step*/, bool /*last_in_step*/) {}
+  /// A restart point (`*RESTART, WRITE`): after every FREQUENCY-th converged
+  /// increment of a step (after on_results) and at the end of every step. The
+  /// state continues the analysis through StaticAnalysis::resume().
+  virtual void on_restart_state(const RestartState& /*state*/) {}
   /// A line of information or warning for the log.
   virtual void on_message(const std::string& /*message*/) {}
 };

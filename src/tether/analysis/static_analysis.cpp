@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 
@@ -9,6 +10,7 @@
 #include "tether/analysis/constraint_checks.hpp"
 #include "tether/analysis/increment_problem.hpp"
 #include "tether/analysis/newton.hpp"
+#include "tether/analysis/restart.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/analysis/step_loads.hpp"
 #include "tether/assembly/assembler.hpp"
@@ -44,7 +46,21 @@ AnalysisSummary StaticAnalysis::run() {
     summary.message = "the deck defines no *STEP";
     return summary;
   }
-  for (int s = 0; s < static_cast<int>(model_.steps.size()); ++s) {
+  int first = 0;
+  if (resume_) {
+    const RestartState& r = *resume_;
+    summary.steps = r.steps_completed;
+    summary.increments = r.increments;
+    summary.iterations = r.iterations;
+    summary.cutbacks = r.cutbacks;
+    first = r.step_completed ? r.step : r.step - 1;
+    observer_.on_message("restarted from " + resume_file_ + " at step " + std::to_string(r.step) + ", step time " +
+                         format_time(r.step_time) + " (increment " + std::to_string(r.increment) + ", total time " +
+                         format_time(r.total_time) + (r.step_completed ? ", end of the step" : "") + ")");
+    if (first >= static_cast<int>(model_.steps.size()))
+      observer_.on_message("the restart state is at the end of the last step: nothing left to run");
+  }
+  for (int s = first; s < static_cast<int>(model_.steps.size()); ++s) {
     try {
       if (!run_step(s, summary)) return summary;
     } catch (const ModelError& e) {
@@ -54,17 +70,137 @@ AnalysisSummary StaticAnalysis::run() {
       return summary;
     }
     ++summary.steps;
+    if (options_.stop_after_increments > 0 && run_increments_ >= options_.stop_after_increments &&
+        s + 1 < static_cast<int>(model_.steps.size())) {
+      summary.message = "stopped after " + std::to_string(run_increments_) + " increment(s) as requested";
+      return summary;
+    }
   }
   summary.completed = true;
   summary.message = "analysis complete";
   return summary;
 }
 
+std::vector<Contribution*> StaticAnalysis::stateful_order() const {
+  const Discretization& disc = *discretization_;
+  std::vector<Contribution*> out;
+  for (const auto& e : disc.elements()) out.push_back(e.get());
+  for (const auto& c : disc.constraints()) out.push_back(c.get());
+  for (const auto& c : disc.user_constraints()) out.push_back(c.get());
+  for (const auto& pair : disc.contact_pairs()) out.push_back(pair.get());
+  return out;
+}
+
+void StaticAnalysis::resume(const RestartState& state, const std::string& file) {
+  const SourceLocation where{file, 0};
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(where, "cannot continue this deck from the restart file: " + why);
+  };
+  const int n_steps = static_cast<int>(model_.steps.size());
+  if (state.step < 1 || state.increment < 0) refuse("bad step " + std::to_string(state.step));
+  const std::vector<Contribution*> order = stateful_order();
+  const RestartFingerprint deck =
+      restart_fingerprint(model_, *discretization_, static_cast<int>(order.size()), state.step);
+  if (const std::string diff = fingerprint_differences(deck, state.fingerprint); !diff.empty())
+    refuse("it was written for another model (" + (state.deck.empty() ? std::string("?") : state.deck) + "): " + diff);
+  if (state.step > n_steps || state.fingerprint.history_steps != state.step)
+    refuse("inconsistent step " + std::to_string(state.step) + " (the deck has " + std::to_string(n_steps) + ")");
+  if (model_.restart_read && model_.restart_read->step > 0) {
+    const RestartRead& want = *model_.restart_read;
+    if (want.step != state.step || (want.increment > 0 && want.increment != state.increment))
+      throw InputError(want.where,
+                       "*RESTART, READ asks for step " + std::to_string(want.step) +
+                           (want.increment > 0 ? " increment " + std::to_string(want.increment) : std::string()) +
+                           ", but " + file + " holds step " + std::to_string(state.step) + " increment " +
+                           std::to_string(state.increment) +
+                           " (only the last state written is kept: OVERLAY); restart from that one or rerun");
+  }
+  const auto n = static_cast<std::size_t>(discretization_->dofs().n_dofs());
+  if (state.u.size() != n)
+    refuse("it holds " + std::to_string(state.u.size()) + " unknowns, the model has " + std::to_string(n));
+  if (!state.step_completed) {
+    const Step& step = model_.steps[static_cast<std::size_t>(state.step - 1)];
+    if (state.u_step_start.size() != n) refuse("the unknowns at the start of the step are missing");
+    if (!(state.dt > 0) || !std::isfinite(state.dt) || !(state.step_time >= 0) || state.step_time > step.period ||
+        state.n_averaged < 0 || state.easy_in_row < 0)
+      refuse("bad time-stepping state (step time " + format_time(state.step_time) + ", increment " +
+             format_time(state.dt) + ")");
+  }
+  for (const auto* loads : {&state.cload_end, &state.pressure_end})
+    for (const CarriedLoad& l : *loads)
+      if (l.first < 0 || l.first > INT32_MAX || l.second < 0 || l.second > INT32_MAX) refuse("bad carried load");
+
+  // Contribution states: the file must have one record for each contribution
+  // that has a history in this model, and none for others.
+  std::vector<Contribution*> expected;
+  std::vector<double> probe;
+  for (Contribution* c : order) {
+    probe.clear();
+    c->save_state(probe);
+    expected.push_back(probe.empty() ? nullptr : c);
+  }
+  std::size_t next = 0;
+  for (const ContributionState& record : state.contributions) {
+    if (record.index < 0 || record.index >= static_cast<std::int64_t>(order.size()))
+      refuse("a contribution state refers to #" + std::to_string(record.index));
+    const auto k = static_cast<std::size_t>(record.index);
+    if (k < next) refuse("contribution states out of order");
+    for (; next < k; ++next)
+      if (expected[next]) refuse("no saved state for " + expected[next]->describe());
+    if (!expected[k]) refuse("a saved state for " + order[k]->describe() + ", which has none in this deck");
+    next = k + 1;
+  }
+  for (; next < order.size(); ++next)
+    if (expected[next]) refuse("no saved state for " + expected[next]->describe());
+
+  // Everything checked: load (a contribution may still refuse its record;
+  // the ones loaded before it then get their previous state back).
+  std::vector<std::vector<double>> previous;
+  for (const ContributionState& record : state.contributions) {
+    Contribution* c = order[static_cast<std::size_t>(record.index)];
+    previous.emplace_back();
+    c->save_state(previous.back());
+    std::span<const double> in(record.values);
+    std::string error;
+    try {
+      c->load_state(in);
+      if (!in.empty()) error = std::to_string(in.size()) + " values too many in its saved state";
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    if (!error.empty()) {
+      for (std::size_t k = 0; k < previous.size(); ++k) {
+        std::span<const double> back(previous[k]);
+        order[static_cast<std::size_t>(state.contributions[k].index)]->load_state(back);
+      }
+      refuse(c->describe() + ": " + error);
+    }
+  }
+  u_ = Eigen::Map<const Eigen::VectorXd>(state.u.data(), static_cast<Eigen::Index>(n));
+  total_time_ = state.total_time;
+  cload_end_.clear();
+  for (const CarriedLoad& l : state.cload_end)
+    cload_end_[{static_cast<int>(l.first), static_cast<int>(l.second)}] = l.value;
+  pressure_end_.clear();
+  for (const CarriedLoad& l : state.pressure_end)
+    pressure_end_[{static_cast<int>(l.first), static_cast<int>(l.second)}] = l.value;
+  resume_ = std::make_unique<RestartState>(state);
+  resume_->u.clear();
+  resume_file_ = file;
+}
+
 bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   const Step& step = model_.steps[index];
   const Discretization& disc = *discretization_;
   const DofMap& dofs = disc.dofs();
-  const StepLoads loads = make_step_loads(step, dofs, u_, cload_end_, pressure_end_);
+  // A restart within this step continues its time stepping; the loads ramp
+  // from the values at the step's start, as in the run that saved the state.
+  std::unique_ptr<RestartState> resumed;
+  if (resume_ && !resume_->step_completed && resume_->step == index + 1) resumed = std::move(resume_);
+  resume_.reset();
+  const Eigen::VectorXd u_step_start =
+      resumed ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(resumed->u_step_start.data(), u_.size())) : u_;
+  const StepLoads loads = make_step_loads(step, dofs, u_step_start, cload_end_, pressure_end_);
 
   // Contributions of this step: every element, then the pressure loads.
   auto pressures = disc.make_pressures(loads.pressures);
@@ -125,7 +261,50 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   int increment = 0, attempt = 1, easy_in_row = 0;
   double averaged_force = 0;
   int n_averaged = 0;
-  const double step_start_time = total_time_;
+  double step_start_time = total_time_;
+  if (resumed) {
+    step_time = resumed->step_time;
+    step_start_time = resumed->step_start_time;
+    increment = resumed->increment;
+    dt = resumed->dt;
+    easy_in_row = resumed->easy_in_row;
+    averaged_force = resumed->averaged_force;
+    n_averaged = resumed->n_averaged;
+  }
+
+  // The state *RESTART, WRITE saves: this step's progress, or (completed) its end.
+  const auto save_restart = [&](bool completed) {
+    RestartState r;
+    r.written_by = std::string("tether ") + TETHER_VERSION;
+    r.deck = model_.deck_path;
+    const std::vector<Contribution*> order = stateful_order();
+    r.fingerprint = restart_fingerprint(model_, disc, static_cast<int>(order.size()), index + 1);
+    r.step = index + 1;
+    r.increment = increment;
+    r.step_completed = completed;
+    r.step_time = step_time;
+    r.step_start_time = step_start_time;
+    r.total_time = total_time_;
+    r.dt = dt;
+    r.easy_in_row = easy_in_row;
+    r.averaged_force = averaged_force;
+    r.n_averaged = n_averaged;
+    r.steps_completed = summary.steps + (completed ? 1 : 0);
+    r.increments = summary.increments;
+    r.iterations = summary.iterations;
+    r.cutbacks = summary.cutbacks;
+    r.u.assign(u_.data(), u_.data() + u_.size());
+    if (!completed) r.u_step_start.assign(u_step_start.data(), u_step_start.data() + u_step_start.size());
+    for (const auto& [key, value] : cload_end_) r.cload_end.push_back({key.first, key.second, value});
+    for (const auto& [key, value] : pressure_end_) r.pressure_end.push_back({key.first, key.second, value});
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      ContributionState c;
+      c.index = static_cast<std::int64_t>(k);
+      order[k]->save_state(c.values);
+      if (!c.values.empty()) r.contributions.push_back(std::move(c));
+    }
+    observer_.on_restart_state(r);
+  };
 
   double output_seconds = 0;
   // Adds this step's timing to the summary (at every exit of the step).
@@ -256,6 +435,15 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
           easy_in_row = 0;
         }
       }
+      ++run_increments_;
+      const bool last_in_step = step_time >= period * (1 - 1e-12);
+      if (!last_in_step) {  // the end of the step is saved after the loop
+        if (step.restart_frequency > 0 && increment % step.restart_frequency == 0) save_restart(false);
+        if (options_.stop_after_increments > 0 && run_increments_ >= options_.stop_after_increments) {
+          summary.message = "stopped after " + std::to_string(run_increments_) + " increment(s) as requested";
+          return false;
+        }
+      }
       continue;
     }
 
@@ -299,6 +487,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     pressure_end_[{loads.pressures[k].face.element, loads.pressures[k].face.face}] =
         step_magnitude(model_, v.amplitude, v.start, v.target, period, period, total_time_);
   }
+  if (step.restart_frequency > 0) save_restart(true);
   return true;
 }
 

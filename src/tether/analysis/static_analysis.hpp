@@ -22,6 +22,9 @@ namespace tether {
 
 struct AnalysisOptions {
   SolverKind solver = SolverKind::Auto;
+  /// Tests of restart: stop (not completed) after this many converged
+  /// increments of this run, as if the run had been killed there; 0 = never.
+  int stop_after_increments = 0;
 };
 
 struct AnalysisSummary {
@@ -40,17 +43,28 @@ class StaticAnalysis {
   StaticAnalysis(const Model& model, AnalysisObserver& observer, AnalysisOptions options = {});
   ~StaticAnalysis();
 
-  /// Runs all steps. Never throws for a model that fails to converge or that a
-  /// step cannot solve (singular, redundant constraints): the summary reports it.
+  /// Runs all steps (or, after resume(), the rest of the analysis). Never
+  /// throws for a model that fails to converge or that a step cannot solve
+  /// (singular, redundant constraints): the summary reports it.
   AnalysisSummary run();
+
+  /// Continues from a saved state (`*RESTART, READ`, `tether run --restart`)
+  /// instead of the beginning; call before run(). Checks that the state
+  /// belongs to this model (node, element, dof and multiplier counts; hashes of
+  /// the coordinates, the connectivity and the load history up to the saved
+  /// step; the constraint and contact states) and to the STEP=/INC= of the
+  /// deck's `*RESTART, READ`, and throws InputError naming `file` and what
+  /// differs otherwise (nothing is changed then).
+  void resume(const RestartState& state, const std::string& file);
 
   /// Global unknowns at the last converged increment.
   [[nodiscard]] const Eigen::VectorXd& solution() const { return u_; }
   [[nodiscard]] const Discretization& discretization() const { return *discretization_; }
 
  private:
-  struct StepRun;
   bool run_step(int index, AnalysisSummary& summary);
+  /// Contributions with a history, in a fixed order (restart records refer to it).
+  [[nodiscard]] std::vector<Contribution*> stateful_order() const;
 
   const Model& model_;
   AnalysisObserver& observer_;
@@ -60,6 +74,9 @@ class StaticAnalysis {
   double total_time_ = 0;
   std::map<std::pair<int, int>, double> cload_end_;     ///< (node, dof) -> magnitude at the end of the last step
   std::map<std::pair<int, int>, double> pressure_end_;  ///< (element, face) -> magnitude at the end of the last step
+  std::unique_ptr<RestartState> resume_;  ///< set by resume(): where run() continues
+  std::string resume_file_;
+  int run_increments_ = 0;                ///< converged increments of this run (stop_after_increments)
 };
 
 }  // namespace tether

@@ -69,6 +69,18 @@ class Contribution {
   /// Called once the increment is accepted: store history (friction slip, ...).
   virtual void commit(const EvaluationState& /*state*/) {}
 
+  /// Restart: appends the history kept between increments (what commit() and
+  /// on_converged() store) to `out`, so that load_state() on the same
+  /// contribution of the same model continues the analysis identically.
+  /// Values are copied bitwise (integers as exact doubles). Empty default:
+  /// stateless contributions save nothing.
+  virtual void save_state(std::vector<double>& /*out*/) const {}
+
+  /// Restart: reads back what save_state() wrote from the front of `in` and
+  /// advances `in` past it. Throws std::runtime_error when `in` does not hold
+  /// such a state (too short, wrong kind or sizes): the file belongs to another model.
+  virtual void load_state(std::span<const double>& /*in*/) {}
+
   /// Short description for messages, e.g. "element 12 (CPE4)".
   [[nodiscard]] virtual std::string describe() const = 0;
 };

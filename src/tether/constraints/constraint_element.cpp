@@ -1,11 +1,17 @@
 #include "tether/constraints/constraint_element.hpp"
 
+#include <limits>
 #include <stdexcept>
 
+#include "tether/assembly/saved_state.hpp"
 #include "tether/core/error.hpp"
 #include "tether/dofs/dof_map.hpp"
 
 namespace tether {
+
+namespace {
+constexpr double kStateTag = 1001;  ///< first value of a saved ConstraintElement state
+}  // namespace
 
 std::string to_string(Enforcement::Method method) {
   switch (method) {
@@ -101,6 +107,25 @@ Acceptance ConstraintElement::on_converged(const EvaluationState& state) {
   lambda_bar_ += enforcement_.penalty * c.f;
   ++updates_;
   return Acceptance::Iterate;
+}
+
+void ConstraintElement::save_state(std::vector<double>& out) const {
+  if (enforcement_.method != Enforcement::Method::Augmented) return;
+  out.push_back(kStateTag);
+  out.push_back(m_);
+  out.push_back(updates_);
+  out.insert(out.end(), lambda_bar_.data(), lambda_bar_.data() + m_);
+}
+
+void ConstraintElement::load_state(std::span<const double>& in) {
+  if (enforcement_.method != Enforcement::Method::Augmented) return;
+  saved_state::expect_tag(in, kStateTag, "constraint element");
+  saved_state::take_int(in, m_, m_, "number of equations");
+  const int updates = saved_state::take_int(in, 0, std::numeric_limits<int>::max(), "update count");
+  Eigen::VectorXd lambda_bar(m_);
+  for (int k = 0; k < m_; ++k) lambda_bar[k] = saved_state::take(in);
+  updates_ = updates;
+  lambda_bar_ = lambda_bar;
 }
 
 MultiplierValues ConstraintElement::values(const EvaluationState& state) const {

@@ -36,6 +36,9 @@ class ConstraintElement final : public Contribution {
   void evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const override;
   Acceptance on_converged(const EvaluationState& state) override;
   [[nodiscard]] std::string describe() const override { return name_; }
+  /// Augmented: the Uzawa multipliers and the update count (nothing otherwise).
+  void save_state(std::vector<double>& out) const override;
+  void load_state(std::span<const double>& in) override;
 
   /// Multiplier (constraint force) values and f at the state, for output.
   [[nodiscard]] MultiplierValues values(const EvaluationState& state) const;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tether/assembly/saved_state.hpp"
 #include "tether/core/error.hpp"
 #include "tether/dofs/dof_map.hpp"
 
@@ -16,6 +17,8 @@ constexpr int kMaxReleases = 10;
 constexpr double kEndExtension = 0.05;
 /// Hand-over band in ξ (segment length 2) within which a slave keeps its segment during Newton.
 constexpr double kHandOverBand = 0.02;
+/// First value of a saved ContactPair state (restart).
+constexpr double kStateTag = 2001;
 
 Eigen::Vector2d position(const std::vector<Eigen::Vector2d>& reference, const Eigen::VectorXd& u, int node) {
   return reference[static_cast<std::size_t>(node)] + Eigen::Vector2d(u[kDofsPerNode * node], u[kDofsPerNode * node + 1]);
@@ -258,6 +261,47 @@ void ContactPair::commit(const EvaluationState& state) {
     s.committed_segment = s.pairing.segment;
     s.committed_xi = v.xi;
   }
+}
+
+void ContactPair::save_state(std::vector<double>& out) const {
+  out.push_back(kStateTag);
+  out.push_back(static_cast<double>(slaves_.size()));
+  out.push_back(searched_once_ ? 1 : 0);
+  for (const ContactSlave& s : slaves_) {
+    out.insert(out.end(), {static_cast<double>(s.node), static_cast<double>(s.pairing.segment), s.pairing.xi,
+                           s.pairing.gap, s.pairing.distance, s.pairing.at_corner ? 1.0 : 0.0,
+                           static_cast<double>(static_cast<int>(s.status)), static_cast<double>(s.committed_segment),
+                           s.committed_xi, s.committed_tangential_force, s.total_slip, s.dissipation, s.lambda_bar});
+  }
+}
+
+void ContactPair::load_state(std::span<const double>& in) {
+  using namespace saved_state;
+  expect_tag(in, kStateTag, "contact pair");
+  const int n = static_cast<int>(slaves_.size());
+  take_int(in, n, n, "number of slave nodes");
+  const bool searched = take_int(in, 0, 1, "search flag") == 1;
+  std::vector<ContactSlave> loaded = slaves_;
+  const int last_segment = surface_.n_segments() - 1;
+  for (ContactSlave& s : loaded) {
+    take_int(in, s.node, s.node, "slave node");
+    ContactPairing p;
+    p.segment = take_int(in, -1, last_segment, "paired segment");
+    p.xi = take(in);
+    p.gap = take(in);
+    p.distance = take(in);
+    p.at_corner = take_int(in, 0, 1, "corner flag") == 1;
+    s.status = static_cast<ContactStatus>(take_int(in, 0, 2, "contact status"));
+    s.committed_segment = take_int(in, -1, last_segment, "committed segment");
+    s.committed_xi = take(in);
+    s.committed_tangential_force = take(in);
+    s.total_slip = take(in);
+    s.dissipation = take(in);
+    s.lambda_bar = take(in);
+    set_pairing(s, p);
+  }
+  slaves_ = std::move(loaded);
+  searched_once_ = searched;
 }
 
 ContactPairValues ContactPair::values(const EvaluationState& state) const {

@@ -104,6 +104,11 @@ class ContactPair final : public Contribution {
   Acceptance on_converged(const EvaluationState& state) override;
   void commit(const EvaluationState& state) override;
   [[nodiscard]] std::string describe() const override { return setup_.name; }
+  /// Restart: per slave the pairing, status and committed history (segment,
+  /// ξ, tangential force, total slip, dissipation, Uzawa λ̄), and whether the
+  /// pair has searched yet. Loading re-pairs the slaves (their dof lists).
+  void save_state(std::vector<double>& out) const override;
+  void load_state(std::span<const double>& in) override;
 
   /// The per-slave contributions (to be assembled after the pair).
   [[nodiscard]] std::vector<Contribution*> nodes() const;

@@ -34,6 +34,7 @@ TETHER_DECK_HANDLER(handle_step);
 TETHER_DECK_HANDLER(handle_static);
 TETHER_DECK_HANDLER(handle_controls);
 TETHER_DECK_HANDLER(handle_end_step);
+TETHER_DECK_HANDLER(handle_restart);
 // output_keywords.cpp
 TETHER_DECK_HANDLER(handle_node_print);
 TETHER_DECK_HANDLER(handle_el_print);

@@ -157,6 +157,24 @@ std::vector<KeywordSpec> build_table() {
                                                                "only displacements).")},
        handle_controls, ""},
       {"END STEP", kAnyStep, "Ends the current step.", "", {}, handle_end_step, ""},
+      {"RESTART", kModelData | kAnyStep,
+       "Writes the state needed to continue the analysis later (WRITE: JOB.rst in the output directory, replaced "
+       "atomically; in force for later steps until changed), or continues from such a state (READ, model data "
+       "only; or `tether run DECK --restart FILE.rst`). The deck must describe the same mesh, constraints and "
+       "contact and the same loads up to the saved step; see docs/robustness.md.",
+       "",
+       {flag("WRITE", "Write the restart state (only the last one is kept: OVERLAY)."),
+        flag("READ", "Continue from the state in FILE= (or the file given with --restart)."),
+        integer("FREQUENCY", "1", "WRITE: after every n-th converged increment of a step (0: stop writing); the "
+                                  "end of every step is always written."),
+        flag("OVERLAY", "WRITE: keep only the last state (the only mode; accepted for ABAQUS compatibility)."),
+        integer("STEP", "", "READ: the state must be from this step (the file holds only the last state "
+                            "written; another one is refused)."),
+        integer("INC", "", "READ: ... and from this increment of that step (needs STEP)."),
+        {"FILE", PT::Text, "", {}, false, "",
+         "READ: the restart file, relative to the deck's directory (tether extension; without it the command "
+         "line must give --restart)."}},
+       handle_restart, ""},
       // --- output requests (apply to their step only) ---
       {"NODE PRINT", kAnyStep, "Nodal values in the text report.", "variables: U, RF",
        {name("NSET", "Node set (default: all nodes)."), frequency_param(),

@@ -1,4 +1,4 @@
-// *STEP, *STATIC, *CONTROLS, *END STEP.
+// *STEP, *STATIC, *CONTROLS, *END STEP, *RESTART.
 #include <algorithm>
 #include <optional>
 
@@ -168,8 +168,49 @@ void handle_end_step(DeckState& state, const KeywordBlock& block, const Paramete
   s.cloads = state.cloads;
   s.pressures = state.dloads;
   s.pressures.insert(s.pressures.end(), state.dsloads.begin(), state.dsloads.end());
+  s.restart_frequency = state.restart_frequency;
   state.in_step = false;
   state.output_active = false;
+}
+
+void handle_restart(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  const bool read = params.given("READ"), write = params.given("WRITE");
+  if (read == write)
+    throw InputError(block.where, read ? "*RESTART takes READ or WRITE, not both: write two *RESTART lines"
+                                       : "*RESTART needs READ (continue from a saved state) or WRITE (save it)");
+  if (!block.data.empty()) throw InputError(block.data[0].where(), "*RESTART takes no data lines");
+  const auto refuse = [&](std::string_view name, std::string_view with) {
+    if (params.given(name))
+      throw InputError(block.where, std::string(name) + "= belongs to *RESTART, " + std::string(with) + " only");
+  };
+  if (write) {
+    refuse("STEP", "READ"), refuse("INC", "READ"), refuse("FILE", "READ");
+    const int frequency = params.integer("FREQUENCY");
+    if (frequency < 0)
+      throw InputError(block.where, "FREQUENCY=" + params.text("FREQUENCY") + ": expected a number of increments >= 0");
+    state.restart_frequency = frequency;
+    return;
+  }
+  refuse("FREQUENCY", "WRITE"), refuse("OVERLAY", "WRITE");
+  if (state.seen_step)
+    throw InputError(block.where, "*RESTART, READ belongs in the model data (before the first *STEP)");
+  if (state.model.restart_read)
+    throw InputError(block.where, "second *RESTART, READ: the first is at " + state.model.restart_read->where.str());
+  RestartRead r;
+  r.where = block.where;
+  r.file = params.text("FILE");
+  if (params.given("FILE") && r.file.empty()) throw InputError(block.where, "FILE= needs a file name");
+  if (params.given("STEP")) {
+    r.step = params.integer("STEP");
+    if (r.step <= 0) throw InputError(block.where, "STEP=" + params.text("STEP") + ": expected a step number >= 1");
+  }
+  if (params.given("INC")) {
+    if (!params.given("STEP")) throw InputError(block.where, "INC= on *RESTART, READ needs STEP=");
+    r.increment = params.integer("INC");
+    if (r.increment <= 0)
+      throw InputError(block.where, "INC=" + params.text("INC") + ": expected an increment number >= 1");
+  }
+  state.model.restart_read = std::move(r);
 }
 
 }  // namespace tether::deck

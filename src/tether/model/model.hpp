@@ -151,6 +151,17 @@ struct Step {
   std::vector<ConcentratedLoad> cloads;
   std::vector<PressureLoad> pressures;
   std::vector<OutputRequest> outputs;
+  /// `*RESTART, WRITE, FREQUENCY=n` in force: the restart state is written
+  /// after every n-th converged increment and at the end of the step; 0 = not written.
+  int restart_frequency = 0;
+  SourceLocation where;
+};
+
+/// `*RESTART, READ` (model data): continue from a saved state.
+struct RestartRead {
+  std::string file;       ///< FILE= as written (relative to the deck's directory); empty: from the command line
+  int step = 0;           ///< STEP=: the state must be from this step (0 = any)
+  int increment = 0;      ///< INC=: ... and this increment of it (0 = any)
   SourceLocation where;
 };
 
@@ -178,6 +189,7 @@ struct Model {
   std::vector<ContactPairData> contact_pairs;    ///< *CONTACT PAIR
 
   std::vector<Step> steps;
+  std::optional<RestartRead> restart_read;  ///< `*RESTART, READ`, when given
 
   [[nodiscard]] int n_nodes() const { return static_cast<int>(coords.size()); }
   [[nodiscard]] int n_elements() const { return static_cast<int>(elements.size()); }

@@ -324,6 +324,39 @@ void DatWriter::check(const Model& model, const OutputRequest& r) {
   }
 }
 
+void DatWriter::save_state(std::vector<double>& out) const {
+  out.push_back(static_cast<double>(relative_slip_.size()));
+  for (const auto& pair : relative_slip_) {
+    out.push_back(static_cast<double>(pair.size()));
+    for (const auto& [node, slip] : pair) out.push_back(node), out.push_back(slip);
+  }
+}
+
+void DatWriter::load_state(std::span<const double> in) {
+  const auto take = [&]() {
+    if (in.empty()) throw std::runtime_error("the .dat writer's saved state is too short");
+    const double v = in.front();
+    in = in.subspan(1);
+    return v;
+  };
+  const auto count = [&](double hi, const char* what) {
+    const double v = take();
+    if (!(v >= 0 && v <= hi) || std::floor(v) != v)
+      throw std::runtime_error(fmt::format("bad {} in the .dat writer's saved state: {}", what, v));
+    return static_cast<int>(v);
+  };
+  RelativeSlip slip(static_cast<std::size_t>(count(static_cast<double>(in.size()), "number of contact pairs")));
+  for (auto& pair : slip) {
+    const int n = count(static_cast<double>(in.size()) / 2, "number of slave nodes");
+    for (int k = 0; k < n; ++k) {
+      const int node = count(model_.n_nodes() - 1, "slave node");
+      pair[node] = take();
+    }
+  }
+  if (!in.empty()) throw std::runtime_error("the .dat writer's saved state is too long");
+  relative_slip_ = std::move(slip);
+}
+
 void DatWriter::write_increment(const IncrementResults& results, const std::vector<OutputRequest>& requests,
                                 bool last_in_step) {
   for (const auto& r : requests) check(model_, r);

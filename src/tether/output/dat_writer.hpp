@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -198,6 +199,14 @@ class DatWriter {
                        bool last_in_step);
 
   [[nodiscard]] const std::filesystem::path& file() const { return file_; }
+
+  /// Restart: appends the history this writer keeps between increments (the
+  /// CDIS slip sums) to `out`, so that a restarted run prints what an
+  /// uninterrupted one would.
+  void save_state(std::vector<double>& out) const;
+  /// Restart: restores what save_state() wrote (all of `in`); std::runtime_error
+  /// when `in` is not such a state for this model.
+  void load_state(std::span<const double> in);
 
  private:
   const Model& model_;

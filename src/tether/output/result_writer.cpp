@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "tether/output/output_schedule.hpp"
+#include "tether/output/restart_file.hpp"
 
 namespace tether {
 
@@ -49,6 +50,17 @@ void ResultWriter::write_increment(const IncrementResults& results, const std::v
   const auto file = vtu_path(results.step, results.increment);
   vtu_.write(results, file);
   pvd_.add(results.total_time, file.filename().string());
+}
+
+void ResultWriter::write_restart(const RestartState& state) {
+  RestartState with_output = state;
+  with_output.output_state.clear();
+  dat_.save_state(with_output.output_state);
+  write_restart_file(restart_path(), with_output);
+}
+
+void ResultWriter::load_output_state(std::span<const double> output_state) {
+  if (!output_state.empty()) dat_.load_state(output_state);
 }
 
 void ResultWriter::write_status(const IncrementStatus& status) { status_.write(status); }

@@ -3,10 +3,12 @@
 /// the `.dat` report and the `.sta` status file of a job.
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "tether/model/model.hpp"
+#include "tether/model/restart_state.hpp"
 #include "tether/model/results.hpp"
 #include "tether/output/dat_writer.hpp"
 #include "tether/output/pvd_writer.hpp"
@@ -27,7 +29,8 @@ struct ResultWriterOptions {
 ///   replaced atomically, so the `.pvd` is valid at every moment);
 /// - `DIR/JOB.dat`: `*NODE PRINT` / `*EL PRINT` / `*CONTACT PRINT` output in
 ///   CalculiX's layout (see DatWriter);
-/// - `DIR/JOB.sta`: one line per increment attempt and a final verdict.
+/// - `DIR/JOB.sta`: one line per increment attempt and a final verdict;
+/// - `DIR/JOB.rst`: the restart state (`*RESTART, WRITE`), replaced atomically.
 ///
 /// A `.vtu` is written for every increment, unless the step's requests
 /// contain `*NODE FILE` / `*EL FILE` / `*CONTACT FILE` (or `*CONTACT
@@ -52,6 +55,14 @@ class ResultWriter {
   void write_increment(const IncrementResults& results, const std::vector<OutputRequest>& requests,
                        bool last_in_step);
 
+  /// Replaces `DIR/JOB.rst` with `state` and this writer's own history
+  /// (RestartState::output_state), atomically (see write_restart_file).
+  void write_restart(const RestartState& state);
+
+  /// Restart: continues the history a writer saved with write_restart (the
+  /// .dat CDIS sums); std::runtime_error when `output_state` is malformed.
+  void load_output_state(std::span<const double> output_state);
+
   /// Appends one line to the `.sta` file (converged or cut-back attempt).
   void write_status(const IncrementStatus& status);
 
@@ -64,6 +75,7 @@ class ResultWriter {
   [[nodiscard]] const std::filesystem::path& pvd_path() const { return pvd_.file(); }
   [[nodiscard]] const std::filesystem::path& dat_path() const { return dat_.file(); }
   [[nodiscard]] const std::filesystem::path& sta_path() const { return status_.file(); }
+  [[nodiscard]] std::filesystem::path restart_path() const { return directory_ / (job_ + ".rst"); }
 
  private:
   std::filesystem::path directory_;
