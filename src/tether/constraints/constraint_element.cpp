@@ -100,14 +100,17 @@ Acceptance ConstraintElement::on_converged(const EvaluationState& state) {
   c.reset(m_, n_, false);
   function_->evaluate(gather(state), c, false);
   if (c.f.cwiseAbs().maxCoeff() <= enforcement_.tolerance) return Acceptance::Accept;
-  if (updates_ >= enforcement_.max_updates)
+  if (updates_in_increment_ >= enforcement_.max_updates)
     throw ModelError(name_ + ": augmented Lagrangian did not reach |f| <= " + std::to_string(enforcement_.tolerance) +
-                     " in " + std::to_string(enforcement_.max_updates) + " updates (|f| = " +
+                     " in " + std::to_string(enforcement_.max_updates) + " updates of one increment (|f| = " +
                      std::to_string(c.f.cwiseAbs().maxCoeff()) + "); raise the penalty");
   lambda_bar_ += enforcement_.penalty * c.f;
   ++updates_;
+  ++updates_in_increment_;
   return Acceptance::Iterate;
 }
+
+void ConstraintElement::commit(const EvaluationState& /*state*/) { updates_in_increment_ = 0; }
 
 void ConstraintElement::save_state(std::vector<double>& out) const {
   if (enforcement_.method != Enforcement::Method::Augmented) return;

@@ -47,6 +47,8 @@ class ConstraintElement final : public Contribution {
   [[nodiscard]] const Enforcement& enforcement() const { return enforcement_; }
   /// Uzawa updates done so far (Augmented).
   [[nodiscard]] int n_updates() const { return updates_; }
+  /// Starts a new count of Uzawa updates (max_updates holds per increment).
+  void commit(const EvaluationState& state) override;
 
  private:
   ConstraintInput gather(const EvaluationState& state) const;
@@ -58,7 +60,8 @@ class ConstraintElement final : public Contribution {
   std::vector<int> dofs_;          ///< function dofs, then multipliers (Lagrange)
   int n_ = 0, m_ = 0;
   Eigen::VectorXd lambda_bar_;     ///< Augmented: current Uzawa multipliers
-  int updates_ = 0;
+  int updates_ = 0;               ///< Uzawa updates over the analysis
+  int updates_in_increment_ = 0;  ///< since the last converged increment (cut-back attempts included)
 };
 
 }  // namespace tether
