@@ -23,20 +23,20 @@ Where the pressure comes from:
      A negative pressure is ccx's tension tail of the penalty law at a small
      clearance (-sigma_inf): the node is open, p = 0.
   2. without a CSTR block, from the nodal forces RF_y on the master nodes
-     (MASTERN), turned into a pressure by solving M p = f with the surface
-     "mass" matrix M_ij = int N_i N_j dx of the master faces (exact for linear
-     and quadratic faces). This needs the master nodes to carry the contact
-     force in RF: true for the rigid flat (its nodes are supported); at the free
-     master nodes of the elastic block both codes print ~0 (contact and element
-     forces cancel), and the tool goes on to
-  3. the stresses of the block elements under the contact (*EL PRINT S, ELSET
-     PRESSEL): in each column of integration points (same x; the core elements
-     are axis-aligned squares) s_yy is extrapolated to the surface y = 0 by the
-     polynomial through the column (linear for 2x2, quadratic for 3x3 points),
-     p = -s_yy(0). ccx's one-layer 3D points are matched as in
-     tools/compare_ccx.py (2 layers averaged, 3: the middle one). Nodes count
-     as in contact when p > 2 % of the largest p (the extrapolation is not 0
-     outside the strip).
+     (MASTERN), each divided by the node's share w = int N dx of the master
+     faces (p = f / w; the sign is taken so that the forces push the block
+     down: ccx prints the support reaction). This needs the master nodes to
+     carry the contact force in RF: true for the rigid flat (its nodes are
+     supported); at the free master nodes of the elastic block both codes
+     print 0, and the tool goes on to
+  3. the internal forces of the block elements under the contact (*EL PRINT S,
+     ELSET PRESSEL): f_j = sum over their integration points of B_j^T sigma w
+     det J (CPE4 2x2, CPE8 3x3; ccx's one-layer 3D points matched as in
+     tools/compare_ccx.py: 2 layers averaged, 3: the middle one). At a master
+     node these forces are the contact force on the block (the master's far
+     end, shared with elements outside the set, is left out); p = f / w as
+     in 2. On the 25k deck they add up to the support reaction (1000.0 N/mm).
+Nodes with p > 0 count as in contact (3.: p > 1e-4 of the largest p).
 --source cstr|rf|stress forces one of them (default: the first available).
 
 Figures (x = undeformed coordinate of the slave or master node):

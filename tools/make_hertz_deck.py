@@ -425,7 +425,7 @@ def plot_mesh(mesh, path, a):
         ax.set_title(title, fontsize=10)
     axes[2].axvline(a, color="tab:red", lw=0.8, ls="--")
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    fig.savefig(path, dpi=80)
     plt.close(fig)
 
 
