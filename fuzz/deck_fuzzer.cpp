@@ -56,8 +56,10 @@ void remove_work_dir() {
 /// True when the input could make the reader open a file outside the working
 /// directory: a `NAME=value` whose value (after blanks and a quote, as the
 /// lexer strips them) starts with '/', or a ".." anywhere. Deliberately
-/// broader than the two path parameters (INCLUDE's INPUT, MPC/CONSTRAINT's
-/// LIBRARY): the few other inputs it skips cost nothing.
+/// broader than the path parameters (INCLUDE's INPUT and MPC/CONSTRAINT's
+/// LIBRARY, which `check` opens; RESTART's FILE, which only `run` opens): it
+/// needs no knowledge of the keywords, and the few other inputs it skips
+/// cost nothing.
 bool names_outside_work_dir(std::string_view text) {
   if (text.find("..") != std::string_view::npos) return true;
   for (std::size_t i = 0; i < text.size(); ++i) {
