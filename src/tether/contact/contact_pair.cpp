@@ -123,6 +123,7 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
 
   statistics_ = {};
   bool changed = false;
+  std::vector<char> repaired(slaves_.size(), 0);
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     ContactSlave& s = slaves_[i];
     ContactPairing p = pairings[i];
@@ -158,6 +159,7 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
       }
     }
     if (p.segment != s.pairing.segment) {
+      repaired[i] = 1;
       set_pairing(s, p);
       changed = true;
       ++statistics_.repaired;
@@ -179,8 +181,10 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     ContactSlave& s = slaves_[i];
     const auto [status, direction] = nodes_[i]->status_and_direction(state);
-    // Friction guard: a node whose slip keeps reversing is really sticking.
-    if (!new_attempt && direction != 0 && s.slip_direction != 0 && direction != s.slip_direction &&
+    // Friction guard: a node whose slip keeps reversing on the same master
+    // segment is really sticking (a reversal while it is handed over to the
+    // next segment of a sliding surface is not counted).
+    if (!new_attempt && !repaired[i] && direction != 0 && s.slip_direction != 0 && direction != s.slip_direction &&
         ++s.direction_flips >= setup_.max_direction_flips)
       s.held_stick = true;
     s.slip_direction = direction;

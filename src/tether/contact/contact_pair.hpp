@@ -51,7 +51,7 @@ struct ContactPairSetup {
   int max_status_changes = 4;
   /// Reversals of the slip direction of one node within an attempt after
   /// which it is held in stick until Newton converges (friction guard).
-  int max_direction_flips = 2;
+  int max_direction_flips = 3;
 };
 
 /// Per-slave record: pairing, dofs, committed history.

@@ -27,12 +27,13 @@ bool has_nonpositive_diagonal(const SparseMatrix& a) {
 }
 
 /// Symmetric systems: CHOLMOD while positive definite, MUMPS LDLT when
-/// indefinite (multipliers, or once CHOLMOD has failed — the choice sticks
-/// until the pattern changes). Unsymmetric systems: UMFPACK.
+/// indefinite (multipliers, or once CHOLMOD has failed), UMFPACK when MUMPS
+/// reports a zero pivot (it then also decides and names a singularity); each
+/// choice sticks until the pattern changes. Unsymmetric systems: UMFPACK.
 class AutoSolver final : public LinearSolver {
  public:
   void analyze(const SparseMatrix& a) override {
-    cholmod_failed_ = false;
+    cholmod_failed_ = mumps_failed_ = false;
     cholmod_ready_ = umfpack_ready_ = mumps_ready_ = false;
     (void)a;
   }
@@ -48,10 +49,19 @@ class AutoSolver final : public LinearSolver {
           cholmod_failed_ = true;  // indefinite: LDLT, which also diagnoses singularity
         }
       }
-      if (!mumps_ready_) mumps_.analyze(a), mumps_ready_ = true;
-      mumps_.factorize(a, true);
-      active_ = &mumps_;
-      return;
+      if (!mumps_failed_) {
+        try {
+          if (!mumps_ready_) mumps_.analyze(a), mumps_ready_ = true;
+          mumps_.factorize(a, true);
+          active_ = &mumps_;
+          return;
+        } catch (const SolverError&) {
+          // MUMPS's null-pivot test can flag a tiny but regular pivot (an open
+          // contact row -1/c against a very stiff body): LU with its own
+          // condition estimate decides whether the matrix is singular.
+          mumps_failed_ = true;
+        }
+      }
     }
     if (!umfpack_ready_) umfpack_.analyze(a), umfpack_ready_ = true;
     umfpack_.factorize(a, symmetric);
@@ -68,7 +78,8 @@ class AutoSolver final : public LinearSolver {
   MumpsSolver mumps_;
   UmfpackSolver umfpack_;
   LinearSolver* active_ = nullptr;
-  bool cholmod_ready_ = false, umfpack_ready_ = false, mumps_ready_ = false, cholmod_failed_ = false;
+  bool cholmod_ready_ = false, umfpack_ready_ = false, mumps_ready_ = false, cholmod_failed_ = false,
+       mumps_failed_ = false;
 };
 
 }  // namespace
