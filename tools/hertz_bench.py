@@ -3,6 +3,7 @@
 
     hertz_bench.py [CASE ...] [--codes ccx,tether] [--workdir DIR] [--results FILE.md]
                    [--json FILE.json] [--ccx-reference FILE.json [--reference-from OLD.json]]
+                   [--from-json OLD.json --results FILE.md]
                    [--ccx-max 230k]
                    [--tether build/bin/tether] [--ccx ccx] [--timeout 3600] [--threads 1]
                    [--increments 10] [--seat DELTA] [--wait-load 1.0 --wait-max 900]
@@ -30,7 +31,8 @@ printed and written as Markdown to --results (with the machine, the load, the
 versions and the command); --json writes everything; --ccx-reference merges
 compact ccx records (one per case, with date, command and load) into a reference
 file (bench/hertz/ccx_reference.json): records of the cases run replace the old
-ones, the others are kept; --reference-from takes them from an earlier --json.
+ones, the others are kept; --reference-from takes them from an earlier --json,
+and --from-json rewrites --results from one (both without running anything).
 --wait-load X waits (up to --wait-max s) before each run until the 1-minute load
 average is below X (the machine is shared); the load at the start of each run is
 recorded either way. Exit status 0 (failed runs are reported, not fatal), 2 bad
@@ -303,7 +305,7 @@ def write_results(path, rows, decks, meta):
                      f"{info['dofs']} | {info['nodes']} | {info['elements']} | {info['h']:.4g} | {info['h_over_a']:.4f} | "
                      f"{info['core']:.4g} | {info['slave_nodes']} | {info['generate_seconds']:.1f} |")
     lines += ["", "## Runs", "", table(rows), "",
-              "Columns: Newton its = sum of ITRS over the converged increments of both steps (in brackets all "
+              "Columns: Newton its = sum of ITRS over the converged increments of all steps (in brackets all "
               "iterations, cut-back attempts included: ccx .cvg rows, tether TOTITRS); p0 err (peak) = largest nodal "
               "pressure vs p0; p0/a err (fit) = least squares of p² = A − B x² over the nodes with p ≥ peak/2; "
               "a err (edge) = where the Hertz profile through the last two nodes in contact vanishes (resolution: "
@@ -323,6 +325,8 @@ def main(argv=None):
     ap.add_argument("--results", help="write the Markdown table here (e.g. bench/hertz/results.md)")
     ap.add_argument("--json", help="write all figures here")
     ap.add_argument("--ccx-reference", help="write the ccx figures here (bench/hertz/ccx_reference.json)")
+    ap.add_argument("--from-json", metavar="RESULTS.json",
+                    help="no runs: rewrite --results from an earlier --json file")
     ap.add_argument("--reference-from", metavar="RESULTS.json",
                     help="no runs: merge the ccx rows of an earlier --json file into --ccx-reference")
     ap.add_argument("--ccx-max", default="230k", type=make_hertz_deck.parse_count,
@@ -341,6 +345,16 @@ def main(argv=None):
         if not args.ccx_reference:
             ap.error("--reference-from needs --ccx-reference")
         import_reference(args.ccx_reference, args.reference_from)
+        return 0
+    if args.from_json:
+        if not args.results:
+            ap.error("--from-json needs --results")
+        with open(args.from_json) as f:
+            data = json.load(f)
+        decks = [(parse_case(d["case"], args.element), d) for d in data["decks"]]
+        rows = [{**r, "case": parse_case(r["case"], args.element)} for r in data["runs"]]
+        write_results(args.results, rows, decks, data["meta"])
+        print(f"written: {args.results} (from {args.from_json})")
         return 0
     try:
         cases = [parse_case(c, args.element) for c in args.cases]
