@@ -10,7 +10,8 @@
 # Installs Clang and compiler-rt if missing (scripts/install-deps.sh fuzz),
 # configures and builds the fuzzer in its own directory (TETHER_FUZZ_BUILD_DIR,
 # default build-fuzz), seeds it with every .inp deck under examples/ and tests/
-# (copied at run time into <build>/fuzz-seeds) and the dictionary fuzz/deck.dict,
+# and the few decks of fuzz/seeds/ for keywords those do not use (copied at run
+# time into <build>/fuzz-seeds), gives it the dictionary fuzz/deck.dict,
 # and prints the figures: executions, exec/s, coverage, findings.
 # New interesting inputs accumulate in <build>/fuzz-corpus across runs; a crash,
 # hang (> 10 s), leak or allocation over 2 GB stops the run and is saved in
@@ -22,6 +23,8 @@ cd "$(dirname "$0")/.."
 runs=${1:-1000000}
 seconds=${2:-0}
 dir=${TETHER_FUZZ_BUILD_DIR:-build-fuzz}
+libfuzzer_runs=$runs
+if [ "$runs" = 0 ]; then libfuzzer_runs=-1; fi  # libFuzzer: -runs=-1 is unlimited, 0 runs only the corpus
 
 bash scripts/install-deps.sh fuzz
 
@@ -42,7 +45,7 @@ n_seeds=0
 while IFS= read -r -d '' deck; do
   cp "$deck" "$seeds/$(echo "${deck#./}" | tr '/' '_')"
   n_seeds=$((n_seeds + 1))
-done < <(find examples tests -name '*.inp' -type f -print0)
+done < <(find examples tests fuzz/seeds -name '*.inp' -type f -print0)
 
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_string_checks=1:check_initialization_order=1:detect_stack_use_after_return=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
@@ -55,7 +58,7 @@ before=$(find "$artifacts" -type f | wc -l)
 echo "fuzz: $n_seeds seed decks, runs=$runs, seconds=$seconds, log $log"
 start=$(date +%s)
 status=0
-"$dir/bin/deck_fuzzer" -runs="$runs" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
+"$dir/bin/deck_fuzzer" -runs="$libfuzzer_runs" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
   -rss_limit_mb=2048 -dict=fuzz/deck.dict -print_final_stats=1 -artifact_prefix="$artifacts/" \
   "$corpus" "$seeds" >"$log" 2>&1 || status=$?
 end=$(date +%s)
