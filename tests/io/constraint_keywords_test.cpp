@@ -135,6 +135,20 @@ TEST(ConstraintKeywords, BeamAndUserMpc) {
   EXPECT_EQ(m.constraints[2].nodes.size(), 2u);
 }
 
+TEST(ConstraintKeywords, LibraryOfADeckWithoutDirectoryStaysInTheCurrentDirectory) {
+  // `tether check deck.inp` with LIBRARY=libeq.so must load ./libeq.so: a bare
+  // "libeq.so" would make dlopen() search the system library path instead.
+  const Model m = read_deck_string(
+      with_model_data("*CONSTRAINT, TYPE=USER, LIBRARY=libeq.so, MULTIPLIERS=1\n2, 5\n"
+                      "*MPC, USER, LIBRARY=mpc.so\n7, 2, 5\n"
+                      "*MPC, USER, LIBRARY=/opt/lib/abs.so\n7, 2, 5\n"),
+      "c.inp");
+  ASSERT_EQ(m.constraints.size(), 3u);
+  EXPECT_EQ(m.constraints[0].library, "./libeq.so");
+  EXPECT_EQ(m.constraints[1].library, "./mpc.so");
+  EXPECT_EQ(m.constraints[2].library, "/opt/lib/abs.so");  // absolute paths are kept
+}
+
 TEST(ConstraintKeywords, RotationDofSixOnBoundaryAndCload) {
   const Model m = read_deck_string(
       replaced(with_model_data("*MPC\nBEAM, 2, 5\n"), "*CLOAD\nRIGHT, 1, 10", "*BOUNDARY\n5, 6, 6, 0.5\n*CLOAD\n5, 6, 2."),

@@ -15,6 +15,21 @@ std::string default_name(const DeckState& state, const std::string& what) {
   return what + "-" + std::to_string(state.model.constraints.size() + 1);
 }
 
+/// The LIBRARY= path, relative to the directory of the deck line's file. A
+/// deck named without a directory ("deck.inp") gives "./libx.so", not
+/// "libx.so": dlopen() searches the system library path for a name without
+/// '/', so it would miss the library next to the deck and could load another
+/// of the same name.
+std::string library_path(const std::string& library, const std::string& deck_file) {
+  std::filesystem::path path(library);
+  if (path.is_relative()) {
+    std::filesystem::path dir = std::filesystem::path(deck_file).parent_path();
+    if (dir.empty()) dir = ".";
+    path = dir / path;
+  }
+  return path.string();
+}
+
 }  // namespace
 
 void handle_equation(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
@@ -93,14 +108,13 @@ namespace {
 void read_user_mpc(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   const std::string library = params.text("LIBRARY");
   if (library.empty()) throw InputError(block.where, "*MPC, USER needs LIBRARY=path of the shared library");
-  std::filesystem::path path(library);
-  if (path.is_relative()) path = std::filesystem::path(block.where.file).parent_path() / path;
+  const std::string path = library_path(library, block.where.file);
   const Enforcement enforcement = read_enforcement(params, block.where, false);
   for (std::size_t k = 0; k < block.data.size();) {
     ConstraintData c;
     c.kind = ConstraintData::Kind::UserMpc;
     c.where = block.data[k].where();
-    c.library = path.string();
+    c.library = path;
     c.symbol = params.given("SYMBOL") ? params.text("SYMBOL") : "tether_user_mpc";
     c.node_mode = params.name("MODE") == "NODE";
     c.enforcement = enforcement;
@@ -192,9 +206,7 @@ void handle_constraint(DeckState& state, const KeywordBlock& block, const Parame
                                     "ENFORCEMENT=LAGRANGE applies");
     std::string library = params.text("LIBRARY");
     if (library.empty()) throw InputError(block.where, "TYPE=USER needs LIBRARY=path of the shared library");
-    std::filesystem::path path(library);
-    if (path.is_relative()) path = std::filesystem::path(block.where.file).parent_path() / path;
-    c.library = path.string();
+    c.library = library_path(library, block.where.file);
     c.symbol = params.given("SYMBOL") ? params.text("SYMBOL") : "tether_user_constraint";
     c.n_multipliers = params.integer("MULTIPLIERS");
     c.flag = params.integer("FLAG");
