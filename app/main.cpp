@@ -67,8 +67,8 @@ std::string restart_source(const Model& model, const std::string& deck, const st
   return (file.is_absolute() ? file : fs::path(deck).parent_path() / file).string();
 }
 
-int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool ascii, bool quiet,
-        const std::string& restart) {
+int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
+        bool quiet, const std::string& restart) {
   const auto t0 = std::chrono::steady_clock::now();
   const Model model = read_with_warnings(deck);
   const fs::path dir = output_dir.empty() ? fs::path(deck).parent_path() / fs::path(deck).stem() : fs::path(output_dir);
@@ -76,6 +76,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
 
   AnalysisOptions options;
   options.solver = parse_solver_kind(solver);
+  options.condense_contact = condense;
   Relay relay;
   std::unique_ptr<StaticAnalysis> analysis;
   const std::string restart_file = restart_source(model, deck, restart);
@@ -114,8 +115,12 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   const SolveTiming& t = summary.timing;
   const std::string timing =
       fmt::format("time {:.2f} s: contact search {:.2f}, assembly {:.2f}, analyse {:.2f}, factorize {:.2f} ({} "
-                  "factorizations), solve {:.2f}, output {:.2f}",
-                  seconds, t.contact_search, t.assembly, t.analyse, t.factorize, t.factorizations, t.solve, t.output);
+                  "factorizations{}), solve {:.2f}, output {:.2f}",
+                  seconds, t.contact_search, t.assembly, t.analyse, t.factorize, t.factorizations,
+                  t.sparse_factorizations > 0
+                      ? fmt::format(", {} of the bulk, the rest of the contact equations only", t.sparse_factorizations)
+                      : std::string(),
+                  t.solve, t.output);
   observer.on_message(timing);
   writer.finish(summary.completed, summary.message);
   if (!quiet) {
@@ -140,7 +145,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::string deck, output_dir, solver = "auto", restart;
-  bool ascii = false, quiet = false;
+  bool ascii = false, quiet = false, no_condense = false;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
   run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
   run_cmd->add_option("-o,--output", output_dir, "Output directory (default: next to the deck, named after it)");
@@ -149,6 +154,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--restart", restart,
                       "Continue from this restart file (JOB.rst written by *RESTART, WRITE) instead of the "
                       "beginning; the results go to a fresh output directory (use -o)");
+  run_cmd->add_flag("--no-condense", no_condense,
+                    "With contact: factorize the whole matrix at every iteration instead of condensing it onto "
+                    "the contact equations (for comparison; same answer)");
   run_cmd->add_flag("--ascii", ascii, "Write ASCII instead of binary VTU (for debugging)");
   run_cmd->add_flag("-q,--quiet", quiet, "Print nothing but errors");
   auto* check_cmd = app.add_subcommand("check", "Read and validate a deck without solving it");
@@ -168,7 +176,7 @@ int main(int argc, char** argv) {
       return kOk;
     }
     if (*check_cmd) return check(deck);
-    return run(deck, output_dir, solver, ascii, quiet, restart);
+    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart);
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInput;

@@ -116,4 +116,25 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
   return std::make_unique<ContactPair>(std::move(setup), reference, first);
 }
 
+std::vector<int> contact_equations(const std::vector<std::unique_ptr<ContactPair>>& pairs, const DofMap& dofs,
+                                   const EquationMap& equations) {
+  std::vector<int> out;
+  const auto add = [&](int dof) {
+    if (dof < 0) return;
+    for (const EquationWeight& w : equations.weights(dof)) out.push_back(w.equation);
+  };
+  const auto add_node = [&](int node) {
+    for (int c = 0; c < kDofsPerNode; ++c) add(dofs.displacement(node, c));
+  };
+  for (const auto& pair : pairs) {
+    for (int node : pair->setup().slave_nodes) add_node(node);
+    for (const auto& face : pair->setup().master_faces)
+      for (int node : face) add_node(node);
+    for (int i = 0; i < pair->n_slaves(); ++i) add(pair->slave(i).normal_multiplier), add(pair->slave(i).tangent_multiplier);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 }  // namespace tether

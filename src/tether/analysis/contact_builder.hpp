@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "tether/contact/contact_pair.hpp"
+#include "tether/assembly/equation_map.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/model/model.hpp"
 
@@ -19,5 +20,13 @@ namespace tether {
 /// option tether does not model.
 std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const ContactPairData& data,
                                                const std::vector<Eigen::Vector2d>& reference, DofMap& dofs);
+
+/// Every free equation a contact contribution of `pairs` can ever touch,
+/// whatever the pairing: the displacements of the slave nodes and of all
+/// master-surface nodes (through `equations`, so a dof eliminated by an MPC
+/// counts as the equations it expands to) and the contact multipliers.
+/// Sorted, unique. The interface of CondensedSolver.
+std::vector<int> contact_equations(const std::vector<std::unique_ptr<ContactPair>>& pairs, const DofMap& dofs,
+                                   const EquationMap& equations);
 
 }  // namespace tether

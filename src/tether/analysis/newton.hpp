@@ -24,6 +24,9 @@ struct SolveTiming {
   double solve = 0;           ///< triangular solves
   double output = 0;          ///< results and writers (set by the analysis)
   int factorizations = 0;
+  /// Of those, sparse factorizations of the bulk by the condensed solver (the
+  /// rest reused it); 0 when the solver did not condense.
+  int sparse_factorizations = 0;
 };
 
 /// The nonlinear system of one increment, in terms of its free equations.

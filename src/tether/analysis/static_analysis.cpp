@@ -8,6 +8,7 @@
 
 #include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/constraint_checks.hpp"
+#include "tether/analysis/contact_builder.hpp"
 #include "tether/analysis/increment_problem.hpp"
 #include "tether/analysis/newton.hpp"
 #include "tether/analysis/restart.hpp"
@@ -15,12 +16,18 @@
 #include "tether/analysis/step_loads.hpp"
 #include "tether/assembly/assembler.hpp"
 #include "tether/core/error.hpp"
+#include "tether/solvers/condensed_solver.hpp"
 
 namespace tether {
 
 namespace {
 
 constexpr int kMaxAcceptancePasses = 50;
+/// Condensation onto the contact equations (CondensedSolver) only while the
+/// dense interface system stays small (its LU costs (2/3)|I|³ per iteration)
+/// and a small part of the whole.
+constexpr int kMaxCondensedEquations = 3000;
+constexpr int kMinCondensationRatio = 20;
 
 std::string format_time(double t) {
   std::ostringstream s;
@@ -239,7 +246,17 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                          " node(s) belong to no element; they get no degrees of freedom");
   Assembler assembler(contributions, EquationMap(prescribed, disc.elimination_rows()));
   check_constraints(disc, assembler.equations(), EvaluationState{u_, u_, 0, total_time_, 0, step.nlgeom});
-  auto solver = make_linear_solver(options_.solver);
+  std::unique_ptr<LinearSolver> solver = make_linear_solver(options_.solver);
+  const CondensedSolver* condensed = nullptr;
+  if (options_.solver == SolverKind::Auto && options_.condense_contact && !disc.contact_pairs().empty()) {
+    std::vector<int> interface = contact_equations(disc.contact_pairs(), dofs, assembler.equations());
+    const auto m = static_cast<int>(interface.size());
+    if (m <= kMaxCondensedEquations && kMinCondensationRatio * m <= assembler.equations().n_equations()) {
+      auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver));
+      condensed = c.get();
+      solver = std::move(c);
+    }
+  }
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
   // The tangent is symmetric unless follower pressure, friction or a user
   // routine (its Hessian comes from finite differences) makes it otherwise;
@@ -307,19 +324,33 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   };
 
   double output_seconds = 0;
-  // Adds this step's timing to the summary (at every exit of the step).
+  // Adds this step's timing to the summary (at every exit of the step) and
+  // says how the condensed solver went.
   struct TimingGuard {
     AnalysisSummary& summary;
     const NewtonSolver& newton;
     const double& output;
+    const CondensedSolver* condensed;
+    AnalysisObserver& observer;
+    int step;
     ~TimingGuard() {
       const SolveTiming& t = newton.timing();
       SolveTiming& s = summary.timing;
       s.contact_search += t.contact_search, s.assembly += t.assembly, s.analyse += t.analyse;
       s.factorize += t.factorize, s.solve += t.solve, s.factorizations += t.factorizations;
       s.output += output;
+      if (!condensed || t.factorizations == 0) return;
+      const CondensationStatistics& c = condensed->statistics();
+      s.sparse_factorizations += c.sparse_factorizations;
+      observer.on_message("step " + std::to_string(step) + ": linear solver condensed onto " +
+                          std::to_string(c.interface_equations) + " contact equations: " +
+                          std::to_string(c.sparse_factorizations) + " sparse factorization(s), " +
+                          std::to_string(c.reuses) + " reuse(s), " + std::to_string(c.fallbacks) +
+                          " full factorization(s)" +
+                          (c.gave_up ? " (stopped condensing: the matrix changed outside the contact equations)"
+                                     : ""));
     }
-  } timing_guard{summary, newton, output_seconds};
+  } timing_guard{summary, newton, output_seconds, condensed, observer_, index + 1};
 
   auto stop = [&](const std::string& why) {
     summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(step_time) +

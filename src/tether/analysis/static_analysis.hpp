@@ -22,6 +22,11 @@ namespace tether {
 
 struct AnalysisOptions {
   SolverKind solver = SolverKind::Auto;
+  /// With the Auto solver and contact: condense the sparse system onto the
+  /// contact equations and factorize the rest only when it changes
+  /// (CondensedSolver; docs/theory/condensation.md). Off: every Newton
+  /// iteration factorizes the whole matrix.
+  bool condense_contact = true;
   /// Tests of restart: stop (not completed) after this many converged
   /// increments of this run, as if the run had been killed there; 0 = never.
   int stop_after_increments = 0;

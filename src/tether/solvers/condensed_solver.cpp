@@ -1,0 +1,134 @@
+#include "tether/solvers/condensed_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tether/core/error.hpp"
+
+namespace tether {
+
+namespace {
+/// Reciprocal condition number of the equilibrated interface matrix below
+/// which it counts as singular and the fallback decides.
+constexpr double kSingularRcond = 1e-12;
+}  // namespace
+
+CondensedSolver::CondensedSolver(std::vector<int> interface, std::unique_ptr<LinearSolver> fallback)
+    : interface_(std::move(interface)), fallback_(std::move(fallback)), bulk_(std::make_unique<MumpsSchur>()) {
+  std::sort(interface_.begin(), interface_.end());
+  interface_.erase(std::unique(interface_.begin(), interface_.end()), interface_.end());
+  statistics_.interface_equations = static_cast<int>(interface_.size());
+}
+
+CondensedSolver::~CondensedSolver() = default;
+
+void CondensedSolver::analyze(const SparseMatrix& a) {
+  // Nothing to do for the condensed path: MumpsSchur re-orders only when the
+  // R pattern changed. The fallback must analyse the new pattern before use.
+  (void)a;
+  fallback_analysed_ = false;
+}
+
+void CondensedSolver::use_fallback(const SparseMatrix& a, bool symmetric) {
+  if (!fallback_analysed_) fallback_->analyze(a), fallback_analysed_ = true;
+  fallback_active_ = true;
+  ++statistics_.fallbacks;
+  fallback_->factorize(a, symmetric);
+}
+
+bool CondensedSolver::outer_symmetric(const SparseMatrix& a) const {
+  const SparseMatrix t = a.transpose();
+  for (Eigen::Index j = 0; j < a.cols(); ++j) {
+    const int begin = a.outerIndexPtr()[j], end = a.outerIndexPtr()[j + 1];
+    if (end - begin != t.outerIndexPtr()[j + 1] - t.outerIndexPtr()[j]) return false;
+    for (int k = begin, kt = t.outerIndexPtr()[j]; k < end; ++k, ++kt) {
+      const int i = a.innerIndexPtr()[k];
+      if (i != t.innerIndexPtr()[kt]) return false;
+      if (in_interface_[static_cast<std::size_t>(i)] && in_interface_[static_cast<std::size_t>(j)]) continue;
+      if (a.valuePtr()[k] != t.valuePtr()[kt]) return false;
+    }
+  }
+  return true;
+}
+
+void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
+  fallback_active_ = false;
+  const auto n = static_cast<std::size_t>(a.cols());
+  if (in_interface_.size() != n) {
+    if (!interface_.empty() && (interface_.front() < 0 || static_cast<std::size_t>(interface_.back()) >= n))
+      throw SolverError("condensed solver: an interface equation is outside the matrix");
+    in_interface_.assign(n, 0);
+    position_.assign(n, -1);
+    for (std::size_t k = 0; k < interface_.size(); ++k)
+      in_interface_[static_cast<std::size_t>(interface_[k])] = 1, position_[static_cast<std::size_t>(interface_[k])] = static_cast<int>(k);
+    bulk_valid_ = false;
+  }
+  if (statistics_.gave_up || interface_.empty()) return use_fallback(a, symmetric);
+
+  // The R entries must be symmetric for the LDLT of A_RR; a matrix declared
+  // unsymmetric (friction) often still is outside the interface.
+  const bool outer_sym = symmetric || outer_symmetric(a);
+  if (bulk_valid_ && outer_sym == bulk_symmetric_ && bulk_->unchanged(a, in_interface_)) {
+    ++statistics_.reuses;
+    changes_in_row_ = 0;
+  } else {
+    if (bulk_valid_ && ++changes_in_row_ >= 2) {
+      // The bulk itself changes every iteration: condensing only adds work.
+      statistics_.gave_up = true;
+      bulk_valid_ = false;
+      bulk_ = std::make_unique<MumpsSchur>();  // frees the factors
+      return use_fallback(a, symmetric);
+    }
+    try {
+      bulk_valid_ = false;
+      bulk_->factorize(a, interface_, in_interface_, outer_sym);
+      bulk_valid_ = true;
+      bulk_symmetric_ = outer_sym;
+      ++statistics_.sparse_factorizations;
+    } catch (const SolverError&) {
+      return use_fallback(a, symmetric);  // A_RR singular: let the fallback decide and name it
+    }
+  }
+
+  // Dense interface matrix A_II + C, equilibrated by D = 1/sqrt|diag|.
+  const auto m = static_cast<Eigen::Index>(interface_.size());
+  Eigen::MatrixXd s = bulk_->schur();
+  for (int j : interface_)
+    for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
+      const int i = a.innerIndexPtr()[k];
+      if (in_interface_[static_cast<std::size_t>(i)])
+        s(position_[static_cast<std::size_t>(i)], position_[static_cast<std::size_t>(j)]) += a.valuePtr()[k];
+    }
+  scale_.resize(m);
+  for (Eigen::Index k = 0; k < m; ++k) {
+    const double d = std::abs(s(k, k));
+    scale_[k] = d > 0 && std::isfinite(d) ? 1.0 / std::sqrt(d) : 1.0;
+  }
+  s = scale_.asDiagonal() * s * scale_.asDiagonal();
+  lu_.compute(s);
+  // Eigen's condition estimate is unreliable once a pivot is exactly zero
+  // (its triangular solves produce Inf/NaN), so the pivots are checked too.
+  const Eigen::VectorXd pivots = lu_.matrixLU().diagonal().cwiseAbs();
+  const bool regular = pivots.allFinite() && pivots.minCoeff() > kSingularRcond * pivots.maxCoeff() &&
+                       lu_.rcond() > kSingularRcond;
+  if (!regular) return use_fallback(a, symmetric);
+}
+
+void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  if (fallback_active_) return fallback_->solve(b, x);
+  if (!bulk_valid_) throw SolverError("condensed solver: solve before factorize");
+  Eigen::VectorXd reduced;
+  bulk_->reduce(b, reduced);
+  for (std::size_t k = 0; k < interface_.size(); ++k)
+    reduced[static_cast<Eigen::Index>(k)] += b[interface_[k]];
+  const Eigen::VectorXd y = scale_.asDiagonal() * lu_.solve(scale_.asDiagonal() * reduced);
+  bulk_->expand(y, x);
+}
+
+std::string CondensedSolver::name() const {
+  if (fallback_active_) return fallback_->name();
+  return std::string("MUMPS ") + (bulk_symmetric_ ? "LDLT" : "LU") + " + dense interface (" +
+         std::to_string(interface_.size()) + " equations)";
+}
+
+}  // namespace tether

@@ -1,0 +1,79 @@
+#pragma once
+/// \file A direct solver for systems whose matrix changes, from one Newton
+/// iteration to the next, only in a small block of "interface" equations —
+/// the contact unknowns of a contact problem with a linear-elastic bulk.
+///
+/// With the free equations split into the interface I and the rest R,
+///     [A_RR A_RI] [x_R]   [b_R]
+///     [A_IR A_II] [x_I] = [b_I],
+/// the solver factorizes A_RR once with the Schur complement
+/// C = -A_IR A_RR⁻¹ A_RI (MumpsSchur). While the entries of A with a row or
+/// column in R stay bitwise unchanged (checked at every factorize(), O(nnz)),
+/// a new matrix costs only the dense LU of A_II + C (|I| × |I|) and a solve
+/// one forward and one backward sweep plus that dense solve. The answer is
+/// that of the full system to round-off; nothing is approximated.
+///
+/// When those entries change (finite strain, plasticity), A_RR is factorized
+/// again; after two such changes in a row the solver gives up condensing and
+/// hands every further call to the fallback solver. The fallback also takes a
+/// single call when A_RR is singular (a body not held through I) or the dense
+/// interface matrix is (a floating body, an overconstrained contact): it then
+/// decides and names the singular equation as it would have without
+/// condensation.
+
+#include <memory>
+#include <vector>
+
+#include "tether/solvers/linear_solver.hpp"
+#include "tether/solvers/mumps_schur.hpp"
+
+#include <Eigen/LU>
+
+namespace tether {
+
+/// What the solver did, for logs and tests.
+struct CondensationStatistics {
+  int interface_equations = 0;  ///< |I|
+  int sparse_factorizations = 0;  ///< of A_RR with its Schur complement
+  int reuses = 0;                 ///< factorize() calls served by the dense interface system alone
+  int fallbacks = 0;              ///< factorize() calls handed to the fallback solver
+  bool gave_up = false;           ///< stopped condensing (R entries changed twice in a row)
+};
+
+class CondensedSolver final : public LinearSolver {
+ public:
+  /// `interface`: free equations (any order, duplicates allowed) that hold all
+  /// the entries expected to change between factorizations. `fallback`:
+  /// the solver used when condensation does not apply.
+  CondensedSolver(std::vector<int> interface, std::unique_ptr<LinearSolver> fallback);
+  ~CondensedSolver() override;
+
+  void analyze(const SparseMatrix& a) override;
+  void factorize(const SparseMatrix& a, bool symmetric) override;
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
+  [[nodiscard]] std::string name() const override;
+
+  [[nodiscard]] const CondensationStatistics& statistics() const { return statistics_; }
+
+ private:
+  /// True when the entries of `a` outside the interface block are symmetric.
+  [[nodiscard]] bool outer_symmetric(const SparseMatrix& a) const;
+  void use_fallback(const SparseMatrix& a, bool symmetric);
+
+  std::vector<int> interface_;
+  std::vector<char> in_interface_;  ///< per equation (sized at the first factorize)
+  std::vector<int> position_;       ///< per equation: index in interface_, -1 in R
+  std::unique_ptr<LinearSolver> fallback_;
+  std::unique_ptr<MumpsSchur> bulk_;
+  bool bulk_valid_ = false;       ///< bulk_ holds a factorization (of the R entries it compares against)
+  bool bulk_symmetric_ = false;   ///< bulk_ is an LDLT
+  int changes_in_row_ = 0;        ///< consecutive factorize() calls whose R entries changed
+  bool fallback_active_ = false;  ///< the last factorize() went to the fallback
+  bool fallback_analysed_ = false;
+  // Dense interface system (A_II + C), equilibrated: D (A_II + C) D, D = 1/sqrt|diag|.
+  Eigen::VectorXd scale_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  CondensationStatistics statistics_;
+};
+
+}  // namespace tether

@@ -1,0 +1,61 @@
+#pragma once
+/// \file One sequential MUMPS instance (double precision), owned RAII-style:
+/// the private plumbing shared by MumpsSolver and MumpsSchur. Not installed.
+///
+/// MUMPS numbers its controls and information from 1 as in its manual
+/// (ICNTL(7), INFOG(28)); icntl() and infog() take those numbers.
+
+#include <dmumps_c.h>
+
+#include <string>
+
+#include "tether/core/error.hpp"
+
+namespace tether::detail {
+
+struct MumpsInstance {
+  DMUMPS_STRUC_C id{};
+
+  /// `sym`: 0 unsymmetric (LU), 1 symmetric positive definite, 2 general symmetric (LDLT, 2x2 pivots).
+  explicit MumpsInstance(int sym) {
+    id.comm_fortran = -987654;  // MUMPS' "use comm world" for the sequential library
+    id.par = 1;                 // the host works
+    id.sym = sym;
+    id.job = -1;
+    dmumps_c(&id);
+    icntl(1) = -1;  // no error, diagnostic or global output streams
+    icntl(2) = -1;
+    icntl(3) = -1;
+    icntl(4) = 0;
+    icntl(14) = 40;  // working space relaxation [%]
+    icntl(24) = 1;   // detect null pivots (report the singular equation instead of failing)
+  }
+  ~MumpsInstance() {
+    id.job = -2;
+    dmumps_c(&id);
+  }
+  MumpsInstance(const MumpsInstance&) = delete;
+  MumpsInstance& operator=(const MumpsInstance&) = delete;
+
+  int& icntl(int i) { return id.icntl[i - 1]; }
+  [[nodiscard]] int infog(int i) const { return id.infog[i - 1]; }
+
+  /// Runs `job` (1 analysis, 2 factorization, 3 solve); throws SolverError on
+  /// a MUMPS error. Retries a factorization with more working space when
+  /// MUMPS asks for it (INFOG(1) = -9, -8).
+  void run(int job) {
+    id.job = job;
+    dmumps_c(&id);
+    for (int retry = 0; retry < 3 && job == 2 && (infog(1) == -9 || infog(1) == -8); ++retry) {
+      icntl(14) *= 2;
+      id.job = job;
+      dmumps_c(&id);
+    }
+    if (infog(1) < 0)
+      throw SolverError("MUMPS " + std::string(job == 1 ? "analysis" : job == 2 ? "factorization" : "solve") +
+                        " failed (INFOG(1) = " + std::to_string(infog(1)) + ", INFOG(2) = " +
+                        std::to_string(infog(2)) + ")");
+  }
+};
+
+}  // namespace tether::detail

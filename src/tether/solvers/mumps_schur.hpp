@@ -1,0 +1,83 @@
+#pragma once
+/// \file Sparse factorization with a dense Schur complement on chosen
+/// equations (MUMPS, ICNTL(19)), and solves by condensation and expansion
+/// (ICNTL(26)).
+///
+/// Splits the unknowns into the interface I (a short list) and the rest R and
+/// factorizes A_RR only, returning
+///     S = A_II - A_IR A_RR⁻¹ A_RI        (dense, |I| × |I|).
+/// A system A x = b is then solved in three parts: reduce() gives
+/// b_I - A_IR A_RR⁻¹ b_R, the caller solves its own interface system for x_I,
+/// and expand() gives x_R = A_RR⁻¹ (b_R - A_RI x_I): one forward and one
+/// backward sweep over the factors in all.
+///
+/// Symmetric matrices are factorized LDLT (only the lower triangle is read),
+/// others LU. A zero pivot of A_RR is reported as a SolverError naming its
+/// equation.
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "tether/solvers/linear_solver.hpp"
+
+namespace tether {
+
+namespace detail {
+struct MumpsInstance;
+}
+
+class MumpsSchur {
+ public:
+  MumpsSchur();
+  ~MumpsSchur();
+  MumpsSchur(const MumpsSchur&) = delete;
+  MumpsSchur& operator=(const MumpsSchur&) = delete;
+
+  /// Factorizes A_RR of `a` and forms S. `interface`: the equations of I,
+  /// sorted and unique; `in_interface[e]` true exactly for them. Only the
+  /// entries of `a` with a row or a column in R are passed to MUMPS (A_II is
+  /// taken as zero, so schur() is -A_IR A_RR⁻¹ A_RI). `symmetric`: those
+  /// entries are symmetric (LDLT). The ordering is recomputed only when
+  /// their pattern or `symmetric` changed since the last call.
+  void factorize(const SparseMatrix& a, const std::vector<int>& interface, const std::vector<char>& in_interface,
+                 bool symmetric);
+
+  /// True when the entries factorize() would pass to MUMPS for `a` (pattern
+  /// and values, bitwise) equal those of the last factorization, so that it
+  /// still holds for `a`. Only the lower triangle is compared for a symmetric
+  /// factorization. O(nnz), no allocation.
+  [[nodiscard]] bool unchanged(const SparseMatrix& a, const std::vector<char>& in_interface) const;
+
+  /// -A_IR A_RR⁻¹ A_RI of the last factorization, full (both triangles), |I| × |I|.
+  [[nodiscard]] const Eigen::MatrixXd& schur() const { return schur_; }
+
+  /// Condensation: returns -A_IR A_RR⁻¹ b_R (b over all equations; its I part
+  /// is ignored). Must be followed by expand() before the next reduce().
+  void reduce(const Eigen::VectorXd& b, Eigen::VectorXd& reduced);
+
+  /// Expansion after reduce(b): x_R = A_RR⁻¹ (b_R - A_RI x_I) and x_I = `x_interface`.
+  void expand(const Eigen::VectorXd& x_interface, Eigen::VectorXd& x);
+
+  /// Entries of the factors (INFOG(29)) and MUMPS' peak memory [MB] (INFOG(21)) of the last factorization.
+  [[nodiscard]] double factor_entries() const { return factor_entries_; }
+  [[nodiscard]] int memory_mb() const { return memory_mb_; }
+
+ private:
+  std::unique_ptr<detail::MumpsInstance> mumps_;
+  bool symmetric_ = false;
+  std::vector<int> rows_, cols_;     ///< coordinates passed to MUMPS, 1-based
+  std::vector<int> source_;          ///< value-array index of each entry of `a`, -1 for an interface diagonal
+  std::vector<double> values_;
+  bool factorized_ = false;
+  std::vector<int> schur_list_;      ///< interface equations, 1-based
+  std::vector<double> schur_rows_;   ///< MUMPS' Schur array (by rows)
+  Eigen::MatrixXd schur_;
+  Eigen::VectorXd rhs_, reduced_;    ///< kept from reduce() for expand()
+  Eigen::Index n_ = 0;
+  bool reduced_ready_ = false;
+  double factor_entries_ = 0;
+  int memory_mb_ = 0;
+};
+
+}  // namespace tether

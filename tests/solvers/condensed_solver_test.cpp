@@ -1,0 +1,182 @@
+// CondensedSolver: the condensed solution equals the full one to round-off,
+// the bulk factorization is reused while only interface entries change (in
+// value, pattern and symmetry), and singular parts go to the fallback, which
+// names the equation.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "tether/core/error.hpp"
+#include "tether/solvers/condensed_solver.hpp"
+
+using namespace tether;
+
+namespace {
+
+constexpr int kGrid = 12;                  ///< grid of kGrid x kGrid unknowns
+constexpr int kBulk = kGrid * kGrid;
+
+/// Five-point Laplacian of the grid plus a spring to ground at node 0 (SPD),
+/// and `extra` additional unknowns (multipliers: zero rows until coupled).
+Eigen::MatrixXd bulk_matrix(int extra) {
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(kBulk + extra, kBulk + extra);
+  const auto id = [](int i, int j) { return i * kGrid + j; };
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      if (i + 1 < kGrid) {
+        const int p = id(i, j), q = id(i + 1, j);
+        a(p, p) += 1, a(q, q) += 1, a(p, q) -= 1, a(q, p) -= 1;
+      }
+      if (j + 1 < kGrid) {
+        const int p = id(i, j), q = id(i, j + 1);
+        a(p, p) += 1, a(q, q) += 1, a(p, q) -= 1, a(q, p) -= 1;
+      }
+    }
+  a(0, 0) += 1;
+  return a;
+}
+
+/// The interface: the last grid row (the "contact surface") and the extra unknowns.
+std::vector<int> interface_equations(int extra) {
+  std::vector<int> out;
+  for (int j = 0; j < kGrid; ++j) out.push_back((kGrid - 1) * kGrid + j);
+  for (int k = 0; k < extra; ++k) out.push_back(kBulk + k);
+  return out;
+}
+
+/// Sparse copy keeping every structurally coupled entry (the grid pattern plus
+/// the interface block as given), also explicit zeros on the diagonal.
+SparseMatrix sparse(const Eigen::MatrixXd& a) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < a.cols(); ++j)
+    for (int i = 0; i < a.rows(); ++i)
+      if (a(i, j) != 0 || i == j) t.emplace_back(i, j, a(i, j));
+  SparseMatrix s(a.rows(), a.cols());
+  s.setFromTriplets(t.begin(), t.end());
+  s.makeCompressed();
+  return s;
+}
+
+/// A contact-like change of the interface block: a random symmetric (or not)
+/// coupling between surface unknowns and multipliers, with -eps on the
+/// multiplier diagonal.
+Eigen::MatrixXd with_contact(const Eigen::MatrixXd& bulk, int extra, unsigned seed, bool symmetric) {
+  Eigen::MatrixXd a = bulk;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::vector<int> surface = interface_equations(0);
+  for (int k = 0; k < extra; ++k) {
+    const int m = kBulk + k;
+    const int s = surface[static_cast<std::size_t>((seed + 3 * k) % surface.size())];
+    const double c = 1 + 0.5 * u(rng);
+    a(m, s) = c, a(s, m) = symmetric ? c : c * (1 + 0.3 * u(rng));
+    a(m, m) = -1e-3 * (1 + std::abs(u(rng)));
+    a(s, s) += 0.2 * std::abs(u(rng));
+  }
+  return a;
+}
+
+Eigen::VectorXd solve_with(CondensedSolver& solver, const SparseMatrix& a, bool symmetric, const Eigen::VectorXd& b) {
+  solver.analyze(a);
+  solver.factorize(a, symmetric);
+  Eigen::VectorXd x;
+  solver.solve(b, x);
+  return x;
+}
+
+double relative_error(const Eigen::MatrixXd& a, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
+  return (a * x - b).norm() / b.norm();
+}
+
+}  // namespace
+
+TEST(CondensedSolver, EqualsFullSolveAndReusesTheBulkWhileOnlyTheInterfaceChanges) {
+  constexpr int kExtra = 5;
+  const Eigen::MatrixXd bulk = bulk_matrix(kExtra);
+  CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  std::mt19937 rng(7);
+  std::normal_distribution<double> g;
+  double worst = 0;
+  for (unsigned k = 0; k < 6; ++k) {
+    const bool symmetric = k % 3 != 2;  // every third matrix unsymmetric in the interface block
+    const Eigen::MatrixXd a = with_contact(bulk, kExtra, 11 + k, symmetric);
+    Eigen::VectorXd b(a.rows());
+    for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = g(rng);
+    const Eigen::VectorXd x = solve_with(solver, sparse(a), symmetric, b);
+    worst = std::max(worst, relative_error(a, x, b));
+    EXPECT_LT(relative_error(a, x, b), 1e-12) << "matrix " << k << " via " << solver.name();
+  }
+  std::printf("[ condensed ] 6 matrices (interface %d of %d equations): max |Ax - b|/|b| = %.2e; %d sparse "
+              "factorization(s), %d reuse(s), %d fallback(s)\n",
+              solver.statistics().interface_equations, kBulk + kExtra, worst,
+              solver.statistics().sparse_factorizations, solver.statistics().reuses, solver.statistics().fallbacks);
+  EXPECT_EQ(solver.statistics().sparse_factorizations, 1);
+  EXPECT_EQ(solver.statistics().reuses, 5);
+  EXPECT_EQ(solver.statistics().fallbacks, 0);
+  EXPECT_FALSE(solver.statistics().gave_up);
+}
+
+TEST(CondensedSolver, RefactorizesWhenTheBulkChangesAndGivesUpAfterTwoChangesInARow) {
+  constexpr int kExtra = 3;
+  Eigen::MatrixXd bulk = bulk_matrix(kExtra);
+  CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(kBulk + kExtra, -1, 2);
+  for (int k = 0; k < 5; ++k) {
+    if (k == 2) bulk(5, 5) += 0.5;          // change in R: refactorize
+    if (k >= 3) bulk(7, 7) += 0.25 * k;     // changes in R twice in a row: give up
+    const Eigen::MatrixXd a = with_contact(bulk, kExtra, 3, true);
+    const Eigen::VectorXd x = solve_with(solver, sparse(a), true, b);
+    EXPECT_LT(relative_error(a, x, b), 1e-12) << "matrix " << k << " via " << solver.name();
+  }
+  const CondensationStatistics& s = solver.statistics();
+  EXPECT_EQ(s.sparse_factorizations, 2);  // k = 0, and k = 2 (a change)
+  EXPECT_EQ(s.reuses, 1);                 // k = 1
+  EXPECT_TRUE(s.gave_up);                 // k = 3: the second change in a row
+  EXPECT_EQ(s.fallbacks, 2);              // k = 3, 4
+}
+
+TEST(CondensedSolver, SingularBulkGoesToTheFallbackWhichNamesTheEquation) {
+  // An unknown of R coupled to nothing: A_RR has a zero pivot there.
+  Eigen::MatrixXd a = bulk_matrix(0);
+  a.row(5).setZero(), a.col(5).setZero();
+  CondensedSolver solver(interface_equations(0), make_linear_solver(SolverKind::Auto));
+  const SparseMatrix s = sparse(a);
+  solver.analyze(s);
+  try {
+    solver.factorize(s, true);
+    FAIL() << "singular matrix accepted";
+  } catch (const SolverError& e) {
+    EXPECT_EQ(e.equation(), 5) << e.what();
+  }
+  EXPECT_EQ(solver.statistics().fallbacks, 1);
+}
+
+TEST(CondensedSolver, FloatingBodyIsCaughtByTheInterfaceCheck) {
+  // No spring to ground: the grid floats. A_RR (the last row held) is regular
+  // but the interface system has the rigid mode; the fallback gets the call.
+  Eigen::MatrixXd a = bulk_matrix(0);
+  a(0, 0) -= 1;
+  CondensedSolver solver(interface_equations(0), make_linear_solver(SolverKind::Auto));
+  const SparseMatrix s = sparse(a);
+  solver.analyze(s);
+  try {
+    solver.factorize(s, true);  // what the fallback says of a round-off-singular matrix is its business
+  } catch (const SolverError&) {
+  }
+  EXPECT_EQ(solver.statistics().sparse_factorizations, 1);
+  EXPECT_EQ(solver.statistics().fallbacks, 1);
+}
+
+TEST(CondensedSolver, SingularInterfaceSystemGoesToTheFallback) {
+  // Regular A_RR, but a multiplier row with no coupling and no diagonal: the
+  // dense interface system is singular, and so is the whole matrix.
+  constexpr int kExtra = 2;
+  Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 5, true);
+  a.row(kBulk + 1).setZero(), a.col(kBulk + 1).setZero();
+  CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  const SparseMatrix s = sparse(a);
+  solver.analyze(s);
+  EXPECT_THROW(solver.factorize(s, true), SolverError);
+  EXPECT_EQ(solver.statistics().fallbacks, 1);
+}
