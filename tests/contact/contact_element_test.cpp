@@ -1,11 +1,15 @@
 // The node-to-segment contact element: tangent against finite differences in
 // every branch (HARD closed/open, soft laws, friction stick/slip with exact
-// and penalty stick, linear and quadratic masters), complementarity residuals
-// and the pressure-overclosure laws.
+// and penalty stick, linear, quadratic and smoothed (SMOOTH=0.2, corner and
+// straight pieces) masters), complementarity residuals and the
+// pressure-overclosure laws.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "support/tangent_check.hpp"
 #include "tether/contact/contact_pair.hpp"
@@ -16,16 +20,22 @@ namespace {
 
 using testing::tangent_error;
 
-enum class Master { Linear, Quadratic };
+/// Linear: two straight faces; Quadratic: one curved 3-node face; SmoothCorner
+/// / SmoothStraight: two faces with a kink at node 2 and SMOOTH=0.2, slave over
+/// the rounded corner (3 real master nodes) or over a shortened straight piece.
+enum class Master { Linear, Quadratic, SmoothCorner, SmoothStraight };
 enum class Friction { None, Exact, Slope, ElasticSlip };
 
 /// A slave node (node 0) over a master surface: two straight segments
-/// (nodes 1-2-3, top faces of a body below y = 0) or one curved 3-node segment.
+/// (nodes 1-2-3, top faces of a body below y = 0), one curved 3-node segment,
+/// or two segments with a convex kink at node 2 (x = 0), smoothed by s = 0.2
+/// (corner piece over -0.4 < x < 0.4).
 struct Fixture {
   std::vector<Eigen::Vector2d> reference;
   std::unique_ptr<ContactPair> pair;
   Eigen::VectorXd u, u_start;
   int n_disp = 0;
+  double x0 = 0.3;  ///< slave x at the start of the increment
 
   Fixture(Master master, PressureOverclosure law, Friction friction, double mu = 0.3) {
     ContactPairSetup setup;
@@ -34,6 +44,12 @@ struct Fixture {
       reference = {{0.3, 0.2}, {2.0, 0.0}, {0.0, 0.0}, {-2.0, 0.0}};
       setup.master_faces = {{1, 2}, {2, 3}};
       setup.master_face_labels = {{1, 3}, {2, 3}};
+    } else if (master == Master::SmoothCorner || master == Master::SmoothStraight) {
+      reference = {{0.3, 0.2}, {2.0, 0.0}, {0.0, 0.05}, {-2.0, -0.02}};
+      setup.master_faces = {{1, 2}, {2, 3}};
+      setup.master_face_labels = {{1, 3}, {2, 3}};
+      setup.smoothing = 0.2;
+      x0 = master == Master::SmoothCorner ? 0.1 : 1.0;
     } else {
       reference = {{0.3, 0.2}, {1.0, 0.0}, {-1.0, 0.0}, {0.0, 0.15}};
       setup.master_faces = {{1, 2, 3}};
@@ -112,13 +128,23 @@ class ContactTangent : public ::testing::TestWithParam<Case> {};
 TEST_P(ContactTangent, MatchesFiniteDifferences) {
   const Case& c = GetParam();
   Fixture f(c.master, c.law, c.friction);
-  f.place(0.3, c.slave_y, 0.3 + c.slip, c.slave_y);
+  f.place(f.x0, c.slave_y, f.x0 + c.slip, c.slave_y);
   int k = f.n_disp;
   if (c.law.law == PressureOverclosure::Law::Hard && c.law.enforcement.method == Enforcement::Method::Lagrange)
     f.u[k++] = c.lambda_n;
   if (c.friction == Friction::Exact) f.u[k++] = c.lambda_t;
   EXPECT_EQ(f.node().status(f.state()), c.expected);
-  EXPECT_LT(tangent_error(f.node(), f.state(), 1e-7), 2e-6) << c.name;
+  const double error = tangent_error(f.node(), f.state(), 1e-7);
+  EXPECT_LT(error, 2e-6) << c.name;
+  if (c.master == Master::SmoothCorner || c.master == Master::SmoothStraight) {
+    // The slave is paired with the intended smoothed piece (all its real nodes are dofs).
+    const ContactSlave& s = f.pair->slave(0);
+    ASSERT_TRUE(s.pairing.found());
+    const MasterSegment& m = f.pair->segments().segment(s.pairing.segment);
+    EXPECT_FALSE(m.identity);
+    EXPECT_EQ(m.n_nodes, c.master == Master::SmoothCorner ? 3 : 2);
+    std::printf("[ smooth ] %s: tangent error %.2e (%zu dofs)\n", c.name, error, f.node().dofs().size());
+  }
 }
 
 // Forces, with c = 1.5, mu = 0.3, area 0.7: the slave penetrates by ~0.03–0.05.
@@ -155,6 +181,39 @@ INSTANTIATE_TEST_SUITE_P(
              0.001, ContactStatus::Stick}),
     [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
 
+// The same branches on the smoothed surface (kink height 0.05: the slave at
+// y = -0.04 penetrates by ~0.08, at 0.06 it is open), over the corner piece
+// (x from 0.1) and over the shortened straight piece (x from 1.0).
+std::vector<Case> smoothed_cases() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const char* where : {"corner", "straight"})
+      for (const char* branch : {"hard_closed", "hard_open", "hard_penalty", "linear_law", "exact_stick", "exact_slip",
+                                 "exact_slip_negative", "slope_slip", "elastic_slip_stick", "soft_law_friction_slip"})
+        n.push_back(std::string(where) + "_" + branch);
+    return n;
+  }();
+  std::vector<Case> cases;
+  for (const Master m : {Master::SmoothCorner, Master::SmoothStraight}) {
+    const auto name = [&] { return names[cases.size()].c_str(); };
+    cases.push_back({name(), m, hard(), Friction::None, 0.8, 0, -0.04, 0.02, ContactStatus::Slip});
+    cases.push_back({name(), m, hard(), Friction::None, -0.2, 0, 0.06, 0.02, ContactStatus::Open});
+    cases.push_back({name(), m, hard_with(Enforcement::Method::Penalty), Friction::None, 0, 0, -0.03, 0.02,
+                     ContactStatus::Slip});
+    cases.push_back({name(), m, linear_law(), Friction::None, 0, 0, -0.03, 0.02, ContactStatus::Slip});
+    cases.push_back({name(), m, hard(), Friction::Exact, 0.8, 0.05, -0.04, 0.01, ContactStatus::Stick});
+    cases.push_back({name(), m, hard(), Friction::Exact, 0.8, 0.5, -0.04, 0.05, ContactStatus::Slip});
+    cases.push_back({name(), m, hard(), Friction::Exact, 0.8, -0.5, -0.04, -0.05, ContactStatus::Slip});
+    cases.push_back({name(), m, hard(), Friction::Slope, 0.8, 0, -0.04, 0.2, ContactStatus::Slip});
+    cases.push_back({name(), m, hard(), Friction::ElasticSlip, 0.8, 0, -0.04, 0.01, ContactStatus::Stick});
+    cases.push_back({name(), m, linear_law(), Friction::Slope, 0, 0, 0.01, -0.4, ContactStatus::Slip});
+  }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Smoothed, ContactTangent, ::testing::ValuesIn(smoothed_cases()),
+                         [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
 TEST(ContactNode, HardResidualIsTheComplementarityFunction) {
   Fixture f(Master::Linear, hard(), Friction::None);
   f.place(0.3, 0.2, 0.3, -0.04);  // penetrates by 0.04
@@ -171,6 +230,38 @@ TEST(ContactNode, HardResidualIsTheComplementarityFunction) {
   // The gap of the moved master: the slave is below the surface.
   EXPECT_GT(g, 0.0);
   EXPECT_LT(g, 0.1);
+}
+
+TEST(ContactNode, SmoothedResidualIsTheGapGradientOverTheRealNodes) {
+  // The finite-difference tangent check cannot see a wrong map of the
+  // residual itself (it differentiates whatever the residual is); here
+  // r_u = -λ ∂g/∂u is checked against central differences of the gap over
+  // the real dofs, on the corner piece (3 master nodes) and a straight piece.
+  for (const Master master : {Master::SmoothCorner, Master::SmoothStraight}) {
+    Fixture f(master, hard(), Friction::None);
+    f.place(f.x0, -0.04, f.x0 + 0.02, -0.04);
+    const double lambda = 0.8;
+    f.u[f.n_disp] = lambda;
+    const auto dofs = f.node().dofs();
+    const auto n = static_cast<Eigen::Index>(dofs.size());
+    LocalSystem out;
+    out.reset(n);
+    f.node().evaluate(f.state(), out, false);
+    double error = 0;
+    for (Eigen::Index j = 0; j + 1 < n; ++j) {  // displacement dofs (λn last)
+      const double h = 1e-7, keep = f.u[dofs[j]];
+      f.u[dofs[j]] = keep + h;
+      const double plus = f.node().values(f.state()).gap;
+      f.u[dofs[j]] = keep - h;
+      const double minus = f.node().values(f.state()).gap;
+      f.u[dofs[j]] = keep;
+      error = std::max(error, std::abs(out.residual[j] + lambda * (plus - minus) / (2 * h)));
+    }
+    std::printf("[ smooth ] residual vs -lambda dg/du (FD): %.2e over %d dofs\n", error, static_cast<int>(n));
+    EXPECT_LT(error, 1e-8);
+    // Rows of W sum to 1: the forces on the slave and the master nodes balance.
+    EXPECT_NEAR(out.residual.head(n - 1).reshaped(2, (n - 1) / 2).rowwise().sum().norm(), 0.0, 1e-14);
+  }
 }
 
 TEST(ContactNode, SlaveBeyondAnOpenEndIsFree) {

@@ -15,7 +15,8 @@ namespace {
 
 using Vec = Eigen::VectorXd;
 
-/// Current positions of the slave node and the segment nodes, in local order.
+/// Current positions of the slave node and the segment's (virtual) nodes, in
+/// local order: for a smoothed segment, z = W y of its real nodes' positions y.
 std::vector<Eigen::Vector2d> local_positions(const ContactPair& pair, const ContactSlave& s, const Eigen::VectorXd& u,
                                              int n_points) {
   std::vector<Eigen::Vector2d> y(static_cast<std::size_t>(n_points));
@@ -23,6 +24,10 @@ std::vector<Eigen::Vector2d> local_positions(const ContactPair& pair, const Cont
     const int dx = s.dofs[static_cast<std::size_t>(2 * a)];
     y[static_cast<std::size_t>(a)] = pair.reference()[static_cast<std::size_t>(dx / kDofsPerNode)] +
                                      Eigen::Vector2d(u[dx], u[dx + 1]);
+  }
+  if (s.pairing.found() && !pair.segments().segment(s.pairing.segment).identity) {
+    const std::vector<Eigen::Vector2d> real(y.begin() + 1, y.end());
+    pair.segments().virtual_positions(s.pairing.segment, real, std::span(y).subspan(1));
   }
   return y;
 }
@@ -34,15 +39,11 @@ double committed_xi_on(const ContactPair& pair, const ContactSlave& s, std::span
   if (s.committed_segment == s.pairing.segment || s.committed_segment < 0) return s.committed_xi;
   // The slave moved to another segment: the old master point, at current
   // positions, projected onto the new segment (exact on a straight surface).
-  const auto old_nodes = pair.surface().segment_nodes(s.committed_segment);
+  const std::vector<Eigen::Vector2d> old_segment = pair.segment_points(s.committed_segment, u);
   Eigen::Vector3d N, dN;
-  face_shape_functions(static_cast<int>(old_nodes.size()), s.committed_xi, N, dN);
+  face_shape_functions(static_cast<int>(old_segment.size()), s.committed_xi, N, dN);
   Eigen::Vector2d y_old(0, 0);
-  for (std::size_t a = 0; a < old_nodes.size(); ++a) {
-    const int n = old_nodes[a];
-    y_old += N[static_cast<Eigen::Index>(a)] *
-             (pair.reference()[static_cast<std::size_t>(n)] + Eigen::Vector2d(u[kDofsPerNode * n], u[kDofsPerNode * n + 1]));
-  }
+  for (std::size_t a = 0; a < old_segment.size(); ++a) y_old += N[static_cast<Eigen::Index>(a)] * old_segment[a];
   return project(y_old, segment).xi;
 }
 
@@ -294,6 +295,14 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
 
 void ContactNode::evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const {
   compute(state, &out, need_tangent);
+  // compute() works on the virtual nodes of a smoothed segment; the chain
+  // rule through the constant map z = W y gives the real nodes' rows.
+  const ContactSlave& s = pair_.slave(slave_);
+  if (!s.pairing.found()) return;
+  const MasterSegment& segment = pair_.segments().segment(s.pairing.segment);
+  if (segment.identity) return;
+  map_to_real_nodes(segment, out.residual);
+  if (need_tangent) map_to_real_nodes(segment, out.tangent);
 }
 
 ContactNodeValues ContactNode::values(const EvaluationState& state) const {
@@ -305,7 +314,8 @@ ContactNodeValues ContactNode::values(const EvaluationState& state) const {
              : p.status == ContactStatus::Stick ? ContactNodeValues::Status::Stick
                                                 : ContactNodeValues::Status::Slip;
   if (s.pairing.found()) {
-    const auto& label = pair_.setup().master_face_labels[static_cast<std::size_t>(s.pairing.segment)];
+    const int face = pair_.segments().segment(s.pairing.segment).face_at(p.xi);
+    const auto& label = pair_.setup().master_face_labels[static_cast<std::size_t>(face)];
     v.master_element = label.first;
     v.master_face = label.second;
   }

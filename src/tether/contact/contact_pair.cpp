@@ -39,7 +39,7 @@ bool ContactPair::exact_stick() const {
 }
 
 ContactPair::ContactPair(ContactPairSetup setup, const std::vector<Eigen::Vector2d>& reference, int first_multiplier)
-    : setup_(std::move(setup)), reference_(reference), surface_(setup_.master_faces) {
+    : setup_(std::move(setup)), reference_(reference), segments_(setup_.master_faces, setup_.smoothing) {
   if (setup_.slave_nodes.size() != setup_.slave_area.size())
     throw std::invalid_argument(setup_.name + ": one tributary area per slave node expected");
   if (setup_.master_face_labels.size() != setup_.master_faces.size())
@@ -64,7 +64,7 @@ ContactPair::ContactPair(ContactPairSetup setup, const std::vector<Eigen::Vector
     set_pairing(s, ContactPairing{});
     nodes_.push_back(std::make_unique<ContactNode>(*this, static_cast<int>(i)));
   }
-  positions_.assign(static_cast<std::size_t>(surface_.n_nodes_required()), Eigen::Vector2d::Zero());
+  positions_.assign(static_cast<std::size_t>(segments_.n_nodes_required()), Eigen::Vector2d::Zero());
 }
 
 ContactPair::~ContactPair() = default;
@@ -76,16 +76,29 @@ std::vector<Contribution*> ContactPair::nodes() const {
   return out;
 }
 
+std::vector<Eigen::Vector2d> ContactPair::segment_points(int k, const Eigen::VectorXd& u) const {
+  const MasterSegment& m = segments_.segment(k);
+  std::vector<Eigen::Vector2d> y(static_cast<std::size_t>(m.n_nodes));
+  for (int a = 0; a < m.n_nodes; ++a) y[static_cast<std::size_t>(a)] = position(reference_, u, m.nodes[static_cast<std::size_t>(a)]);
+  if (!m.identity) {
+    const std::vector<Eigen::Vector2d> real = y;
+    segments_.virtual_positions(k, real, y);
+  }
+  return y;
+}
+
 void ContactPair::set_pairing(ContactSlave& s, const ContactPairing& p) {
   s.pairing = p;
   s.dofs.clear();
   s.dofs.push_back(kDofsPerNode * s.node);
   s.dofs.push_back(kDofsPerNode * s.node + 1);
-  if (p.found())
-    for (int n : surface_.segment_nodes(p.segment)) {
-      s.dofs.push_back(kDofsPerNode * n);
-      s.dofs.push_back(kDofsPerNode * n + 1);
+  if (p.found()) {
+    const MasterSegment& m = segments_.segment(p.segment);
+    for (int a = 0; a < m.n_nodes; ++a) {
+      s.dofs.push_back(kDofsPerNode * m.nodes[static_cast<std::size_t>(a)]);
+      s.dofs.push_back(kDofsPerNode * m.nodes[static_cast<std::size_t>(a)] + 1);
     }
+  }
   if (s.normal_multiplier >= 0) s.dofs.push_back(s.normal_multiplier);
   if (s.tangent_multiplier >= 0) s.dofs.push_back(s.tangent_multiplier);
 }
@@ -103,8 +116,14 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
   const bool new_attempt = state.total_time != attempt_time_ || state.dt != attempt_dt_ || !searched_once_;
   if (new_attempt) start_attempt(state);
 
-  for (int s = 0; s < surface_.n_segments(); ++s)
-    for (int n : surface_.segment_nodes(s)) positions_[static_cast<std::size_t>(n)] = position(reference_, state.u, n);
+  for (const std::vector<int>& face : setup_.master_faces)
+    for (int n : face) positions_[static_cast<std::size_t>(n)] = position(reference_, state.u, n);
+  const MasterSurface& surface = segments_.surface();
+  const std::vector<Eigen::Vector2d>* points = &positions_;  // the search's points: the nodes, or
+  if (segments_.smoothed()) {                                 // the nodes and the smoothed surface's points
+    segments_.point_positions(positions_, points_);
+    points = &points_;
+  }
   std::vector<Eigen::Vector2d> slave_positions(slaves_.size());
   for (std::size_t i = 0; i < slaves_.size(); ++i) slave_positions[i] = position(reference_, state.u, slaves_[i].node);
 
@@ -118,7 +137,7 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
   }
   SearchStatistics work;
   std::vector<ContactPairing> pairings =
-      find_closest(surface_, positions_, slave_positions, options, previous, &work);
+      find_closest(surface, *points, slave_positions, options, previous, &work);
   searched_once_ = true;
 
   statistics_ = {};
@@ -132,9 +151,9 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
     // length), so that a slave node sitting on the end is not released by
     // round-off or a slight outward motion (ABAQUS extends its master
     // surfaces in the same spirit).
-    if (p.found() && p.at_corner && surface_.neighbours(p.segment, p.xi < 0 ? 0 : 1).empty()) {
+    if (p.found() && p.at_corner && surface.neighbours(p.segment, p.xi < 0 ? 0 : 1).empty()) {
       std::vector<Eigen::Vector2d> y;
-      for (int n : surface_.segment_nodes(p.segment)) y.push_back(positions_[static_cast<std::size_t>(n)]);
+      for (int n : surface.segment_nodes(p.segment)) y.push_back((*points)[static_cast<std::size_t>(n)]);
       const SegmentGeometry g = segment_geometry(slave_positions[i], y, ContactDerivatives::none);
       if (g.projection.status == ProjectionStatus::converged && std::abs(g.projection.xi) <= 1 + 2 * kEndExtension) {
         p.at_corner = false;
@@ -150,7 +169,7 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
     // kink, one per iteration.
     if (!new_attempt && p.segment != s.pairing.segment && s.pairing.found() && !s.pairing.at_corner) {
       std::vector<Eigen::Vector2d> y;
-      for (int n : surface_.segment_nodes(s.pairing.segment)) y.push_back(positions_[static_cast<std::size_t>(n)]);
+      for (int n : surface.segment_nodes(s.pairing.segment)) y.push_back((*points)[static_cast<std::size_t>(n)]);
       const SegmentGeometry g = segment_geometry(slave_positions[i], y, ContactDerivatives::none);
       if (g.projection.status == ProjectionStatus::converged && std::abs(g.projection.xi) <= 1 + kHandOverBand) {
         p = s.pairing;
@@ -168,8 +187,7 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
     }
     if (p.found() && s.committed_segment < 0) {
       // First pairing: the slip is measured from the projection at the start of the increment.
-      std::vector<Eigen::Vector2d> start;
-      for (int n : surface_.segment_nodes(p.segment)) start.push_back(position(reference_, state.u_start, n));
+      const std::vector<Eigen::Vector2d> start = segment_points(p.segment, state.u_start);
       s.committed_segment = p.segment;
       s.committed_xi = project(position(reference_, state.u_start, s.node), start).xi;
     }
@@ -286,7 +304,7 @@ void ContactPair::load_state(std::span<const double>& in) {
   take_int(in, n, n, "number of slave nodes");
   const bool searched = take_int(in, 0, 1, "search flag") == 1;
   std::vector<ContactSlave> loaded = slaves_;
-  const int last_segment = surface_.n_segments() - 1;
+  const int last_segment = segments_.n_segments() - 1;
   for (ContactSlave& s : loaded) {
     take_int(in, s.node, s.node, "slave node");
     ContactPairing p;

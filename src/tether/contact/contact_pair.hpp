@@ -22,6 +22,7 @@
 #include "tether/assembly/contribution.hpp"
 #include "tether/contact/contact_node.hpp"
 #include "tether/contact/contact_search.hpp"
+#include "tether/contact/master_segments.hpp"
 #include "tether/model/contact_data.hpp"
 #include "tether/model/results.hpp"
 
@@ -41,6 +42,9 @@ struct ContactPairSetup {
   PressureOverclosure law;               ///< HARD: exact (multipliers); else a soft law
   std::optional<FrictionData> friction;  ///< none or mu = 0: frictionless
   bool small_sliding = false;
+  /// SMOOTH fraction s of the corners of a linear master surface: 0 (the
+  /// faces as they are) or 0 < s <= 0.5 (MasterSegments; linear faces only).
+  double smoothing = 0;
   double search_radius = 0;  ///< [length], > 0
   /// c of the complementarity functions min(λ/c, g) [force/length]: decides
   /// the active set between iterations only; the converged answer does not
@@ -114,7 +118,13 @@ class ContactPair final : public Contribution {
   [[nodiscard]] std::vector<Contribution*> nodes() const;
 
   [[nodiscard]] const ContactPairSetup& setup() const { return setup_; }
-  [[nodiscard]] const MasterSurface& surface() const { return surface_; }
+  /// The segments slave nodes are paired with (the faces, or the smoothed surface).
+  [[nodiscard]] const MasterSegments& segments() const { return segments_; }
+  /// Search topology over the segments (segments().surface()).
+  [[nodiscard]] const MasterSurface& surface() const { return segments_.surface(); }
+  /// Current virtual node positions of segment k at displacements `u` (the
+  /// real node positions for an unsmoothed surface), 2 or 3 points.
+  [[nodiscard]] std::vector<Eigen::Vector2d> segment_points(int k, const Eigen::VectorXd& u) const;
   [[nodiscard]] const ContactSlave& slave(int i) const { return slaves_[static_cast<std::size_t>(i)]; }
   [[nodiscard]] int n_slaves() const { return static_cast<int>(slaves_.size()); }
   [[nodiscard]] const std::vector<Eigen::Vector2d>& reference() const { return reference_; }
@@ -131,10 +141,11 @@ class ContactPair final : public Contribution {
 
   ContactPairSetup setup_;
   const std::vector<Eigen::Vector2d>& reference_;
-  MasterSurface surface_;
+  MasterSegments segments_;
   std::vector<ContactSlave> slaves_;
   std::vector<std::unique_ptr<ContactNode>> nodes_;
   std::vector<Eigen::Vector2d> positions_;  ///< current positions by node index (master nodes kept current)
+  std::vector<Eigen::Vector2d> points_;     ///< current positions of the search's points (segments_.point_positions)
   bool searched_once_ = false;
   double attempt_time_ = -1, attempt_dt_ = -1;
   int releases_ = 0;  ///< chattering-guard releases in this attempt
