@@ -116,3 +116,49 @@ TEST(ContactKeywords, ErrorsNameTheLine) {
     expect_deck_error_at(with_contact(c.block), c.marker, c.words);
   }
 }
+
+TEST(ContactKeywords, SmoothIsAFractionOfLinearMasterFaces) {
+  const auto pair_with = [](const std::string& options) {
+    return with_contact("*SURFACE INTERACTION, NAME=SI\n*CONTACT PAIR, INTERACTION=SI" + options + "\nSLAVE, MASTER\n");
+  };
+  EXPECT_DOUBLE_EQ(read_deck_string(pair_with(", SMOOTH=0.2"), "c.inp").contact_pairs.at(0).smoothing, 0.2);
+  EXPECT_DOUBLE_EQ(read_deck_string(pair_with(", SMOOTH=0.5"), "c.inp").contact_pairs.at(0).smoothing, 0.5);
+  EXPECT_DOUBLE_EQ(read_deck_string(pair_with(", SMOOTH=0"), "c.inp").contact_pairs.at(0).smoothing, 0.0);
+  // tether's default is no smoothing (ABAQUS's is 0.2).
+  EXPECT_DOUBLE_EQ(read_deck_string(pair_with(""), "c.inp").contact_pairs.at(0).smoothing, 0.0);
+
+  expect_deck_error_at(pair_with(", SMOOTH=0.7"), "*CONTACT PAIR", {"SMOOTH=0.7", "0 < s <= 0.5"});
+  expect_deck_error_at(pair_with(", SMOOTH=-0.1"), "*CONTACT PAIR", {"SMOOTH=-0.1"});
+  expect_deck_error_at(pair_with(", SMOOTH=abc"), "*CONTACT PAIR", {"SMOOTH", "abc"});
+  expect_deck_error_at(pair_with(", SMOOTH"), "*CONTACT PAIR", {"SMOOTH", "needs a value"});
+
+  // A quadratic (CPE8) master is already curved: SMOOTH is refused on the pair's data line.
+  const std::string quadratic = R"(*NODE
+1, 0, 0
+2, 1, 0
+3, 1, 1
+4, 0, 1
+5, 0.5, 0
+6, 1, 0.5
+7, 0.5, 1
+8, 0, 0.5
+9, 0.5, 1.5
+*ELEMENT, TYPE=CPE8, ELSET=QUAD
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*SURFACE, NAME=MASTER
+1, S3
+*NSET, NSET=TIP
+9
+*SURFACE, NAME=SLAVE, TYPE=NODE
+TIP
+*MATERIAL, NAME=M
+*ELASTIC
+1000, 0.3
+*SOLID SECTION, ELSET=QUAD, MATERIAL=M
+*SURFACE INTERACTION, NAME=SI
+*CONTACT PAIR, INTERACTION=SI, SMOOTH=0.2
+SLAVE, MASTER
+)";
+  expect_deck_error_at(quadratic, "SLAVE, MASTER", {"SMOOTH", "linear (2-node)", "quadratic", "element 1"});
+  EXPECT_NO_THROW(read_deck_string(replaced(quadratic, ", SMOOTH=0.2", ""), "c.inp"));
+}

@@ -53,6 +53,7 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
   setup.law = interaction->behavior;
   setup.friction = interaction->friction;
   setup.small_sliding = data.small_sliding;
+  setup.smoothing = data.smoothing;
   if (setup.law.law == PressureOverclosure::Law::Linear && setup.law.sigma_inf > 0)
     throw ModelError("PRESSURE-OVERCLOSURE=LINEAR with a tension sigma_inf > 0 (*SURFACE BEHAVIOR at " +
                      interaction->where.str() + ") is not modelled by tether; give 'K' or 'K, 0, c0'");

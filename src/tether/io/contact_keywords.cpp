@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tether/contact/contact_search.hpp"
+#include "tether/contact/master_segments.hpp"
 #include "tether/io/deck_state.hpp"
 #include "tether/io/keyword_handlers.hpp"
 #include "tether/io/model_checks.hpp"
@@ -156,6 +157,20 @@ void handle_contact_pair(DeckState& state, const KeywordBlock& block, const Para
       pair.adjust = params.real("ADJUST");
       if (pair.adjust < 0) throw InputError(block.where, "ADJUST must be a clearance >= 0");
     }
+    if (params.given("SMOOTH")) {
+      pair.smoothing = params.real("SMOOTH");
+      if (!(pair.smoothing >= 0 && pair.smoothing <= kMaxSmoothing))
+        throw InputError(block.where, "SMOOTH=" + params.text("SMOOTH") +
+                                          ": expected a fraction of the master faces 0 < s <= 0.5 (0: no smoothing)");
+      for (const ElementFace& face : master.faces) {
+        const Element& e = state.model.elements[static_cast<std::size_t>(face.element)];
+        const auto local = face_nodes(e.type.shape, face.face);
+        if (std::count_if(local.begin(), local.end(), [](int n) { return n >= 0; }) > 2 && pair.smoothing > 0)
+          throw InputError(pair.where, "SMOOTH applies to linear (2-node) master faces only: master surface '" +
+                                            f[1] + "' has quadratic faces, which are already curved (element " +
+                                            std::to_string(e.id) + ")");
+      }
+    }
     state.model.contact_pairs.push_back(std::move(pair));
   }
 }
@@ -209,12 +224,16 @@ void apply_contact_adjustments(DeckState& state) {
     }
     std::sort(slave_nodes.begin(), slave_nodes.end());
     slave_nodes.erase(std::unique(slave_nodes.begin(), slave_nodes.end()), slave_nodes.end());
-    const MasterSurface surface(faces);
+    // Onto the surface the analysis will see: the faces, or the smoothed surface.
+    const MasterSegments segments(faces, pair.smoothing);
+    const MasterSurface& surface = segments.surface();
+    std::vector<Eigen::Vector2d> surface_points;
+    segments.point_positions(model.coords, surface_points);
     std::vector<Eigen::Vector2d> points;
     for (int n : slave_nodes) points.push_back(model.coords[static_cast<std::size_t>(n)]);
     SearchOptions options;
     options.search_radius = 2 * longest + pair.adjust;
-    const std::vector<ContactPairing> pairings = find_closest(surface, model.coords, points, options);
+    const std::vector<ContactPairing> pairings = find_closest(surface, surface_points, points, options);
     int moved = 0;
     double largest = 0;
     for (std::size_t i = 0; i < slave_nodes.size(); ++i) {
@@ -223,7 +242,7 @@ void apply_contact_adjustments(DeckState& state) {
       // along its normal; corner and open-end pairings have no normal: left alone.
       if (!p.found() || p.at_corner || p.gap > pair.adjust) continue;
       std::vector<Eigen::Vector2d> y;
-      for (int n : surface.segment_nodes(p.segment)) y.push_back(model.coords[static_cast<std::size_t>(n)]);
+      for (int n : surface.segment_nodes(p.segment)) y.push_back(surface_points[static_cast<std::size_t>(n)]);
       const SegmentGeometry g = segment_geometry(points[i], y, ContactDerivatives::none);
       model.coords[static_cast<std::size_t>(slave_nodes[i])] = g.point;
       largest = std::max(largest, std::abs(g.gap));

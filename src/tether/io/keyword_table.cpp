@@ -296,7 +296,10 @@ std::vector<KeywordSpec> build_table() {
         choice("TYPE", "NODE TO SURFACE", {"NODE TO SURFACE", "SURFACE TO SURFACE"},
                "NODE TO SURFACE (tether's formulation); SURFACE TO SURFACE is refused."),
         flag("SMALL SLIDING", "Keep the pairing found at the start (no re-pairing while sliding)."),
-        real("ADJUST", "0", "Move slave nodes within this clearance onto the master surface before the analysis.")},
+        real("ADJUST", "0", "Move slave nodes within this clearance onto the master surface before the analysis."),
+        real("SMOOTH", "0", "Round each corner of a linear master surface over this fraction s of both adjacent faces "
+                            "(0 < s <= 0.5; a C1 surface, continuous normal). Absent or 0: no smoothing (ABAQUS "
+                            "smooths by 0.2 by default; tether only when asked). Quadratic master faces are refused.")},
        handle_contact_pair, ""},
       {"CONTACT PRINT", kAnyStep, "Contact output in the .dat report.", "variables: CSTR, CDIS (CalculiX), CSTRESS, CDISP, CFN, CFS (ABAQUS)",
        {frequency_param()}, handle_contact_output, ""},

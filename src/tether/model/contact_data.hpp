@@ -58,6 +58,10 @@ struct ContactPairData {
   bool node_to_surface = true;  ///< TYPE=NODE TO SURFACE (tether's formulation); SURFACE TO SURFACE is refused
   bool small_sliding = false;   ///< SMALL SLIDING: keep the first pairing
   double adjust = 0;            ///< ADJUST=value: move slave nodes within this clearance onto the master [length]
+  /// SMOOTH=s: round each corner of a linear master surface over the fraction
+  /// s of both adjacent faces, 0 < s <= 0.5 (C¹ surface); 0 = not smoothed
+  /// (tether's default when SMOOTH is absent; ABAQUS's default is 0.2).
+  double smoothing = 0;
   SourceLocation where;
 };
 
