@@ -48,7 +48,11 @@ struct ContactNodeValues {
   enum class Status { Open, Stick, Slip } status = Status::Open;  ///< closed frictionless: Slip
   int master_element = 0;       ///< element id of the paired master face (0: not paired)
   int master_face = 0;          ///< its face number 1..4 (S1..S4)
-  double xi = 0;                ///< ξ* on that face, in [-1, 1] (face_nodes() order)
+  /// ξ* on that face, in [-1, 1] (face_nodes() order); with SMOOTH=s, on the
+  /// piece of the smoothed surface (straight remainder or corner parabola)
+  /// the slave is paired with, and the face is the one that piece lies on
+  /// (a corner piece: the face before the corner for ξ < 0, after it for ξ ≥ 0).
+  double xi = 0;
   double gap = 0;               ///< normal gap [length], > 0 open
   double normal_force = 0;      ///< N >= 0 [force]
   double pressure = 0;          ///< N / tributary area [force/area]
