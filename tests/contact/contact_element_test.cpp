@@ -272,6 +272,34 @@ TEST(ContactNode, SlaveBeyondAnOpenEndIsFree) {
   EXPECT_EQ(f.node().status(f.state()), ContactStatus::Open);
 }
 
+TEST(ContactNode, SlipDirectionIsTheBranchTheResidualTakes) {
+  // Exact stick during Newton: λt still carries the sign of the previous
+  // iteration's slip branch while τ = λt + cΔs has turned. The direction the
+  // friction guard counts reversals of must be sign(τ), the branch the slip
+  // row drives λt to (λt → μN sgn τ); sign(λt) lags one iteration behind, so
+  // a period-2 cycle was held one iteration late (ironing indentation deck:
+  // one cut-back, none with sign(τ)).
+  Fixture f(Master::Linear, hard(), Friction::Exact);
+  f.place(0.3, -0.04, 0.8, -0.04);
+  const double c = 1.5, mu = 0.3, lambda_n = 0.8;
+  f.u[f.n_disp] = lambda_n;
+  const double ds = f.node().values(f.state()).slip;
+  ASSERT_GT(std::abs(c * ds), 2 * mu * lambda_n);  // so that τ and λt = -μN sgn Δs differ in sign
+  const int sign = ds > 0 ? 1 : -1;
+  f.u[f.n_disp + 1] = -sign * mu * lambda_n;
+  const auto [status, direction] = f.node().status_and_direction(f.state());
+  EXPECT_EQ(status, ContactStatus::Slip);
+  EXPECT_EQ(direction, sign);
+  // The slip row is -(λt - μN sgn τ)/c: zero at λt = +sign μN.
+  LocalSystem out;
+  out.reset(static_cast<Eigen::Index>(f.node().dofs().size()));
+  f.node().evaluate(f.state(), out, false);
+  EXPECT_NEAR(out.residual[out.residual.size() - 1], 2 * sign * mu * lambda_n / c, 1e-14);
+  // In stick (|τ| < μN) there is no direction.
+  f.u[f.n_disp + 1] = -c * ds;
+  EXPECT_EQ(f.node().status_and_direction(f.state()).second, 0);
+}
+
 TEST(ContactNode, ForceOnTheSlaveIsNormalForceAlongTheOutwardNormal) {
   Fixture f(Master::Linear, linear_law(), Friction::None);
   f.u.setZero();

@@ -116,6 +116,7 @@ struct ContactNode::Point {
   ContactStatus status = ContactStatus::Open;
   double gap = 0, xi = 0;
   double normal_force = 0, tangential_force = 0, slip = 0;
+  int slip_sign = 0;  ///< slip: the sign the friction force is driven to (of λt + cΔs, or of the trial force)
   Eigen::Vector2d normal{0, 0}, tangent{0, 0};
 };
 
@@ -250,6 +251,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
       }
     } else {
       const double sign = tau >= 0 ? 1.0 : -1.0;
+      point.slip_sign = tau >= 0 ? 1 : -1;
       if (out) {
         out->residual[it] = -(lambda_t - bound * sign) / c;
         if (need_tangent) {
@@ -278,6 +280,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
       dT += ds * dk;
     } else if (N > 0) {
       const double sign = trial >= 0 ? 1.0 : -1.0;
+      point.slip_sign = trial >= 0 ? 1 : -1;
       T = mu * N * sign;
       dT = mu * sign * dN;
     }
@@ -336,7 +339,10 @@ ContactNodeValues ContactNode::values(const EvaluationState& state) const {
 
 std::pair<ContactStatus, int> ContactNode::status_and_direction(const EvaluationState& state) const {
   const Point p = compute(state, nullptr, false);
-  const int direction = p.status == ContactStatus::Slip && pair_.mu() > 0 ? (p.tangential_force >= 0 ? 1 : -1) : 0;
+  // The sign of the slip branch the residual takes at this state (for exact
+  // stick that of λt + cΔs: λt itself still has the sign of the previous
+  // iteration's branch).
+  const int direction = p.status == ContactStatus::Slip ? p.slip_sign : 0;
   return {p.status, direction};
 }
 
