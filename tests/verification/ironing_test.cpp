@@ -1,19 +1,25 @@
 // Ironing (issue #4): a die (half disc, Rd = 5 mm, same material as the block:
 // E = 200 000 MPa, nu = 0.3) pressed 0.02 mm into an elastic block by its
-// driven top nodes (contact half-width ~0.22 mm), then slid 15 mm (3 Rd, 150
-// master segments of 0.1 mm, 1.25 per increment) along it under NLGEOM; deck
-// from tools/make_ironing_deck.py (gmsh quads, ~7.6k dofs) written into the
-// build tree. The frictionless run slides 5 mm (50 segments).
+// driven top nodes (contact half-width ~0.22 mm), then slid along it under
+// NLGEOM, 1.25 master segments of 0.1 mm per increment; decks from
+// tools/make_ironing_deck.py (gmsh quads) written into the build tree.
+// mu = 0.3: 3 mm slide (30 segments, 24 increments, 4.6k dofs); the 15 mm
+// slide (150 segments, 120 increments, 7.6k dofs) is the disabled long
+// variant. mu = 0: 5 mm slide in 40 increments.
 // In steady sliding every contact node slips, so the friction force is mu N;
 // the normal forces' horizontal part (ploughing) vanishes for a pressure
 // symmetric about the die axis, which identical materials give (decoupling),
 // so Fx / |Fy| of the driven nodes' reactions = mu (issue: within 2 %), and
 // with mu = 0, Fx = 0 (checked: |Fx| <= 1e-3 |Fy|). Steady sliding: slide
-// >= 1 mm. Newton: <= 8 iterations per increment (issue). The history is
+// >= 1 mm. Newton (issue): every attempt takes <= 8 iterations, and the last
+// ones should be quadratic: checked as an order >= 1.5 frictionless and as a
+// reduction of the residual by >= 20x with friction, where the tangent is
+// not exact after a segment hand-over (kFrictionLast). The history is
 // printed. Skipped without python3/gmsh.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -42,9 +48,20 @@ fs::path generate(const std::string& name, const std::string& options) {
   return deck;
 }
 
+/// What the test asks of the last Newton iterations of each converged increment.
+struct LastIterations {
+  /// Largest r_n / r_{n-1} of the max force residual in the last iteration (0: not checked).
+  double max_reduction = 0;
+  /// Smallest order estimate p = log(r_n / r_{n-1}) / log(r_{n-1} / r_{n-2}) of
+  /// the last iteration (2 for quadratic convergence, 1 for linear; 0: not checked).
+  double min_order = 0;
+};
+
 /// Runs the deck; checks Fx / |Fy| in steady sliding (mu > 0: within `tolerance`
-/// relative to mu; mu = 0: |Fx| / |Fy| <= tolerance) and the iteration counts.
-void check(const std::string& name, const std::string& options, double mu, double slide_distance, double tolerance) {
+/// relative to mu; mu = 0: |Fx| / |Fy| <= tolerance), <= 8 iterations per
+/// attempt (failed attempts too) and the last iterations (`last`).
+void check(const std::string& name, const std::string& options, double mu, double slide_distance, double tolerance,
+           LastIterations last_check) {
   fs::path deck;
   try {
     deck = generate(name, options);
@@ -61,10 +78,26 @@ void check(const std::string& name, const std::string& options, double mu, doubl
               run.summary.cutbacks, seconds);
 
   const auto& top = run.model.node_sets.at("TOPN");
+  // Attempts (failed ones too) and, for each, the residual history of its last
+  // Newton pass (recorder.residuals holds one row per pass: iterations + 1
+  // values; an attempt's passes together make its iteration count).
   std::vector<const IncrementReport*> converged;
-  for (const IncrementReport& inc : run.recorder.increments)
-    if (inc.converged) converged.push_back(&inc);
+  std::vector<const std::vector<double>*> last_pass;
+  std::size_t pass = 0;
+  for (const IncrementReport& inc : run.recorder.increments) {
+    EXPECT_LE(inc.iterations, 8) << "step " << inc.step << " increment " << inc.increment << " attempt " << inc.attempt;
+    int solves = 0;
+    const std::vector<double>* last = nullptr;
+    while (solves < inc.iterations && pass < run.recorder.residuals.size()) {
+      last = &run.recorder.residuals[pass++];
+      solves += static_cast<int>(last->size()) - 1;
+    }
+    ASSERT_EQ(solves, inc.iterations) << "residual rows do not match the iteration counts";
+    if (inc.converged) converged.push_back(&inc), last_pass.push_back(last);
+  }
   ASSERT_EQ(converged.size(), run.recorder.results.size());
+  double worst_reduction = 0, worst_order = 1e300;
+  std::vector<double> orders;
   double worst = 0, sum = 0;
   int steady = 0, max_iterations = 0;
   for (std::size_t k = 0; k < run.recorder.results.size(); ++k) {
@@ -75,9 +108,26 @@ void check(const std::string& name, const std::string& options, double mu, doubl
     const double ratio = fx / std::abs(fy);
     const int its = converged[k]->iterations;
     max_iterations = std::max(max_iterations, its);
-    std::printf("[ ironing ]   step %d increment %2d slide %6.3f: Fx %11.5g Fy %11.5g Fx/|Fy| %+.5f  %d iterations\n",
-                r.step, r.increment, slide, fx, fy, ratio, its);
-    EXPECT_LE(its, 8) << "step " << r.step << " increment " << r.increment;
+    const std::vector<double>& res = *last_pass[k];
+    const std::size_t n = res.size();
+    // Judged where the last three residuals decrease (an increment whose
+    // starting state already converges has no last iteration to judge).
+    const bool judged = n >= 3 && res[n - 1] < res[n - 2] && res[n - 2] < res[n - 3] && res[n - 1] > 0;
+    const double reduction = judged ? res[n - 1] / res[n - 2] : 0.0;
+    const double order = judged ? std::log(reduction) / std::log(res[n - 2] / res[n - 3]) : 0.0;
+    std::printf("[ ironing ]   step %d increment %2d slide %6.3f: Fx %11.5g Fy %11.5g Fx/|Fy| %+.5f  %d iterations, "
+                "last residuals %.2e %.2e %.2e N, order %.2f\n",
+                r.step, r.increment, slide, fx, fy, ratio, its, n >= 3 ? res[n - 3] : 0.0, n >= 2 ? res[n - 2] : 0.0,
+                res[n - 1], order);
+    if (judged) {
+      worst_reduction = std::max(worst_reduction, reduction);
+      worst_order = std::min(worst_order, order);
+      orders.push_back(order);
+      if (last_check.max_reduction > 0)
+        EXPECT_LE(reduction, last_check.max_reduction) << "step " << r.step << " increment " << r.increment;
+      if (last_check.min_order > 0)
+        EXPECT_GE(order, last_check.min_order) << "step " << r.step << " increment " << r.increment;
+    }
     if (r.step != 2 || slide < kSteady - 1e-9) continue;
     ++steady;
     sum += ratio;
@@ -90,18 +140,45 @@ void check(const std::string& name, const std::string& options, double mu, doubl
               "max %d iterations per increment\n",
               name.c_str(), mu, steady, sum / steady, mu > 0 ? "max |Fx/|Fy| / mu - 1|" : "max |Fx/Fy|", worst,
               max_iterations);
+  ASSERT_FALSE(orders.empty());
+  std::sort(orders.begin(), orders.end());
+  std::printf("[ ironing ] %s: last iteration of %zu increments: max force residual reduced by 1/%.0f at worst; "
+              "order min %.2f median %.2f\n",
+              name.c_str(), orders.size(), 1 / worst_reduction, worst_order, orders[orders.size() / 2]);
 }
 
-// Disabled: since f0056f9 (friction guard: a node whose slip direction
-// reverses twice is held in stick until convergence) this run needs 380
-// increments, 51 cut-backs and up to 16 iterations per attempt (~6 min here)
-// instead of 120 increments with <= 8 iterations and no cut-back at f2b02e6;
-// Fx/|Fy| stays within 1.1 % of mu either way. See the ironing section of
-// docs/verification_contact.md. Run with --gtest_also_run_disabled_tests.
-TEST(Ironing, DISABLED_Cpe4FrictionRatioIsMu) { check("ironing_cpe4_mu03", "--mu 0.3", 0.3, 15, 0.02); }
+// With friction the last iteration is not quadratic: when a slave node has
+// been handed over to another master segment since the last converged
+// increment, the reference point of its slip increment (the old master point
+// projected onto the new segment) depends on the master nodes, and that
+// derivative is not in the tangent (docs/theory/contact.md, "Friction"). At
+// 1.25 segments per increment every contact node is handed over in every
+// increment, and the last iteration's order is about 1 (a fast linear rate,
+// the residual reduced 86x or more); frictionless, and with friction in
+// increments without hand-overs, it is about 2. So the friction runs check the
+// reduction only (measured 1/86 at worst; without the slip Hessian term of the
+// tangent 1/53 and 8 iterations) and the frictionless run checks the order.
+constexpr LastIterations kFrictionLast{.max_reduction = 0.05};
+
+// 3 mm slide, 24 increments: 17 increments of steady sliding (slide >= 1 mm),
+// every slave node crosses 30 master segments. At 95741b6: 4 580 dofs, 28
+// increments, 148 iterations, at most 6 per increment, no cut-back, Fx/|Fy|
+// within 0.93 % of mu; about 5 s in Release (docs/verification_contact.md).
+TEST(Ironing, Cpe4FrictionRatioIsMu) {
+  check("ironing_cpe4_mu03_slide3", "--mu 0.3 --slide 3 --slide-increments 24", 0.3, 3, 0.02, kFrictionLast);
+}
+
+// The long variant: 15 mm (150 segments, 120 increments, 7 564 dofs), the same
+// physics as the 3 mm run over five times the distance. Disabled for its run
+// time (124 increments, 711 iterations, 43-110 s wall on a loaded 2-core
+// machine at 95741b6); it passes there with at most 8 iterations per increment
+// and Fx/|Fy| within 1.01 % of mu. Run with --gtest_also_run_disabled_tests.
+TEST(Ironing, DISABLED_Cpe4FrictionRatioIsMuLongSlide) {
+  check("ironing_cpe4_mu03", "--mu 0.3", 0.3, 15, 0.02, kFrictionLast);
+}
 
 TEST(Ironing, Cpe4FrictionlessHasNoDrag) {
-  check("ironing_cpe4_mu0", "--mu 0 --slide 5 --slide-increments 40", 0.0, 5, 1e-3);
+  check("ironing_cpe4_mu0", "--mu 0 --slide 5 --slide-increments 40", 0.0, 5, 1e-3, {.min_order = 1.5});
 }
 
 }  // namespace
