@@ -346,7 +346,9 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                           std::to_string(c.interface_equations) + " contact equations: " +
                           std::to_string(c.sparse_factorizations) + " sparse factorization(s), " +
                           std::to_string(c.reuses) + " reuse(s), " + std::to_string(c.fallbacks) +
-                          " full factorization(s)" +
+                          " full factorization(s); bulk factors " +
+                          std::to_string(static_cast<long long>(c.factor_entries)) + " entries, " +
+                          std::to_string(c.factor_memory_mb) + " MB" +
                           (c.gave_up ? " (stopped condensing: the matrix changed outside the contact equations)"
                                      : ""));
     }

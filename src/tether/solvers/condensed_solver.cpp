@@ -85,6 +85,8 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
       bulk_valid_ = true;
       bulk_symmetric_ = outer_sym;
       ++statistics_.sparse_factorizations;
+      statistics_.factor_entries = bulk_->factor_entries();
+      statistics_.factor_memory_mb = bulk_->memory_mb();
     } catch (const SolverError&) {
       return use_fallback(a, symmetric);  // A_RR singular: let the fallback decide and name it
     }

@@ -38,6 +38,8 @@ struct CondensationStatistics {
   int reuses = 0;                 ///< factorize() calls served by the dense interface system alone
   int fallbacks = 0;              ///< factorize() calls handed to the fallback solver
   bool gave_up = false;           ///< stopped condensing (R entries changed twice in a row)
+  double factor_entries = 0;      ///< entries of the last sparse factors (MUMPS INFOG(29))
+  int factor_memory_mb = 0;       ///< MUMPS' memory for the last factorization [MB] (INFOG(22))
 };
 
 class CondensedSolver final : public LinearSolver {

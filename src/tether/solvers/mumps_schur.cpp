@@ -75,7 +75,7 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   }
   factorized_ = true;
   factor_entries_ = mumps_->infog(29) >= 0 ? mumps_->infog(29) : -1e6 * mumps_->infog(29);
-  memory_mb_ = mumps_->infog(21);
+  memory_mb_ = mumps_->infog(22);
   // By rows: entry (i, j) at i m + j. A symmetric factorization fills the
   // lower triangle (j <= i) only; mirror it.
   schur_.resize(m, m);

@@ -59,7 +59,7 @@ class MumpsSchur {
   /// Expansion after reduce(b): x_R = A_RR⁻¹ (b_R - A_RI x_I) and x_I = `x_interface`.
   void expand(const Eigen::VectorXd& x_interface, Eigen::VectorXd& x);
 
-  /// Entries of the factors (INFOG(29)) and MUMPS' peak memory [MB] (INFOG(21)) of the last factorization.
+  /// Entries of the factors (INFOG(29)) and MUMPS' memory for it [MB] (INFOG(22)) of the last factorization.
   [[nodiscard]] double factor_entries() const { return factor_entries_; }
   [[nodiscard]] int memory_mb() const { return memory_mb_; }
 
