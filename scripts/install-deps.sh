@@ -10,7 +10,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libginac-dev
+  libeigen3-dev libsuitesparse-dev libmumps-seq-dev liblapack-dev libopenblas0-pthread libginac-dev
   libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gmsh calculix-ccx

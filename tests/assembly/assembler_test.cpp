@@ -116,3 +116,29 @@ TEST(Assembler, TangentFollowsAPatternChangeOfEqualSize) {
   expected << 1, -1, 0, 0, -1, 2, 0, -1, 0, 0, 1, -1, 0, -1, -1, 2;
   EXPECT_LT((Eigen::MatrixXd(k) - expected).norm(), 1e-15) << Eigen::MatrixXd(k);
 }
+
+TEST(Assembler, ReservedBlockTakesARepairingWithoutRebuildingThePattern) {
+  // As above, with unknowns 1..3 reserved all to all: the moving spring is
+  // placed in the existing pattern, assembled serially, and the matrix is
+  // the same as after a rebuild.
+  Spring s01(0, 1, 1.0), s23(2, 3, 1.0);
+  Rewiring moving(1, 2, 3);
+  Assembler assembler({&s01, &s23, &moving}, EquationMap(std::vector<bool>(4, false)), {1, 2, 3});
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(4), r;
+  const EvaluationState state{u, u};
+  SparseMatrix k;
+  assembler.assemble(state, r, &k);
+  EXPECT_FALSE(assembler.update_connectivity(state));  // no rebuild
+  EXPECT_EQ(assembler.pattern_builds(), 1);
+  EXPECT_EQ(assembler.relocations(), 1);
+  assembler.assemble(state, r, &k);
+  Eigen::MatrixXd expected(4, 4);
+  expected << 1, -1, 0, 0, -1, 2, 0, -1, 0, 0, 1, -1, 0, -1, -1, 2;
+  EXPECT_LT((Eigen::MatrixXd(k) - expected).norm(), 1e-15) << Eigen::MatrixXd(k);
+  // Without the reservation the new entry (1, 3) is missing: a rebuild.
+  Rewiring again(1, 2, 3);
+  Assembler plain({&s01, &s23, &again}, EquationMap(std::vector<bool>(4, false)));
+  EXPECT_TRUE(plain.update_connectivity(state));
+  EXPECT_EQ(plain.pattern_builds(), 2);
+  EXPECT_EQ(plain.relocations(), 0);
+}

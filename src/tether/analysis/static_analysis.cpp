@@ -244,18 +244,24 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   if (unused_nodes > 0 && index == 0)
     observer_.on_message(std::to_string(unused_nodes) +
                          " node(s) belong to no element; they get no degrees of freedom");
-  Assembler assembler(contributions, EquationMap(prescribed, disc.elimination_rows()));
+  EquationMap equations(prescribed, disc.elimination_rows());
+  // With contact, the Auto solver condenses onto the contact equations
+  // (CondensedSolver) while they are few; the pattern then holds them all
+  // to all, so that re-pairing never rebuilds it.
+  std::vector<int> interface;
+  if (options_.solver == SolverKind::Auto && options_.condense_contact && !disc.contact_pairs().empty()) {
+    interface = contact_equations(disc.contact_pairs(), dofs, equations);
+    const auto m = static_cast<int>(interface.size());
+    if (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()) interface.clear();
+  }
+  Assembler assembler(contributions, std::move(equations), interface);
   check_constraints(disc, assembler.equations(), EvaluationState{u_, u_, 0, total_time_, 0, step.nlgeom});
   std::unique_ptr<LinearSolver> solver = make_linear_solver(options_.solver);
   const CondensedSolver* condensed = nullptr;
-  if (options_.solver == SolverKind::Auto && options_.condense_contact && !disc.contact_pairs().empty()) {
-    std::vector<int> interface = contact_equations(disc.contact_pairs(), dofs, assembler.equations());
-    const auto m = static_cast<int>(interface.size());
-    if (m <= kMaxCondensedEquations && kMinCondensationRatio * m <= assembler.equations().n_equations()) {
-      auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver));
-      condensed = c.get();
-      solver = std::move(c);
-    }
+  if (!interface.empty()) {
+    auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver));
+    condensed = c.get();
+    solver = std::move(c);
   }
   NewtonSolver newton(*solver, step.controls, disc.length_scale());
   // The tangent is symmetric unless follower pressure, friction or a user

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <exception>
+#include <stdexcept>
 
 namespace tether {
 
@@ -21,8 +22,12 @@ constexpr int kParallelThreshold = 2048;
 
 }  // namespace
 
-Assembler::Assembler(std::vector<Contribution*> contributions, EquationMap equations)
-    : contributions_(std::move(contributions)), equations_(std::move(equations)) {
+Assembler::Assembler(std::vector<Contribution*> contributions, EquationMap equations,
+                     std::vector<int> reserved_block)
+    : contributions_(std::move(contributions)), equations_(std::move(equations)),
+      reserved_block_(std::move(reserved_block)) {
+  std::sort(reserved_block_.begin(), reserved_block_.end());
+  reserved_block_.erase(std::unique(reserved_block_.begin(), reserved_block_.end()), reserved_block_.end());
   build_pattern();
 }
 
@@ -34,8 +39,75 @@ void Assembler::set_equations(EquationMap equations) {
 bool Assembler::update_connectivity(const EvaluationState& state) {
   bool changed = false;
   for (Contribution* c : contributions_) changed = c->update_connectivity(state) || changed;
-  if (changed) build_pattern();
-  return changed;
+  if (!changed || relocate()) return false;
+  build_pattern();
+  return true;
+}
+
+int Assembler::find_position(int row, int col) const {
+  const int* inner = pattern_.innerIndexPtr();
+  const int* begin = inner + pattern_.outerIndexPtr()[col];
+  const int* end = inner + pattern_.outerIndexPtr()[col + 1];
+  const int* it = std::lower_bound(begin, end, row);
+  return it != end && *it == row ? static_cast<int>(it - inner) : -1;
+}
+
+std::span<const int> Assembler::placed_dofs(std::size_t c) const {
+  if (relocated_slot_[c] >= 0) return relocated_dofs_[static_cast<std::size_t>(relocated_slot_[c])];
+  return {built_dofs_.data() + built_offsets_[c], built_offsets_[c + 1] - built_offsets_[c]};
+}
+
+bool Assembler::relocate() {
+  std::vector<int> changed;
+  for (std::size_t c = 0; c < contributions_.size(); ++c) {
+    const auto now = contributions_[c]->dofs();
+    const auto before = placed_dofs(c);
+    if (!std::equal(now.begin(), now.end(), before.begin(), before.end())) changed.push_back(static_cast<int>(c));
+  }
+  std::vector<std::vector<int>> placed(changed.size());
+  for (std::size_t k = 0; k < changed.size(); ++k) {
+    const auto dofs = contributions_[static_cast<std::size_t>(changed[k])]->dofs();
+    const std::size_t m = dofs.size();
+    if (weighted_index_[static_cast<std::size_t>(changed[k])] >= 0) return false;
+    std::vector<int>& pos = placed[k];
+    pos.assign(m * m, -1);
+    for (std::size_t b = 0; b < m; ++b) {
+      if (equations_.is_dependent(dofs[b])) return false;
+      const int ej = equations_.equation(dofs[b]);
+      if (ej < 0) continue;
+      for (std::size_t a = 0; a < m; ++a) {
+        if (equations_.is_dependent(dofs[a])) return false;
+        const int ei = equations_.equation(dofs[a]);
+        if (ei < 0) continue;
+        pos[b * m + a] = find_position(ei, ej);
+        if (pos[b * m + a] < 0) return false;
+      }
+    }
+  }
+  // All found: the contributions leave their colours (their new dofs may
+  // collide there) and are assembled serially with their own positions.
+  for (std::size_t k = 0; k < changed.size(); ++k) {
+    const auto c = static_cast<std::size_t>(changed[k]);
+    if (relocated_slot_[c] < 0) {
+      for (auto& colour : colours_) {
+        const auto it = std::find(colour.begin(), colour.end(), changed[k]);
+        if (it != colour.end()) {
+          colour.erase(it);
+          break;
+        }
+      }
+      relocated_slot_[c] = static_cast<int>(relocated_.size());
+      relocated_.emplace_back();
+      relocated_dofs_.emplace_back();
+      relocated_order_.push_back(changed[k]);
+    }
+    const auto slot = static_cast<std::size_t>(relocated_slot_[c]);
+    relocated_[slot] = std::move(placed[k]);
+    const auto dofs = contributions_[c]->dofs();
+    relocated_dofs_[slot].assign(dofs.begin(), dofs.end());
+  }
+  ++relocations_;
+  return true;
 }
 
 void Assembler::equations_of(const Contribution& c, std::vector<int>& out) const {
@@ -51,6 +123,20 @@ void Assembler::build_pattern() {
   const int n = equations_.n_equations();
   const int n_contrib = static_cast<int>(contributions_.size());
   std::vector<int> eqs;
+  if (!reserved_block_.empty() && (reserved_block_.front() < 0 || reserved_block_.back() >= n))
+    throw std::invalid_argument("Assembler: a reserved equation is outside the system");
+  ++pattern_builds_;
+  relocated_slot_.assign(static_cast<std::size_t>(n_contrib), -1);
+  relocated_.clear();
+  relocated_dofs_.clear();
+  relocated_order_.clear();
+  built_offsets_.assign(1, 0);
+  built_dofs_.clear();
+  for (const Contribution* c : contributions_) {
+    const auto dofs = c->dofs();
+    built_dofs_.insert(built_dofs_.end(), dofs.begin(), dofs.end());
+    built_offsets_.push_back(built_dofs_.size());
+  }
 
   // 1. Rows per column, with duplicates, then sorted and unique.
   std::vector<std::int64_t> count(n + 1, 0);
@@ -58,6 +144,7 @@ void Assembler::build_pattern() {
     equations_of(*c, eqs);
     for (int e : eqs) count[e + 1] += static_cast<std::int64_t>(eqs.size());
   }
+  for (int e : reserved_block_) count[e + 1] += static_cast<std::int64_t>(reserved_block_.size());
   for (int j = 0; j < n; ++j) count[j + 1] += count[j];
   std::vector<int> rows(static_cast<std::size_t>(count[n]));
   std::vector<std::int64_t> fill(count.begin(), count.end() - 1);
@@ -66,6 +153,8 @@ void Assembler::build_pattern() {
     for (int ej : eqs)
       for (int ei : eqs) rows[fill[ej]++] = ei;
   }
+  for (int ej : reserved_block_)
+    for (int ei : reserved_block_) rows[fill[ej]++] = ei;
   std::vector<int> outer(n + 1, 0);
   std::vector<int> inner;
   inner.reserve(rows.size() / 2);
@@ -185,6 +274,34 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   std::exception_ptr failure;
   std::atomic<bool> failed{false};
 
+  // Evaluates contribution c and scatters it; `positions` null: its slot in positions_.
+  const auto add = [&](int c, LocalSystem& local, const int* own_positions) {
+    const Contribution* contribution = contributions_[c];
+    const auto dofs = contribution->dofs();
+    const auto m = static_cast<Eigen::Index>(dofs.size());
+    try {
+      local.reset(m);
+      contribution->evaluate(state, local, values != nullptr);
+    } catch (...) {
+#pragma omp critical(tether_assembly_failure)
+      if (!failure) failure = std::current_exception();
+      failed = true;
+      return;
+    }
+    for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
+    if (!values) return;
+    const double* ke = local.tangent.data();  // column-major, like the positions
+    if (!own_positions && weighted_index_[c] >= 0) {
+      const WeightedScatter& w = weighted_[weighted_index_[c]];
+      for (Eigen::Index e = 0; e < m * m; ++e)
+        for (int k = w.start[e]; k < w.start[e + 1]; ++k) values[w.pos[k]] += w.weight[k] * ke[e];
+      return;
+    }
+    const int* pos = own_positions ? own_positions : positions_.data() + offsets_[c];
+    for (Eigen::Index e = 0; e < m * m; ++e)
+      if (pos[e] >= 0) values[pos[e]] += ke[e];
+  };
+
   for (std::size_t k = 0; k < colours_.size(); ++k) {
     const std::vector<int>& colour = colours_[k];
     const int count = static_cast<int>(colour.size());
@@ -193,35 +310,14 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     {
       LocalSystem local;
 #pragma omp for schedule(dynamic, 64)
-      for (int i = 0; i < count; ++i) {
-        if (failed.load(std::memory_order_relaxed)) continue;
-        const int c = colour[i];
-        const Contribution* contribution = contributions_[c];
-        const auto dofs = contribution->dofs();
-        const auto m = static_cast<Eigen::Index>(dofs.size());
-        try {
-          local.reset(m);
-          contribution->evaluate(state, local, values != nullptr);
-        } catch (...) {
-#pragma omp critical(tether_assembly_failure)
-          if (!failure) failure = std::current_exception();
-          failed = true;
-          continue;
-        }
-        for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
-        if (!values) continue;
-        const double* ke = local.tangent.data();  // column-major, like the positions
-        if (weighted_index_[c] >= 0) {
-          const WeightedScatter& w = weighted_[weighted_index_[c]];
-          for (Eigen::Index e = 0; e < m * m; ++e)
-            for (int k = w.start[e]; k < w.start[e + 1]; ++k) values[w.pos[k]] += w.weight[k] * ke[e];
-          continue;
-        }
-        const int* pos = positions_.data() + offsets_[c];
-        for (Eigen::Index e = 0; e < m * m; ++e)
-          if (pos[e] >= 0) values[pos[e]] += ke[e];
-      }
+      for (int i = 0; i < count; ++i)
+        if (!failed.load(std::memory_order_relaxed)) add(colour[i], local, nullptr);
     }
+    if (failure) std::rethrow_exception(failure);
+  }
+  LocalSystem local;
+  for (int c : relocated_order_) {
+    add(c, local, relocated_[static_cast<std::size_t>(relocated_slot_[static_cast<std::size_t>(c)])].data());
     if (failure) std::rethrow_exception(failure);
   }
   timing_.evaluate = seconds_since(t0);

@@ -1,8 +1,12 @@
 #pragma once
 /// \file Loops over the contributions and scatters them into one sparse system.
 ///
-/// The pattern is built from the contributions' dof lists once, and again only
-/// when a contribution reports a connectivity change (contact re-pairing).
+/// The pattern is built from the contributions' dof lists once. When a
+/// contribution reports a connectivity change (contact re-pairing), its
+/// entries are first looked up in the existing pattern: if they are all
+/// there (a reserved block, see the constructor), only that contribution's
+/// positions change and it is assembled serially; otherwise the pattern is
+/// rebuilt.
 /// For every contribution the positions of its local entries in the
 /// compressed-column value array are stored, so scattering is a plain add.
 /// Contributions are coloured so that no two of one colour share an unknown;
@@ -10,6 +14,7 @@
 /// does not depend on the number of threads.
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
@@ -27,13 +32,17 @@ struct AssemblyTiming {
 class Assembler {
  public:
   /// The contributions are borrowed and must outlive the assembler.
-  Assembler(std::vector<Contribution*> contributions, EquationMap equations);
+  /// `reserved_block`: free equations coupled all to all in the pattern
+  /// whatever the contributions say (the contact equations), so that a
+  /// re-pairing inside them never changes the pattern.
+  Assembler(std::vector<Contribution*> contributions, EquationMap equations, std::vector<int> reserved_block = {});
 
   /// Replaces the equation map (prescribed set changed between steps); rebuilds the pattern.
   void set_equations(EquationMap equations);
 
-  /// Asks every contribution whether its connectivity changed; rebuilds the
-  /// pattern if any did. Returns true on a rebuild (the solver must re-analyse).
+  /// Asks every contribution whether its connectivity changed; places the
+  /// changed ones in the existing pattern, or rebuilds it when an entry is
+  /// missing. Returns true on a rebuild (the solver must re-analyse).
   bool update_connectivity(const EvaluationState& state);
 
   /// Residual over all global dofs (prescribed ones included: that is where
@@ -46,9 +55,21 @@ class Assembler {
   [[nodiscard]] const SparseMatrix& pattern() const { return pattern_; }
   [[nodiscard]] int n_colours() const { return static_cast<int>(colours_.size()); }
   [[nodiscard]] const AssemblyTiming& timing() const { return timing_; }
+  /// Pattern builds so far (the first included) and connectivity changes
+  /// placed in the existing pattern.
+  [[nodiscard]] int pattern_builds() const { return pattern_builds_; }
+  [[nodiscard]] int relocations() const { return relocations_; }
 
  private:
   void build_pattern();
+  /// Positions, in the current pattern, of the contributions whose dof list
+  /// differs from the one last placed; false (nothing changed) when an entry
+  /// is missing or a contribution is weighted.
+  bool relocate();
+  /// The dof list contribution c was last placed with.
+  [[nodiscard]] std::span<const int> placed_dofs(std::size_t c) const;
+  /// Value-array index of entry (row, col), -1 when not in the pattern.
+  [[nodiscard]] int find_position(int row, int col) const;
   /// Free equations a contribution's entries land in (through T), sorted, unique.
   void equations_of(const Contribution& c, std::vector<int>& out) const;
 
@@ -73,6 +94,19 @@ class Assembler {
   /// that found no free colour and is then assembled serially.
   std::vector<std::vector<int>> colours_;
   bool last_colour_serial_ = false;
+  /// Contributions placed by relocate(): their own positions, assembled
+  /// serially after the colours (they left their colour).
+  std::vector<int> relocated_slot_;               ///< per contribution: index into relocated_, -1
+  std::vector<std::vector<int>> relocated_;
+  std::vector<std::vector<int>> relocated_dofs_;  ///< the dof lists they were placed with
+  /// Dof lists at the last pattern build (a coordinating contribution such as
+  /// a contact pair reports the change for the contributions it re-pairs, so
+  /// the assembler finds the changed ones by comparison).
+  std::vector<int> built_dofs_;
+  std::vector<std::size_t> built_offsets_;
+  std::vector<int> relocated_order_;              ///< contribution indices, assembled in this order
+  std::vector<int> reserved_block_;
+  int pattern_builds_ = 0, relocations_ = 0;
   AssemblyTiming timing_;
 };
 

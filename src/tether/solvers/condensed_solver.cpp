@@ -2,8 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "tether/core/error.hpp"
+
+// LAPACK (Fortran interface): LU with partial pivoting, its solve, and the
+// reciprocal condition number in the 1-norm.
+extern "C" {
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
+             double* b, const int* ldb, int* info, std::size_t trans_len);
+void dgecon_(const char* norm, const int* n, const double* a, const int* lda, const double* anorm, double* rcond,
+             double* work, int* iwork, int* info, std::size_t norm_len);
+}
 
 namespace tether {
 
@@ -106,14 +117,20 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
     const double d = std::abs(s(k, k));
     scale_[k] = d > 0 && std::isfinite(d) ? 1.0 / std::sqrt(d) : 1.0;
   }
-  s = scale_.asDiagonal() * s * scale_.asDiagonal();
-  lu_.compute(s);
-  // Eigen's condition estimate is unreliable once a pivot is exactly zero
-  // (its triangular solves produce Inf/NaN), so the pivots are checked too.
-  const Eigen::VectorXd pivots = lu_.matrixLU().diagonal().cwiseAbs();
-  const bool regular = pivots.allFinite() && pivots.minCoeff() > kSingularRcond * pivots.maxCoeff() &&
-                       lu_.rcond() > kSingularRcond;
-  if (!regular) return use_fallback(a, symmetric);
+  lu_ = scale_.asDiagonal() * s * scale_.asDiagonal();
+  const int size = static_cast<int>(m);
+  const double norm1 = lu_.cwiseAbs().colwise().sum().maxCoeff();
+  pivots_.resize(interface_.size());
+  int info = 0;
+  dgetrf_(&size, &size, lu_.data(), &size, pivots_.data(), &info);
+  // info > 0: an exactly zero pivot. Otherwise the condition estimate decides.
+  double rcond = 0;
+  if (info == 0 && std::isfinite(norm1)) {
+    std::vector<double> work(4 * interface_.size());
+    std::vector<int> iwork(interface_.size());
+    dgecon_("1", &size, lu_.data(), &size, &norm1, &rcond, work.data(), iwork.data(), &info, 1);
+  }
+  if (info != 0 || !(rcond > kSingularRcond)) return use_fallback(a, symmetric);  // also NaN
 }
 
 void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
@@ -123,7 +140,12 @@ void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   bulk_->reduce(b, reduced);
   for (std::size_t k = 0; k < interface_.size(); ++k)
     reduced[static_cast<Eigen::Index>(k)] += b[interface_[k]];
-  const Eigen::VectorXd y = scale_.asDiagonal() * lu_.solve(scale_.asDiagonal() * reduced);
+  Eigen::VectorXd y = scale_.asDiagonal() * reduced;
+  const int size = static_cast<int>(interface_.size()), one = 1;
+  int info = 0;
+  dgetrs_("N", &size, &one, lu_.data(), &size, pivots_.data(), y.data(), &size, &info, 1);
+  if (info != 0) throw SolverError("condensed solver: LAPACK dgetrs failed (info " + std::to_string(info) + ")");
+  y = scale_.asDiagonal() * y;
   bulk_->expand(y, x);
 }
 

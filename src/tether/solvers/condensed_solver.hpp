@@ -27,8 +27,6 @@
 #include "tether/solvers/linear_solver.hpp"
 #include "tether/solvers/mumps_schur.hpp"
 
-#include <Eigen/LU>
-
 namespace tether {
 
 /// What the solver did, for logs and tests.
@@ -72,9 +70,11 @@ class CondensedSolver final : public LinearSolver {
   int changes_in_row_ = 0;        ///< consecutive factorize() calls whose R entries changed
   bool fallback_active_ = false;  ///< the last factorize() went to the fallback
   bool fallback_analysed_ = false;
-  // Dense interface system (A_II + C), equilibrated: D (A_II + C) D, D = 1/sqrt|diag|.
+  // Dense interface system (A_II + C), equilibrated: D (A_II + C) D, D = 1/sqrt|diag|,
+  // LU-factorized in place by LAPACK (dgetrf: blocked, multithreaded BLAS).
   Eigen::VectorXd scale_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::MatrixXd lu_;
+  std::vector<int> pivots_;
   CondensationStatistics statistics_;
 };
 
