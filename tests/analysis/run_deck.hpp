@@ -18,10 +18,12 @@ class Recorder final : public AnalysisObserver {
   }
   void on_increment(const IncrementReport& r) override { increments.push_back(r); }
   void on_results(const IncrementResults& r, const Step&, bool) override { results.push_back(r); }
+  void on_message(const std::string& m) override { messages.push_back(m); }
 
   std::vector<std::vector<double>> residuals;  ///< per attempt, per iteration
   std::vector<IncrementReport> increments;
   std::vector<IncrementResults> results;
+  std::vector<std::string> messages;
 };
 
 struct Run {
