@@ -40,6 +40,15 @@ struct MumpsInstance {
   int& icntl(int i) { return id.icntl[i - 1]; }
   [[nodiscard]] int infog(int i) const { return id.infog[i - 1]; }
 
+  /// After a factorization: throws SolverError naming the first equation
+  /// (0-based) with a null pivot when MUMPS found any (ICNTL(24) = 1).
+  void throw_if_null_pivots() const {
+    if (infog(28) <= 0) return;
+    const int eq = id.pivnul_list ? id.pivnul_list[0] - 1 : -1;
+    throw SolverError("the stiffness matrix is singular (MUMPS found " + std::to_string(infog(28)) + " zero pivot(s))",
+                      eq);
+  }
+
   /// Runs `job` (1 analysis, 2 factorization, 3 solve); throws SolverError on
   /// a MUMPS error. Retries a factorization with more working space when
   /// MUMPS asks for it (INFOG(1) = -9, -8).

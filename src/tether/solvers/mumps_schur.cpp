@@ -67,12 +67,7 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   reduced_ready_ = false;
   factorized_ = false;
   mumps_->run(2);
-  if (mumps_->infog(28) > 0) {
-    const int eq = id.pivnul_list ? id.pivnul_list[0] - 1 : -1;
-    throw SolverError("the stiffness matrix is singular (MUMPS found " + std::to_string(mumps_->infog(28)) +
-                          " zero pivot(s))",
-                      eq);
-  }
+  mumps_->throw_if_null_pivots();
   factorized_ = true;
   factor_entries_ = mumps_->infog(29) >= 0 ? mumps_->infog(29) : -1e6 * mumps_->infog(29);
   memory_mb_ = mumps_->infog(22);
@@ -100,18 +95,14 @@ bool MumpsSchur::unchanged(const SparseMatrix& a, const std::vector<char>& in_in
   return e == outer;
 }
 
-void MumpsSchur::reduce(const Eigen::VectorXd& b, Eigen::VectorXd& reduced) {
-  if (!mumps_ || b.size() != n_) throw SolverError("MUMPS Schur: reduce before factorize or wrong size");
-  rhs_ = b;
-  for (int e : schur_list_) rhs_[e - 1] = 0.0;
-  reduced_.setZero(static_cast<Eigen::Index>(schur_list_.size()));
+void MumpsSchur::run_schur_solve(int phase) {
   DMUMPS_STRUC_C& id = mumps_->id;
   id.rhs = rhs_.data();
   id.nrhs = 1;
   id.lrhs = static_cast<int>(n_);
   id.redrhs = reduced_.data();
   id.lredrhs = static_cast<int>(schur_list_.size());
-  mumps_->icntl(26) = 1;
+  mumps_->icntl(26) = phase;
   try {
     mumps_->run(3);
   } catch (...) {
@@ -119,6 +110,15 @@ void MumpsSchur::reduce(const Eigen::VectorXd& b, Eigen::VectorXd& reduced) {
     throw;
   }
   mumps_->icntl(26) = 0;
+}
+
+void MumpsSchur::reduce(const Eigen::VectorXd& b, Eigen::VectorXd& reduced) {
+  if (!mumps_ || b.size() != n_) throw SolverError("MUMPS Schur: reduce before factorize or wrong size");
+  rhs_ = b;
+  for (int e : schur_list_) rhs_[e - 1] = 0.0;
+  reduced_.setZero(static_cast<Eigen::Index>(schur_list_.size()));
+  reduced_ready_ = false;
+  run_schur_solve(1);
   reduced = reduced_;
   reduced_ready_ = true;
 }
@@ -126,21 +126,8 @@ void MumpsSchur::reduce(const Eigen::VectorXd& b, Eigen::VectorXd& reduced) {
 void MumpsSchur::expand(const Eigen::VectorXd& x_interface, Eigen::VectorXd& x) {
   if (!reduced_ready_) throw SolverError("MUMPS Schur: expand without reduce");
   reduced_ = x_interface;
-  DMUMPS_STRUC_C& id = mumps_->id;
-  id.rhs = rhs_.data();
-  id.nrhs = 1;
-  id.lrhs = static_cast<int>(n_);
-  id.redrhs = reduced_.data();
-  id.lredrhs = static_cast<int>(schur_list_.size());
-  mumps_->icntl(26) = 2;
   reduced_ready_ = false;
-  try {
-    mumps_->run(3);
-  } catch (...) {
-    mumps_->icntl(26) = 0;
-    throw;
-  }
-  mumps_->icntl(26) = 0;
+  run_schur_solve(2);
   x = rhs_;
   for (std::size_t k = 0; k < schur_list_.size(); ++k) x[schur_list_[k] - 1] = x_interface[static_cast<Eigen::Index>(k)];
 }

@@ -64,6 +64,9 @@ class MumpsSchur {
   [[nodiscard]] int memory_mb() const { return memory_mb_; }
 
  private:
+  /// Solve phase with ICNTL(26) = `phase` (1 condensation, 2 expansion) on rhs_ and reduced_.
+  void run_schur_solve(int phase);
+
   std::unique_ptr<detail::MumpsInstance> mumps_;
   bool symmetric_ = false;
   std::vector<int> rows_, cols_;     ///< coordinates passed to MUMPS, 1-based

@@ -51,12 +51,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, bool /*symmetric*/) {
   id.a = values_.data();
   factorized_ = false;
   mumps_->run(2);
-  if (mumps_->infog(28) > 0) {
-    const int eq = id.pivnul_list ? id.pivnul_list[0] - 1 : -1;
-    throw SolverError("the stiffness matrix is singular (MUMPS found " + std::to_string(mumps_->infog(28)) +
-                          " zero pivot(s))",
-                      eq);
-  }
+  mumps_->throw_if_null_pivots();
   factorized_ = true;
 }
 
