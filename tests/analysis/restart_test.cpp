@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -218,8 +219,22 @@ TEST(Restart, FrequencyWritesEveryNthIncrementAndTheEndOfEachStep) {
   ASSERT_TRUE(run.summary.completed);
   std::vector<std::pair<int, int>> written;
   for (const RestartState& s : run.recorder.states) written.emplace_back(s.step, s.increment);
-  // Step 1: 4 increments (3, end = 4); step 2: 9 increments (3, 6, end = 9).
-  EXPECT_EQ(written, (std::vector<std::pair<int, int>>{{1, 3}, {1, 4}, {2, 3}, {2, 6}, {2, 9}}));
+  // Every 3rd increment of each step and its last one. The number of
+  // increments of each step comes from the run (automatic incrementation;
+  // a round-off change in a stick/slip decision can change it by one):
+  // step 1 has 4 increments (3, end = 4), step 2 9-10 (3, 6, 9, end).
+  std::map<int, int> last_increment;
+  for (const IncrementResults& r : run.recorder.results)
+    last_increment[r.step] = std::max(last_increment[r.step], r.increment);
+  ASSERT_EQ(last_increment.size(), 2u);
+  EXPECT_EQ(last_increment[1], 4);
+  EXPECT_GE(last_increment[2], 6);  // the frequency acts at least twice in step 2
+  std::vector<std::pair<int, int>> expected;
+  for (const auto& [step, n] : last_increment) {
+    for (int k = 3; k < n; k += 3) expected.emplace_back(step, k);
+    expected.emplace_back(step, n);
+  }
+  EXPECT_EQ(written, expected);
   // Without *RESTART, WRITE nothing is written.
   const Model quiet = read_deck_string(replaced(base_deck(), "*RESTART, WRITE, FREQUENCY=1\n", ""), "q.inp");
   EXPECT_TRUE(run_model(quiet).recorder.states.empty());

@@ -261,7 +261,13 @@ TEST(Cli, RestartContinuesAnAnalysisToTheSameFiles) {
     EXPECT_EQ(entry.path().filename().string().rfind("job_2_", 0), 0u) << entry.path();
     EXPECT_EQ(slurp(entry.path()), slurp(dir / "full" / entry.path().filename())) << entry.path();
   }
-  EXPECT_EQ(vtus, 9);
+  // As many as the uninterrupted run wrote for step 2 (9-10: automatic
+  // increments, see restart_test.cpp).
+  int full_step_2 = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "full"))
+    if (entry.path().extension() == ".vtu" && entry.path().filename().string().rfind("job_2_", 0) == 0) ++full_step_2;
+  EXPECT_GE(full_step_2, 6);
+  EXPECT_EQ(vtus, full_step_2);
   const std::string pvd = slurp(dir / "resumed" / "job.pvd");
   EXPECT_NE(pvd.find("file=\"job_2_1.vtu\""), std::string::npos) << pvd;
   EXPECT_EQ(pvd.find("job_1_"), std::string::npos) << pvd;
@@ -276,7 +282,8 @@ TEST(Cli, RestartContinuesAnAnalysisToTheSameFiles) {
   write(dir / "read.inp", "*RESTART, READ, STEP=1, INC=4, FILE=s1/step1.rst\n" + deck);
   const auto by_deck = tether("run " + path("read.inp") + " -o " + path("read"));
   EXPECT_EQ(by_deck.code, 0) << by_deck.out;
-  EXPECT_EQ(slurp(dir / "read" / "read_2_9.vtu"), slurp(dir / "full" / "job_2_9.vtu"));
+  const std::string last = "_2_" + std::to_string(full_step_2) + ".vtu";
+  EXPECT_EQ(slurp(dir / "read" / ("read" + last)), slurp(dir / "full" / ("job" + last)));
 }
 
 TEST(Cli, RestartFromAnotherModelOrADamagedFileIsRefused) {

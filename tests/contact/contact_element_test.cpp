@@ -23,7 +23,8 @@ using testing::tangent_error;
 /// Linear: two straight faces; Quadratic: one curved 3-node face; SmoothCorner
 /// / SmoothStraight: two faces with a kink at node 2 and SMOOTH=0.2, slave over
 /// the rounded corner (3 real master nodes) or over a shortened straight piece.
-enum class Master { Linear, Quadratic, SmoothCorner, SmoothStraight };
+/// QuadraticPair: two curved 3-node faces meeting at node 2 (x = 0).
+enum class Master { Linear, Quadratic, QuadraticPair, SmoothCorner, SmoothStraight };
 enum class Friction { None, Exact, Slope, ElasticSlip };
 
 /// A slave node (node 0) over a master surface: two straight segments
@@ -50,6 +51,10 @@ struct Fixture {
       setup.master_face_labels = {{1, 3}, {2, 3}};
       setup.smoothing = 0.2;
       x0 = master == Master::SmoothCorner ? 0.1 : 1.0;
+    } else if (master == Master::QuadraticPair) {
+      reference = {{0.3, 0.2}, {2.0, 0.0}, {0.0, 0.0}, {1.0, 0.08}, {-2.0, 0.0}, {-1.0, 0.05}};
+      setup.master_faces = {{1, 2, 3}, {2, 4, 5}};
+      setup.master_face_labels = {{1, 3}, {2, 3}};
     } else {
       reference = {{0.3, 0.2}, {1.0, 0.0}, {-1.0, 0.0}, {0.0, 0.15}};
       setup.master_faces = {{1, 2, 3}};
@@ -74,13 +79,29 @@ struct Fixture {
     u_start.setZero(n_disp + per);
   }
 
-  EvaluationState state() const { return EvaluationState{u, u_start, 1.0, 1.0, 1.0, true}; }
+  double time = 1.0;  ///< total time at the end of the increment (a new value starts a new increment)
+  EvaluationState state() const { return EvaluationState{u, u_start, time, time, 1.0, true}; }
   ContactNode& node() const { return *static_cast<ContactNode*>(pair->nodes().front()); }
   /// Moves the slave to (x, y) at the end of the increment, from (x0, y0) at its start.
   void place(double x0, double y0, double x, double y) {
     u_start[0] = x0 - reference[0].x(), u_start[1] = y0 - reference[0].y();
     u[0] = x - reference[0].x(), u[1] = y - reference[0].y();
     // Master nodes moved a little, so no derivative is trivially zero.
+    for (int k = 2; k < n_disp; ++k) u[k] = 0.013 * std::sin(3.1 * k);
+    pair->update_connectivity(state());
+  }
+  /// A converged increment ending with the slave at (x0, y0) (master
+  /// undeformed, multipliers zero), then an increment moving it to (x, y),
+  /// the master nodes moved a little: the slave is paired with the segment
+  /// under (x, y), its slip measured from the point under (x0, y0).
+  void hand_over(double x0, double y0, double x, double y) {
+    u.setZero();
+    u[0] = x0 - reference[0].x(), u[1] = y0 - reference[0].y();
+    u_start = u;
+    pair->update_connectivity(state());
+    pair->commit(state());
+    time += 1;
+    u[0] = x - reference[0].x(), u[1] = y - reference[0].y();
     for (int k = 2; k < n_disp; ++k) u[k] = 0.013 * std::sin(3.1 * k);
     pair->update_connectivity(state());
   }
@@ -213,6 +234,110 @@ std::vector<Case> smoothed_cases() {
 
 INSTANTIATE_TEST_SUITE_P(Smoothed, ContactTangent, ::testing::ValuesIn(smoothed_cases()),
                          [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
+/// A slave handed over from the segment it was on at the last converged
+/// increment to another one: its slip is measured from a point of the old
+/// segment, whose nodes are then among the element's dofs.
+struct HandOverCase {
+  const char* name;
+  Master master;
+  PressureOverclosure law;
+  Friction friction;
+  double lambda_t;  ///< exact-stick multiplier
+  double x0, x;     ///< slave x at the start and the end of the increment (y = -0.04, λn = 0.8 for HARD)
+  ContactStatus expected;
+  int extra_nodes;  ///< nodes of the committed segment not on the current one
+};
+
+void PrintTo(const HandOverCase& c, std::ostream* os) { *os << c.name; }
+
+class ContactHandOverTangent : public ::testing::TestWithParam<HandOverCase> {};
+
+TEST_P(ContactHandOverTangent, MatchesFiniteDifferences) {
+  const HandOverCase& c = GetParam();
+  Fixture f(c.master, c.law, c.friction);
+  const double y = -0.04;
+  f.hand_over(c.x0, y, c.x, y);
+  const ContactSlave& s = f.pair->slave(0);
+  ASSERT_TRUE(s.pairing.found());
+  ASSERT_NE(s.committed_segment, s.pairing.segment);
+  ASSERT_TRUE(s.handed_over);
+  const MasterSegments& segments = f.pair->segments();
+  const int n_mult = ContactPair::multipliers_per_slave(f.pair->setup().law, f.pair->setup().friction);
+  EXPECT_EQ(static_cast<int>(s.dofs.size()),
+            2 * (1 + segments.segment(s.pairing.segment).n_nodes + c.extra_nodes) + n_mult);
+  int k = f.n_disp;
+  if (c.law.law == PressureOverclosure::Law::Hard) f.u[k++] = 0.8;
+  if (c.friction == Friction::Exact) f.u[k++] = c.lambda_t;
+  EXPECT_EQ(f.node().status(f.state()), c.expected);
+  const double error = tangent_error(f.node(), f.state(), 1e-7);
+  EXPECT_LT(error, 2e-6) << c.name;
+  std::printf("[ hand-over ] %s: slip %.4f, tangent error %.2e (%zu dofs)\n", c.name, f.node().values(f.state()).slip,
+              error, s.dofs.size());
+}
+
+// Linear: from x = 0.3 on face 1-2 to x = -0.3 on face 2-3 (slip ~0.6 along
+// t = -x of the new face); the penalty-stick cases slip less (0.1, 0.04) to
+// stay in the cone. QuadraticPair: the same over two curved faces.
+// SmoothCorner fixture: from the straight piece (x = 0.6) onto the corner
+// piece (x = 0.2: the same real nodes, other virtual ones) and from the
+// corner piece (0.2, or -0.35 for stick) onto the far straight piece (-0.6,
+// -0.45: node 1 extra).
+INSTANTIATE_TEST_SUITE_P(
+    HandOver, ContactHandOverTangent,
+    ::testing::Values(
+        HandOverCase{"linear_exact_stick", Master::Linear, hard(), Friction::Exact, -0.85, 0.3, -0.3,
+                     ContactStatus::Stick, 1},
+        HandOverCase{"linear_exact_slip", Master::Linear, hard(), Friction::Exact, 0.2, 0.3, -0.3,
+                     ContactStatus::Slip, 1},
+        HandOverCase{"linear_slope_stick", Master::Linear, hard(), Friction::Slope, 0, 0.05, -0.05,
+                     ContactStatus::Stick, 1},
+        HandOverCase{"linear_slope_slip", Master::Linear, hard(), Friction::Slope, 0, 0.3, -0.3, ContactStatus::Slip,
+                     1},
+        HandOverCase{"linear_elastic_slip_stick", Master::Linear, hard(), Friction::ElasticSlip, 0, 0.015, -0.015,
+                     ContactStatus::Stick, 1},
+        HandOverCase{"linear_soft_law_slip", Master::Linear, linear_law(), Friction::Slope, 0, 0.3, -0.3,
+                     ContactStatus::Slip, 1},
+        HandOverCase{"quadratic_exact_stick", Master::QuadraticPair, hard(), Friction::Exact, -0.85, 0.3, -0.3,
+                     ContactStatus::Stick, 2},
+        HandOverCase{"quadratic_exact_slip", Master::QuadraticPair, hard(), Friction::Exact, -0.2, -0.3, 0.3,
+                     ContactStatus::Slip, 2},
+        HandOverCase{"quadratic_slope_stick", Master::QuadraticPair, hard(), Friction::Slope, 0, 0.05, -0.05,
+                     ContactStatus::Stick, 2},
+        HandOverCase{"quadratic_elastic_slip_slip", Master::QuadraticPair, hard(), Friction::ElasticSlip, 0, 0.3,
+                     -0.3, ContactStatus::Slip, 2},
+        HandOverCase{"smooth_onto_corner_exact_stick", Master::SmoothCorner, hard(), Friction::Exact, -0.6, 0.6, 0.2,
+                     ContactStatus::Stick, 0},
+        HandOverCase{"smooth_onto_corner_exact_slip", Master::SmoothCorner, hard(), Friction::Exact, -0.2, 0.6, 0.2,
+                     ContactStatus::Slip, 0},
+        HandOverCase{"smooth_off_corner_exact_slip", Master::SmoothCorner, hard(), Friction::Exact, 0.2, 0.2, -0.6,
+                     ContactStatus::Slip, 1},
+        HandOverCase{"smooth_off_corner_slope_stick", Master::SmoothCorner, hard(), Friction::Slope, 0, -0.35, -0.45,
+                     ContactStatus::Stick, 1},
+        HandOverCase{"smooth_off_corner_elastic_slip_slip", Master::SmoothCorner, hard(), Friction::ElasticSlip, 0, 0.2,
+                     -0.6, ContactStatus::Slip, 1}),
+    [](const ::testing::TestParamInfo<HandOverCase>& info) { return std::string(info.param.name); });
+
+TEST(ContactNode, HandOverDofsAreDroppedAtTheNextIncrement) {
+  // After the commit that ends the hand-over increment the committed segment
+  // is the current one again: the extra node leaves the dof list, and
+  // update_connectivity reports the change so the assembler rebuilds its pattern.
+  Fixture f(Master::Linear, hard(), Friction::Exact);
+  f.hand_over(0.3, -0.04, -0.3, -0.04);
+  EXPECT_EQ(f.node().dofs().size(), 2u * 4 + 2);
+  f.pair->commit(f.state());
+  f.time += 1;
+  f.u_start = f.u;
+  EXPECT_TRUE(f.pair->update_connectivity(f.state()));
+  EXPECT_FALSE(f.pair->slave(0).handed_over);
+  EXPECT_EQ(f.node().dofs().size(), 2u * 3 + 2);
+  EXPECT_NEAR(f.node().values(f.state()).slip, 0.0, 1e-14);
+  // Frictionless, a hand-over adds no dofs.
+  Fixture g(Master::Linear, hard(), Friction::None);
+  g.hand_over(0.3, -0.04, -0.3, -0.04);
+  EXPECT_FALSE(g.pair->slave(0).handed_over);
+  EXPECT_EQ(g.node().dofs().size(), 2u * 3 + 1);
+}
 
 TEST(ContactNode, HardResidualIsTheComplementarityFunction) {
   Fixture f(Master::Linear, hard(), Friction::None);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <iostream>
 #include <numbers>
@@ -352,23 +353,78 @@ TEST(SegmentGeometry, SlipIncrement) {
   // Straight segment: sliding the slave by δ along t gives Δs = δ exactly.
   const Points seg = {Vector2d(0, 0), Vector2d(3, 4)};
   const Vector2d t(0.6, 0.8), n(0.8, -0.6);
-  const SegmentGeometry before = segment_geometry(Vector2d(1.5, 2) + 0.2 * n, seg);
-  const SegmentGeometry after = segment_geometry(Vector2d(1.5, 2) + 0.2 * n + 0.7 * t, seg);
-  EXPECT_NEAR(slip_increment(after, before.projection.xi), 0.7, 1e-14);
-  EXPECT_NEAR(slip_increment(before, after.projection.xi), -0.7, 1e-14);
-  // gradient against finite differences on a curved segment
-  std::mt19937 rng(3);
-  for (int trial = 0; trial < 20; ++trial) {
-    const Points p = random_configuration(rng, 3);
-    const double xi_old = 0.3;
-    const ContactVector grad = slip_increment_gradient(geometry_of(p), xi_old);
-    Eigen::VectorXd fd(grad.size());
-    for (int j = 0; j < grad.size(); ++j) {
-      fd[j] = (slip_increment(geometry_of(perturbed(p, j, 1e-6)), xi_old) -
-               slip_increment(geometry_of(perturbed(p, j, -1e-6)), xi_old)) / 2e-6;
+  const Vector2d start = Vector2d(1.5, 2) + 0.2 * n, end = start + 0.7 * t;
+  const SegmentGeometry before = segment_geometry(start, seg);
+  const SegmentGeometry after = segment_geometry(end, seg);
+  EXPECT_NEAR(slip_increment(end, seg, after, seg, before.projection.xi).value, 0.7, 1e-14);
+  EXPECT_NEAR(slip_increment(start, seg, before, seg, after.projection.xi).value, -0.7, 1e-14);
+  // Handed over to the collinear next segment (and back): the same distance.
+  const Points next = {Vector2d(3, 4), Vector2d(6, 8)};
+  const Vector2d far = start + 3.1 * t;
+  const SegmentGeometry on_next = segment_geometry(far, next);
+  EXPECT_NEAR(slip_increment(far, next, on_next, seg, before.projection.xi).value, 3.1, 1e-14);
+  EXPECT_NEAR(slip_increment(start, seg, before, next, on_next.projection.xi).value, -3.1, 1e-14);
+}
+
+TEST(SegmentGeometry, SlipIncrementOnACurveIsTheArcLengthToSecondOrder) {
+  // Parabola y(ξ) = (ξ, 0.3 ξ²) as a 3-node segment: the error of Δs
+  // against the arc length from ξ_c to ξ* falls as Δξ³ (ratio ~8 per halving).
+  const Points seg = {Vector2d(-1, 0.3), Vector2d(1, 0.3), Vector2d(0, 0)};
+  const auto arc = [](double a, double b) {  // ∫ sqrt(1 + (0.6 ξ)²) dξ, Simpson, 2000 panels
+    double sum = 0;
+    const int n = 2000;
+    for (int k = 0; k <= n; ++k) {
+      const double x = a + (b - a) * k / n;
+      sum += (k == 0 || k == n ? 1 : (k % 2 ? 4 : 2)) * std::sqrt(1 + 0.36 * x * x);
     }
-    EXPECT_LT(relative(grad, fd), 1e-6) << trial;
+    return sum * (b - a) / (3 * n);
+  };
+  double previous = 0;
+  for (double d : {0.2, 0.1, 0.05}) {
+    const double xi_c = 0.1, xi = xi_c + d;
+    const Vector2d y(xi, 0.3 * xi * xi), normal = Vector2d(0.6 * xi, -1).normalized();  // outward: below
+    const Vector2d slave = y + 0.05 * normal;
+    const SegmentGeometry g = segment_geometry(slave, seg);
+    ASSERT_NEAR(g.projection.xi, xi, 1e-12);
+    const double error = std::abs(slip_increment(slave, seg, g, seg, xi_c).value - arc(xi_c, xi));
+    std::printf("[ slip ] dxi %.3f: |ds - arc length| = %.3e\n", d, error);
+    if (previous > 0) EXPECT_GT(previous / error, 6.0) << d;
+    previous = error;
   }
+}
+
+TEST(SegmentGeometry, SlipIncrementGradientMatchesFiniteDifferences) {
+  // Random curved or straight current segments, committed on the same
+  // segment or on another random one (a hand-over): the gradient over
+  // [slave, segment, committed segment] against central differences.
+  std::mt19937 rng(3);
+  double worst = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const int m = trial % 2 ? 3 : 2, m_c = trial % 4 < 2 ? 2 : 3;
+    Points p = random_configuration(rng, m);
+    const Points other = random_configuration(rng, m_c);
+    const bool same = trial % 5 == 0;
+    if (!same) p.insert(p.end(), other.begin() + 1, other.end());
+    const double xi_c = same ? 0.3 : -0.7;
+    const auto slip = [&](const Points& q) {
+      const std::span<const Vector2d> segment(q.data() + 1, static_cast<std::size_t>(m));
+      const std::span<const Vector2d> committed = same ? segment : std::span<const Vector2d>(q.data() + 1 + m, q.size() - 1 - m);
+      return slip_increment(q[0], segment, segment_geometry(q[0], segment, ContactDerivatives::gradient), committed, xi_c);
+    };
+    SlipVector grad = slip(p).gradient;
+    if (same) {  // fold the committed part onto the segment's nodes
+      grad.segment(2, 2 * m) += grad.tail(2 * m);
+      grad.conservativeResize(2 * (1 + m));
+    }
+    ASSERT_EQ(grad.size(), 2 * static_cast<Eigen::Index>(p.size()));
+    Eigen::VectorXd fd(grad.size());
+    for (int j = 0; j < grad.size(); ++j)
+      fd[j] = (slip(perturbed(p, j, 1e-6)).value - slip(perturbed(p, j, -1e-6)).value) / 2e-6;
+    const double error = relative(grad, fd);
+    worst = std::max(worst, error);
+    EXPECT_LT(error, 1e-7) << trial;
+  }
+  std::printf("[ slip ] gradient vs central differences: worst relative error %.2e\n", worst);
 }
 
 TEST(SegmentGeometry, EvaluationTime) {

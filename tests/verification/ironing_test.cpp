@@ -12,10 +12,9 @@
 // so Fx / |Fy| of the driven nodes' reactions = mu (issue: within 2 %), and
 // with mu = 0, Fx = 0 (checked: |Fx| <= 1e-3 |Fy|). Steady sliding: slide
 // >= 1 mm. Newton (issue): every attempt takes <= 8 iterations, and the last
-// ones should be quadratic: checked as an order >= 1.5 frictionless and as a
-// reduction of the residual by >= 20x with friction, where the tangent is
-// not exact after a segment hand-over (kFrictionLast). The history is
-// printed. Skipped without python3/gmsh.
+// ones should be quadratic: checked as an order >= 1.5 of the last iteration
+// (with friction in the slide step, and a reduction >= 20x everywhere;
+// kFrictionLast). The history is printed. Skipped without python3/gmsh.
 
 #include <gtest/gtest.h>
 
@@ -55,6 +54,8 @@ struct LastIterations {
   /// Smallest order estimate p = log(r_n / r_{n-1}) / log(r_{n-1} / r_{n-2}) of
   /// the last iteration (2 for quadratic convergence, 1 for linear; 0: not checked).
   double min_order = 0;
+  /// The step whose increments the order is checked in (0: every step).
+  int order_step = 0;
 };
 
 /// Runs the deck; checks Fx / |Fy| in steady sliding (mu > 0: within `tolerance`
@@ -96,7 +97,7 @@ void check(const std::string& name, const std::string& options, double mu, doubl
     if (inc.converged) converged.push_back(&inc), last_pass.push_back(last);
   }
   ASSERT_EQ(converged.size(), run.recorder.results.size());
-  double worst_reduction = 0, worst_order = 1e300;
+  double worst_reduction = 0, worst_order = 1e300, worst_checked_order = 1e300;
   std::vector<double> orders;
   double worst = 0, sum = 0;
   int steady = 0, max_iterations = 0;
@@ -125,8 +126,11 @@ void check(const std::string& name, const std::string& options, double mu, doubl
       orders.push_back(order);
       if (last_check.max_reduction > 0)
         EXPECT_LE(reduction, last_check.max_reduction) << "step " << r.step << " increment " << r.increment;
-      if (last_check.min_order > 0)
-        EXPECT_GE(order, last_check.min_order) << "step " << r.step << " increment " << r.increment;
+      if (last_check.order_step == 0 || r.step == last_check.order_step) {
+        worst_checked_order = std::min(worst_checked_order, order);
+        if (last_check.min_order > 0)
+          EXPECT_GE(order, last_check.min_order) << "step " << r.step << " increment " << r.increment;
+      }
     }
     if (r.step != 2 || slide < kSteady - 1e-9) continue;
     ++steady;
@@ -143,27 +147,29 @@ void check(const std::string& name, const std::string& options, double mu, doubl
   ASSERT_FALSE(orders.empty());
   std::sort(orders.begin(), orders.end());
   std::printf("[ ironing ] %s: last iteration of %zu increments: max force residual reduced by 1/%.0f at worst; "
-              "order min %.2f median %.2f\n",
-              name.c_str(), orders.size(), 1 / worst_reduction, worst_order, orders[orders.size() / 2]);
+              "order min %.2f median %.2f (min %.2f in %s)\n",
+              name.c_str(), orders.size(), 1 / worst_reduction, worst_order, orders[orders.size() / 2],
+              worst_checked_order, last_check.order_step == 0 ? "every step" : "the checked step");
 }
 
-// With friction the last iteration is not quadratic: when a slave node has
-// been handed over to another master segment since the last converged
-// increment, the reference point of its slip increment (the old master point
-// projected onto the new segment) depends on the master nodes, and that
-// derivative is not in the tangent (docs/theory/contact.md, "Friction"). At
-// 1.25 segments per increment every contact node is handed over in every
-// increment, and the last iteration's order is about 1 (a fast linear rate,
-// the residual reduced 86x or more); frictionless, and with friction in
-// increments without hand-overs, it is about 2. So the friction runs check the
-// reduction only (measured 1/86 at worst; without the slip Hessian term of the
-// tangent 1/53 and 8 iterations) and the frictionless run checks the order.
-constexpr LastIterations kFrictionLast{.max_reduction = 0.05};
+// The last iteration of every slide increment is quadratic with friction too
+// since the slip increment's dependence on the committed segment's nodes is in
+// the tangent (a slave node handed over to another master segment since the
+// last converged increment measures its slip from a point of the old
+// segment; at 1.25 segments per increment every contact node is handed over
+// in every increment; docs/theory/contact.md, "Friction"). Measured on the
+// 3 mm deck: order 2.05-3.03 in the 24 slide increments (before: 0.95-5.2,
+// median 1.34 over all increments). The order is checked in the slide step
+// only: in two of the four indentation increments a contact node changes
+// status in the iteration before the last, and the three-residual estimate
+// is then 1.34-1.36 (the same residuals before and after the change). The
+// reduction of the last iteration is checked everywhere (>= 20x; measured 53x).
+constexpr LastIterations kFrictionLast{.max_reduction = 0.05, .min_order = 1.5, .order_step = 2};
 
 // 3 mm slide, 24 increments: 17 increments of steady sliding (slide >= 1 mm),
-// every slave node crosses 30 master segments. At 95741b6: 4 580 dofs, 28
-// increments, 148 iterations, at most 6 per increment, no cut-back, Fx/|Fy|
-// within 0.93 % of mu; about 5 s in Release (docs/verification_contact.md).
+// every slave node crosses 30 master segments. 4 580 dofs, 28 increments, 154
+// iterations, at most 7 per increment, no cut-back, Fx/|Fy| within 0.85 % of
+// mu; about 5 s in Release (docs/verification_contact.md).
 TEST(Ironing, Cpe4FrictionRatioIsMu) {
   check("ironing_cpe4_mu03_slide3", "--mu 0.3 --slide 3 --slide-increments 24", 0.3, 3, 0.02, kFrictionLast);
 }

@@ -32,19 +32,39 @@ std::vector<Eigen::Vector2d> local_positions(const ContactPair& pair, const Cont
   return y;
 }
 
-/// ξ on the current segment of the master point the slave was paired with at
-/// the last converged increment (the reference of the slip increment).
-double committed_xi_on(const ContactPair& pair, const ContactSlave& s, std::span<const Eigen::Vector2d> segment,
-                       const Eigen::VectorXd& u) {
-  if (s.committed_segment == s.pairing.segment || s.committed_segment < 0) return s.committed_xi;
-  // The slave moved to another segment: the old master point, at current
-  // positions, projected onto the new segment (exact on a straight surface).
-  const std::vector<Eigen::Vector2d> old_segment = pair.segment_points(s.committed_segment, u);
-  Eigen::Vector3d N, dN;
-  face_shape_functions(static_cast<int>(old_segment.size()), s.committed_xi, N, dN);
-  Eigen::Vector2d y_old(0, 0);
-  for (std::size_t a = 0; a < old_segment.size(); ++a) y_old += N[static_cast<Eigen::Index>(a)] * old_segment[a];
-  return project(y_old, segment).xi;
+/// The points the slip increment depends on (current positions): the slave,
+/// the current segment's (virtual) nodes and, after a hand-over, those of the
+/// committed segment.
+std::vector<Eigen::Vector2d> slip_points(const ContactPair& pair, const ContactSlave& s,
+                                         std::span<const Eigen::Vector2d> y, const Eigen::VectorXd& u) {
+  std::vector<Eigen::Vector2d> points(y.begin(), y.end());
+  if (s.handed_over) {
+    const std::vector<Eigen::Vector2d> committed = pair.segment_points(s.committed_segment, u);
+    points.insert(points.end(), committed.begin(), committed.end());
+  }
+  return points;
+}
+
+/// Δs and its gradient over the points of slip_points() (`m` current segment
+/// nodes). Without a hand-over the committed segment is the current one and
+/// its part of the gradient is added to the current nodes'.
+SlipIncrement slip_of(std::span<const Eigen::Vector2d> points, int m, double xi_c, const SegmentGeometry* geometry,
+                      bool need_gradient) {
+  const auto segment = points.subspan(1, static_cast<std::size_t>(m));
+  const bool handed_over = points.size() > static_cast<std::size_t>(1 + m);
+  const auto committed = handed_over ? points.subspan(static_cast<std::size_t>(1 + m)) : segment;
+  const ContactDerivatives d = need_gradient ? ContactDerivatives::gradient : ContactDerivatives::none;
+  SegmentGeometry own;
+  if (!geometry) {
+    own = segment_geometry(points[0], segment, d);
+    geometry = &own;
+  }
+  SlipIncrement slip = slip_increment(points[0], segment, *geometry, committed, xi_c, d);
+  if (need_gradient && !handed_over) {
+    slip.gradient.segment(2, 2 * m) += slip.gradient.tail(2 * m);
+    slip.gradient.conservativeResize(2 * (1 + m));
+  }
+  return slip;
 }
 
 /// Normal gap with derivatives: of the segment at ξ*, or of the end node for
@@ -89,25 +109,53 @@ Gap gap_of(const ContactSlave& s, std::span<const Eigen::Vector2d> y, bool need_
   return gap;
 }
 
-/// Hessian of the slip increment by central differences of its exact
-/// gradient (the curvature term T ∂²Δs only; see the theory page).
-ContactMatrix slip_hessian(std::vector<Eigen::Vector2d> y, double xi_ref) {
-  const int nu = 2 * static_cast<int>(y.size());
-  const double h = 1e-6 * std::max((y[2] - y[1]).norm(), 1e-300);
-  ContactMatrix H(nu, nu);
-  for (int j = 0; j < nu; ++j) {
-    auto& c = y[static_cast<std::size_t>(j / 2)][j % 2];
+/// Hessian of the slip increment over the points of slip_points(), by
+/// central differences of its exact gradient (the curvature term T ∂²Δs
+/// only; see the theory page).
+Eigen::MatrixXd slip_hessian(std::vector<Eigen::Vector2d> points, int m, double xi_c) {
+  const int n = 2 * static_cast<int>(points.size());
+  const double h = 1e-6 * std::max((points[2] - points[1]).norm(), 1e-300);
+  Eigen::MatrixXd H(n, n);
+  for (int j = 0; j < n; ++j) {
+    auto& c = points[static_cast<std::size_t>(j / 2)][j % 2];
     const double keep = c;
     c = keep + h;
-    const ContactVector plus =
-        slip_increment_gradient(segment_geometry(y[0], std::span(y).subspan(1), ContactDerivatives::gradient), xi_ref);
+    const SlipVector plus = slip_of(points, m, xi_c, nullptr, true).gradient;
     c = keep - h;
-    const ContactVector minus =
-        slip_increment_gradient(segment_geometry(y[0], std::span(y).subspan(1), ContactDerivatives::gradient), xi_ref);
+    const SlipVector minus = slip_of(points, m, xi_c, nullptr, true).gradient;
     c = keep;
     H.col(j) = (plus - minus) / (2 * h);
   }
   return 0.5 * (H + H.transpose());
+}
+
+/// T of r_real = Tᵀ r_v, K_real = Tᵀ K_v T: the local unknowns of compute()
+/// [slave, current segment's virtual nodes, committed segment's virtual nodes
+/// (after a hand-over), multipliers] as linear functions of the slave's dofs
+/// (real nodes; MasterSegments' constant weights).
+Eigen::MatrixXd virtual_to_real(const ContactPair& pair, const ContactSlave& s, int n_virtual) {
+  const auto n_real = static_cast<Eigen::Index>(s.dofs.size());
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(n_virtual, n_real);
+  T.topLeftCorner<2, 2>().setIdentity();
+  auto slot_of = [&s](int node) {  // local node slot of a real node in s.dofs
+    for (std::size_t k = 0; k < s.dofs.size(); k += 2)
+      if (s.dofs[k] == kDofsPerNode * node) return static_cast<int>(k / 2);
+    return -1;
+  };
+  int row = 2;
+  auto add_segment = [&](int k) {
+    const MasterSegment& seg = pair.segments().segment(k);
+    for (int p = 0; p < seg.n_nodes; ++p, row += 2)
+      for (int a = 0; a < seg.n_nodes; ++a) {
+        const int slot = slot_of(seg.nodes[static_cast<std::size_t>(a)]);
+        T.block<2, 2>(row, 2 * slot) += seg.weights(p, a) * Eigen::Matrix2d::Identity();
+      }
+  };
+  add_segment(s.pairing.segment);
+  if (s.handed_over) add_segment(s.committed_segment);
+  const Eigen::Index n_mult = n_virtual - row;
+  T.bottomRightCorner(n_mult, n_mult).setIdentity();
+  return T;
 }
 
 }  // namespace
@@ -135,26 +183,33 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
   const double mu = pair_.mu();
   const bool friction = mu > 0;
   const bool exact_stick = friction && pair_.exact_stick();
-  const int n_local = static_cast<int>(s.dofs.size());
   const int n_mult = (hard_multiplier ? 1 : 0) + (exact_stick ? 1 : 0);
-  const int nu = n_local - n_mult;  // displacement dofs
-  const int in = hard_multiplier ? nu : -1;  // local index of λn
-  const int it = exact_stick ? nu + (hard_multiplier ? 1 : 0) : -1;  // local index of λt
-  const double lambda_n = hard_multiplier ? state.u[s.dofs[static_cast<std::size_t>(in)]] : 0.0;
-  const double lambda_t = exact_stick ? state.u[s.dofs[static_cast<std::size_t>(it)]] : 0.0;
+  // Local unknowns here: [slave, the segment's m (virtual) nodes, after a
+  // hand-over the committed segment's m_c (virtual) nodes, multipliers];
+  // evaluate() maps them onto the dofs. nu: slave and segment, ns: all points.
+  const int m = s.pairing.found() ? pair_.segments().segment(s.pairing.segment).n_nodes : 0;
+  const int m_c = s.handed_over ? pair_.segments().segment(s.committed_segment).n_nodes : 0;
+  const int nu = 2 * (1 + m);
+  const int ns = nu + 2 * m_c;
+  const int n_local = ns + n_mult;
+  const int in = hard_multiplier ? ns : -1;  // local index of λn
+  const int it = exact_stick ? ns + (hard_multiplier ? 1 : 0) : -1;  // local index of λt
+  const auto mult = [&](int k) { return state.u[s.dofs[s.dofs.size() - static_cast<std::size_t>(n_local - k)]]; };
+  const double lambda_n = hard_multiplier ? mult(in) : 0.0;
+  const double lambda_t = exact_stick ? mult(it) : 0.0;
   need_tangent = need_tangent && out;
 
   Point point;
   if (!s.pairing.found()) {  // free slave: multipliers vanish
     if (out)
-      for (int k = nu; k < n_local; ++k) {
-        out->residual[k] = -state.u[s.dofs[static_cast<std::size_t>(k)]] / c;
+      for (int k = ns; k < n_local; ++k) {
+        out->residual[k] = -mult(k) / c;
         if (need_tangent) out->tangent(k, k) = -1 / c;
       }
     return point;
   }
 
-  const std::vector<Eigen::Vector2d> y = local_positions(pair_, s, state.u, nu / 2);
+  const std::vector<Eigen::Vector2d> y = local_positions(pair_, s, state.u, 1 + m);
   const Gap gap = gap_of(s, y, need_tangent);
   point.gap = gap.g;
   point.xi = gap.geometry.projection.xi;
@@ -222,9 +277,10 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
   if (!friction) return point;
 
   // ---- friction: slip increment Δs since the last converged increment
-  const double xi_ref = committed_xi_on(pair_, s, std::span(y).subspan(1), state.u);
-  const double ds = slip_increment(gap.geometry, xi_ref);
-  const ContactVector grad_ds = slip_increment_gradient(gap.geometry, xi_ref);
+  const std::vector<Eigen::Vector2d> points = slip_points(pair_, s, y, state.u);
+  const SlipIncrement slip = slip_of(points, m, s.committed_xi, &gap.geometry, out != nullptr);
+  const double ds = slip.value;
+  const SlipVector& grad_ds = slip.gradient;
   point.slip = ds;
   double T = 0;
   if (exact_stick) {
@@ -232,10 +288,10 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     const double tau = lambda_t + c * ds;
     const double bound = mu * N;
     if (out) {
-      out->residual.head(nu) += lambda_t * grad_ds;
+      out->residual.head(ns) += lambda_t * grad_ds;
       if (need_tangent) {
-        out->tangent.topLeftCorner(nu, nu) += lambda_t * slip_hessian(y, xi_ref);
-        out->tangent.col(it).head(nu) += grad_ds;
+        out->tangent.topLeftCorner(ns, ns) += lambda_t * slip_hessian(points, m, s.committed_xi);
+        out->tangent.col(it).head(ns) += grad_ds;
       }
     }
     if (!(N > 0)) {
@@ -247,7 +303,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
       point.status = ContactStatus::Stick;
       if (out) {
         out->residual[it] = ds;
-        if (need_tangent) out->tangent.row(it).head(nu) += grad_ds.transpose();
+        if (need_tangent) out->tangent.row(it).head(ns) += grad_ds.transpose();
       }
     } else {
       const double sign = tau >= 0 ? 1.0 : -1.0;
@@ -276,7 +332,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     if (N > 0 && (std::abs(trial) <= mu * N || s.held_stick)) {
       T = trial;
       point.status = ContactStatus::Stick;
-      dT.head(nu) += k * grad_ds;
+      dT.head(ns) += k * grad_ds;
       dT += ds * dk;
     } else if (N > 0) {
       const double sign = trial >= 0 ? 1.0 : -1.0;
@@ -285,10 +341,10 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
       dT = mu * sign * dN;
     }
     if (out) {
-      out->residual.head(nu) += T * grad_ds;
+      out->residual.head(ns) += T * grad_ds;
       if (need_tangent && T != 0) {
-        out->tangent.topRows(nu) += grad_ds * dT.transpose();
-        out->tangent.topLeftCorner(nu, nu) += T * slip_hessian(y, xi_ref);
+        out->tangent.topRows(ns) += grad_ds * dT.transpose();
+        out->tangent.topLeftCorner(ns, ns) += T * slip_hessian(points, m, s.committed_xi);
       }
     }
   }
@@ -297,15 +353,24 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
 }
 
 void ContactNode::evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const {
-  compute(state, &out, need_tangent);
-  // compute() works on the virtual nodes of a smoothed segment; the chain
-  // rule through the constant map z = W y gives the real nodes' rows.
   const ContactSlave& s = pair_.slave(slave_);
-  if (!s.pairing.found()) return;
-  const MasterSegment& segment = pair_.segments().segment(s.pairing.segment);
-  if (segment.identity) return;
-  map_to_real_nodes(segment, out.residual);
-  if (need_tangent) map_to_real_nodes(segment, out.tangent);
+  if (!s.pairing.found() || (pair_.segments().segment(s.pairing.segment).identity && !s.handed_over)) {
+    compute(state, &out, need_tangent);  // the local unknowns are the dofs
+    return;
+  }
+  // compute() works on the virtual nodes of smoothed segments and, after a
+  // hand-over, on the committed segment's nodes as separate points; the
+  // chain rule through the constant map onto the dofs gives their rows.
+  const int n_mult = (s.normal_multiplier >= 0 ? 1 : 0) + (s.tangent_multiplier >= 0 ? 1 : 0);
+  const int m = pair_.segments().segment(s.pairing.segment).n_nodes;
+  const int m_c = s.handed_over ? pair_.segments().segment(s.committed_segment).n_nodes : 0;
+  const int n_virtual = 2 * (1 + m + m_c) + n_mult;
+  LocalSystem local;
+  local.reset(n_virtual);
+  compute(state, &local, need_tangent);
+  const Eigen::MatrixXd T = virtual_to_real(pair_, s, n_virtual);
+  out.residual.noalias() = T.transpose() * local.residual;
+  if (need_tangent) out.tangent.noalias() = T.transpose() * local.tangent * T;
 }
 
 ContactNodeValues ContactNode::values(const EvaluationState& state) const {

@@ -92,12 +92,25 @@ void ContactPair::set_pairing(ContactSlave& s, const ContactPairing& p) {
   s.dofs.clear();
   s.dofs.push_back(kDofsPerNode * s.node);
   s.dofs.push_back(kDofsPerNode * s.node + 1);
+  auto add_node = [&s](int node) {
+    for (std::size_t k = 0; k < s.dofs.size(); k += 2)
+      if (s.dofs[k] == kDofsPerNode * node) return;
+    s.dofs.push_back(kDofsPerNode * node);
+    s.dofs.push_back(kDofsPerNode * node + 1);
+  };
   if (p.found()) {
     const MasterSegment& m = segments_.segment(p.segment);
     for (int a = 0; a < m.n_nodes; ++a) {
       s.dofs.push_back(kDofsPerNode * m.nodes[static_cast<std::size_t>(a)]);
       s.dofs.push_back(kDofsPerNode * m.nodes[static_cast<std::size_t>(a)] + 1);
     }
+  }
+  // After a hand-over the slip is measured from a point of the committed
+  // segment, whose nodes then enter the tangent too.
+  s.handed_over = p.found() && mu() > 0 && s.committed_segment >= 0 && s.committed_segment != p.segment;
+  if (s.handed_over) {
+    const MasterSegment& c = segments_.segment(s.committed_segment);
+    for (int a = 0; a < c.n_nodes; ++a) add_node(c.nodes[static_cast<std::size_t>(a)]);
   }
   if (s.normal_multiplier >= 0) s.dofs.push_back(s.normal_multiplier);
   if (s.tangent_multiplier >= 0) s.dofs.push_back(s.tangent_multiplier);
@@ -179,11 +192,7 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
     }
     if (p.segment != s.pairing.segment) {
       repaired[i] = 1;
-      set_pairing(s, p);
-      changed = true;
       ++statistics_.repaired;
-    } else {
-      s.pairing = p;
     }
     if (p.found() && s.committed_segment < 0) {
       // First pairing: the slip is measured from the projection at the start of the increment.
@@ -191,6 +200,11 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
       s.committed_segment = p.segment;
       s.committed_xi = project(position(reference_, state.u_start, s.node), start).xi;
     }
+    // The dofs also change without a re-pairing when the committed segment
+    // changed at the last commit (a hand-over's extra nodes are dropped).
+    const std::vector<int> previous_dofs = std::move(s.dofs);
+    set_pairing(s, p);
+    if (s.dofs != previous_dofs) changed = true;
   }
 
   // Status of every node at this iterate; count changes, engage the chattering guard.

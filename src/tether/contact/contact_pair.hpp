@@ -65,7 +65,13 @@ struct ContactSlave {
   int normal_multiplier = -1;      ///< global index (HARD), -1 otherwise
   int tangent_multiplier = -1;     ///< global index (exact stick), -1 otherwise
   ContactPairing pairing;          ///< current pairing; segment -1: free
-  std::vector<int> dofs;           ///< [slave x, y, segment nodes x, y ..., λn?, λt?]
+  /// [slave x, y, segment nodes x, y ..., committed segment's other nodes x, y ..., λn?, λt?]
+  /// (the committed segment's nodes not already listed, with friction after a hand-over only).
+  std::vector<int> dofs;
+  /// With friction: paired with another segment than at the last converged
+  /// increment when the dofs were built, so the slip increment depends on the
+  /// committed segment's nodes too (they are in `dofs`).
+  bool handed_over = false;
   // History at the last converged increment.
   int committed_segment = -1;      ///< segment of the last converged pairing (-1: none)
   double committed_xi = 0;         ///< ξ* there

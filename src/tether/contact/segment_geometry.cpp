@@ -233,12 +233,34 @@ SegmentGeometry segment_geometry(const Eigen::Vector2d& slave, std::span<const E
   return g;
 }
 
-double slip_increment(const SegmentGeometry& geometry, double xi_old) {
-  return geometry.metric * (geometry.projection.xi - xi_old);
-}
-
-ContactVector slip_increment_gradient(const SegmentGeometry& geometry, double xi_old) {
-  return (geometry.projection.xi - xi_old) * geometry.metric_gradient + geometry.metric * geometry.xi_gradient;
+SlipIncrement slip_increment(const Eigen::Vector2d& slave, std::span<const Eigen::Vector2d> segment,
+                             const SegmentGeometry& geometry, std::span<const Eigen::Vector2d> committed_segment,
+                             double committed_xi, ContactDerivatives derivatives) {
+  check_segment(segment);
+  check_segment(committed_segment);
+  const int m = static_cast<int>(segment.size());
+  const int mc = static_cast<int>(committed_segment.size());
+  SlipIncrement s;
+  if (geometry.projection.status == ProjectionStatus::degenerate) {
+    if (derivatives != ContactDerivatives::none) s.gradient.setZero(2 * (1 + m + mc));
+    return s;
+  }
+  const SegmentPoint c = evaluate(committed_segment, committed_xi);
+  const SegmentPoint p = evaluate(segment, geometry.projection.xi);
+  // (y(ξ*) - ȳ_c)·t rather than the equal (y_s - ȳ_c)·t: exactly 0 when ξ*
+  // is ξ_c on the same segment (the start of an increment), so round-off does
+  // not decide between stick and slip there (|τ| = |λt| = μN).
+  s.value = (p.y - c.y).dot(geometry.tangent);
+  if (derivatives == ContactDerivatives::none) return s;
+  s.gradient.setZero(2 * (1 + m + mc));
+  // δt = n nᵀ δy' / |y'|, so d·δt = w·δy' with d = y_s - ȳ_c, w = (d·n / |y'|) n.
+  const Eigen::Vector2d d = slave - c.y;
+  const Eigen::Vector2d w = (d.dot(geometry.normal) / geometry.metric) * geometry.normal;
+  s.gradient.head(2 * (1 + m)) = w.dot(p.b) * geometry.xi_gradient;
+  s.gradient.head<2>() += geometry.tangent;
+  for (int a = 0; a < m; ++a) s.gradient.segment<2>(2 + 2 * a) += p.dN[a] * w;
+  for (int a = 0; a < mc; ++a) s.gradient.segment<2>(2 * (1 + m + a)) = -c.N[a] * geometry.tangent;
+  return s;
 }
 
 }  // namespace tether

@@ -118,15 +118,42 @@ SegmentGeometry segment_geometry(const Eigen::Vector2d& slave, std::span<const E
                                  ContactDerivatives derivatives = ContactDerivatives::hessian,
                                  const ProjectionOptions& options = {});
 
-/// Tangential slip increment in the current configuration,
-///     Δs = |y'(ξ*)| (ξ* - ξ*_old)    [length],
-/// positive along t: the convected-coordinate change scaled by the current
-/// metric at ξ* (exact for straight segments, first order in Δξ on curved
-/// ones). `xi_old` is ξ* of the last converged state on the SAME segment.
-double slip_increment(const SegmentGeometry& geometry, double xi_old);
+/// Largest number of unknowns of the slip increment: the slave node, the
+/// current segment and the segment of the last converged increment, 2 each.
+inline constexpr int kMaxSlipDofs = 2 * (1 + 2 * kMaxSegmentNodes);
+/// Gradient of the slip increment (no heap allocation).
+using SlipVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSlipDofs, 1>;
 
-/// ∂Δs/∂(contact dofs) at fixed xi_old: (ξ* - ξ_old) ∂|y'|/∂x + |y'| ∂ξ*/∂x.
-/// Needs geometry evaluated with at least ContactDerivatives::gradient.
-ContactVector slip_increment_gradient(const SegmentGeometry& geometry, double xi_old);
+/// Tangential slip increment since the last converged increment, in the
+/// current configuration,
+///     Δs = (y_s - ȳ_c)·t(ξ*),   ȳ_c = Σ_a N_a(ξ_c) z_c^a     [length],
+/// positive along t: the motion of the slave relative to the master point it
+/// was paired with at the last converged increment (ξ_c on the committed
+/// segment z_c, at the committed segment's CURRENT node positions), resolved
+/// along the current tangent. Since y_s - y(ξ*) = g n, Δs = (y(ξ*) - ȳ_c)·t,
+/// the form evaluated (exactly 0 when ξ* = ξ_c on the same segment, so that
+/// round-off does not decide stick or slip at the start of an increment);
+/// on a straight segment this is |y'| (ξ* - ξ_c), on curved ones it agrees
+/// with the arc length to second order in the slip. The committed segment may
+/// be the current one (then pass the same points) or another one (after a
+/// hand-over); nothing else about it is assumed.
+struct SlipIncrement {
+  double value = 0;  ///< Δs [length]
+  /// ∂Δs/∂[y_s, y^1..y^m, z_c^1..z_c^{m_c}] (2 (1 + m + m_c) entries), with
+  /// the variation of ξ* and t; filled unless ContactDerivatives::none is asked for.
+  SlipVector gradient;
+};
+
+/// Δs and its gradient for the slave at `slave`, whose closest point on
+/// `segment` is described by `geometry` (segment_geometry() of the same
+/// points, with at least ContactDerivatives::gradient when a gradient is
+/// asked for; ContactDerivatives::hessian is treated as gradient), and the
+/// committed point at ξ_c = `committed_xi` on `committed_segment` (2 or 3
+/// points). Gradient: δΔs = (δy_s - δȳ_c)·t + w·δy'(ξ*), w = ((y_s - ȳ_c)·n / |y'|) n,
+/// δy'(ξ*) = y''(ξ*) δξ* + Σ N_a'(ξ*) δy^a. Zero value and gradient on a degenerate segment.
+/// Throws std::invalid_argument unless both segments have 2 or 3 points.
+SlipIncrement slip_increment(const Eigen::Vector2d& slave, std::span<const Eigen::Vector2d> segment,
+                             const SegmentGeometry& geometry, std::span<const Eigen::Vector2d> committed_segment,
+                             double committed_xi, ContactDerivatives derivatives = ContactDerivatives::gradient);
 
 }  // namespace tether
