@@ -158,18 +158,20 @@ void check(const std::string& name, const std::string& options, double mu, doubl
 // last converged increment measures its slip from a point of the old
 // segment; at 1.25 segments per increment every contact node is handed over
 // in every increment; docs/theory/contact.md, "Friction"). Measured on the
-// 3 mm deck: order 2.05-3.03 in the 24 slide increments (before: 0.95-5.2,
-// median 1.34 over all increments). The order is checked in the slide step
-// only: in two of the four indentation increments a contact node changes
-// status in the iteration before the last, and the three-residual estimate
-// is then 1.34-1.36 (the same residuals before and after the change). The
-// reduction of the last iteration is checked everywhere (>= 20x; measured 53x).
+// 3 mm deck: order 1.86-3.77 in the 24 slide increments (before: 0.95-5.2;
+// median 1.34 over all increments, now 2.13). The order is checked in the
+// slide step only: three of the four indentation increments estimate
+// 0.77-1.36, before and after the change (increments 1 and 4: a node changes
+// status or is re-paired between the last three residuals; increment 2,
+// 30.9 -> 4.3e-2 -> 2.8e-4 N with a fixed active set: not explained, see
+// docs/verification_contact.md). The reduction of the last iteration is
+// checked everywhere (>= 20x; measured >= 154x, before 86x).
 constexpr LastIterations kFrictionLast{.max_reduction = 0.05, .min_order = 1.5, .order_step = 2};
 
 // 3 mm slide, 24 increments: 17 increments of steady sliding (slide >= 1 mm),
-// every slave node crosses 30 master segments. 4 580 dofs, 28 increments, 154
-// iterations, at most 7 per increment, no cut-back, Fx/|Fy| within 0.85 % of
-// mu; about 5 s in Release (docs/verification_contact.md).
+// every slave node crosses 30 master segments. 4 580 dofs, 28 increments, 145
+// iterations (before 148), at most 6 per increment, no cut-back, Fx/|Fy|
+// within 0.85 % of mu; about 4-9 s in Release (docs/verification_contact.md).
 TEST(Ironing, Cpe4FrictionRatioIsMu) {
   check("ironing_cpe4_mu03_slide3", "--mu 0.3 --slide 3 --slide-increments 24", 0.3, 3, 0.02, kFrictionLast);
 }
