@@ -6,7 +6,6 @@
 #include "tether/contact/pressure_overclosure.hpp"
 #include "tether/contact/segment_geometry.hpp"
 #include "tether/dofs/dof_map.hpp"
-#include "tether/fem/shape_functions.hpp"
 #include "tether/model/constraint_data.hpp"
 
 namespace tether {

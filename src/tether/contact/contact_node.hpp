@@ -5,7 +5,8 @@
 /// stick by a multiplier, or a stick penalty), with the consistent tangent of
 /// finite sliding.
 ///
-/// Local unknowns: [slave x, y, segment node 1 x, y, ..., λn (HARD), λt (exact
+/// Local unknowns: [slave x, y, segment node 1 x, y, ..., (with friction after
+/// a hand-over: the committed segment's other nodes), λn (HARD), λt (exact
 /// stick)]; a slave with no master segment keeps only its multipliers, driven
 /// to zero. Residual contributions (r = f_int - f_ext + ..., K = dr/du):
 ///
@@ -16,9 +17,11 @@
 ///             r_λt = Δs (stick: |λt + c Δs| < μN), -(λt - μN sgn(λt + cΔs))/c (slip),
 ///             -λt/c (open); penalty: T = return map of T_old + k Δs onto |T| <= μN.
 ///
-/// g is the normal gap (> 0 open), Δs the slip increment along the master
-/// tangent since the last converged increment, N >= 0 the normal force, c the
-/// pair's complementarity stiffness. Derivations: docs/theory/contact.md.
+/// g is the normal gap (> 0 open), Δs = (y_s - ȳ_c)·t the slip increment along
+/// the master tangent since the last converged increment (ȳ_c: the committed
+/// master point at current positions; slip_increment()), N >= 0 the normal
+/// force, c the pair's complementarity stiffness. Derivations:
+/// docs/theory/contact.md.
 
 #include <utility>
 
