@@ -331,7 +331,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     if (N > 0 && (std::abs(trial) <= mu * N || s.held_stick)) {
       T = trial;
       point.status = ContactStatus::Stick;
-      dT.head(ns) += k * grad_ds;
+      if (out) dT.head(ns) += k * grad_ds;  // the gradient exists only when asked for
       dT += ds * dk;
     } else if (N > 0) {
       const double sign = trial >= 0 ? 1.0 : -1.0;
