@@ -31,7 +31,7 @@ class ProgressObserver final : public AnalysisObserver {
     if (n.contact_closed >= 0)
       msg_.print("                  contact: {} closed, {} changed status, {} re-paired{}\n", n.contact_closed,
                  n.contact_changes, n.contact_repaired,
-                 n.contact_held > 0 ? fmt::format(", {} held by the chattering guard", n.contact_held) : "");
+                 n.contact_held > 0 ? fmt::format(", {} held by the contact guards", n.contact_held) : "");
   }
 
   void on_increment(const IncrementReport& r) override {

@@ -27,7 +27,7 @@ struct IterationNorms {
   int contact_closed = -1;    ///< slave nodes in contact
   int contact_changes = 0;    ///< nodes whose status (open/stick/slip) changed since the previous iteration
   int contact_repaired = 0;   ///< nodes paired with another master segment
-  int contact_held = 0;       ///< nodes held closed by the chattering guard
+  int contact_held = 0;       ///< nodes held by the contact guards (closed, in stick, on their segment)
 };
 
 class ConvergenceCriteria {

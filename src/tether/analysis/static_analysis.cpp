@@ -426,7 +426,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       }
       if (!again) break;
       observer_.on_message("converged state not accepted by " + iterating + " (augmented Lagrangian update or "
-                           "contact nodes released by the chattering guard): Newton pass " + std::to_string(pass + 2));
+                           "contact nodes released by a contact guard): Newton pass " + std::to_string(pass + 2));
     }
     summary.iterations += iterations;
 

@@ -1,6 +1,7 @@
 #include "tether/contact/contact_pair.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "tether/assembly/saved_state.hpp"
@@ -17,6 +18,14 @@ constexpr int kMaxReleases = 10;
 constexpr double kEndExtension = 0.05;
 /// Hand-over band in ξ (segment length 2) within which a slave keeps its segment during Newton.
 constexpr double kHandOverBand = 0.02;
+/// Returns to the segment left one iteration before after which the re-pairing guard holds a node
+/// (1 holds after A -> B -> A; 2, after A -> B -> A -> B, let a single Newton overshoot pass).
+constexpr int kMinReturns = 2;
+/// Band in ξ beyond which a node held by the re-pairing guard is released at convergence.
+constexpr double kReleaseBand = 0.5;
+/// Sine of the turn between two segments above which their join counts as a
+/// kink for the re-pairing guard (a smooth join gives round-off only).
+constexpr double kKinkSine = 1e-8;
 /// First value of a saved ContactPair state (restart).
 constexpr double kStateTag = 2001;
 
@@ -24,7 +33,42 @@ Eigen::Vector2d position(const std::vector<Eigen::Vector2d>& reference, const Ei
   return reference[static_cast<std::size_t>(node)] + Eigen::Vector2d(u[kDofsPerNode * node], u[kDofsPerNode * node + 1]);
 }
 
+/// Geometry of a slave point on segment `segment` of `surface` (points by
+/// the surface's indices), extended past the segment's ends.
+SegmentGeometry extended_geometry(const MasterSurface& surface, const std::vector<Eigen::Vector2d>& points, int segment,
+                                  const Eigen::Vector2d& slave) {
+  std::vector<Eigen::Vector2d> y;
+  for (int n : surface.segment_nodes(segment)) y.push_back(points[static_cast<std::size_t>(n)]);
+  return segment_geometry(slave, y, ContactDerivatives::none);
+}
+
+/// Sine of the turn from segment `a` into segment `b` at their shared corner
+/// node: > 0 where the surface is concave there (b leaves the corner into
+/// a's outer side, e.g. a V under a pressed node), < 0 where convex, 0 on a
+/// smooth join or when they share no corner.
+double concave_turn(const MasterSurface& surface, const std::vector<Eigen::Vector2d>& points, int a, int b) {
+  const auto nodes_a = surface.segment_nodes(a), nodes_b = surface.segment_nodes(b);
+  for (int ca = 0; ca < 2; ++ca)
+    for (int cb = 0; cb < 2; ++cb) {
+      if (nodes_a[ca] != nodes_b[cb]) continue;
+      const Eigen::Vector2d& corner = points[static_cast<std::size_t>(nodes_a[ca])];
+      const SegmentGeometry ga = extended_geometry(surface, points, a, corner);
+      const SegmentGeometry gb = extended_geometry(surface, points, b, corner);
+      const Eigen::Vector2d into_b = cb == 0 ? gb.tangent : Eigen::Vector2d(-gb.tangent);
+      return into_b.dot(ga.normal);
+    }
+  return 0;
+}
+
 }  // namespace
+
+const std::vector<Eigen::Vector2d>& ContactPair::search_points(const Eigen::VectorXd& u) {
+  for (const std::vector<int>& face : setup_.master_faces)
+    for (int n : face) positions_[static_cast<std::size_t>(n)] = position(reference_, u, n);
+  if (!segments_.smoothed()) return positions_;  // the search's points: the nodes, or
+  segments_.point_positions(positions_, points_);  // the nodes and the smoothed surface's points
+  return points_;
+}
 
 int ContactPair::multipliers_per_slave(const PressureOverclosure& law, const std::optional<FrictionData>& friction) {
   const bool exact_stick = friction && friction->mu > 0 && friction->stick_slope == 0 && friction->elastic_slip == 0;
@@ -122,21 +166,16 @@ void ContactPair::start_attempt(const EvaluationState& state) {
   releases_ = 0;
   uzawa_updates_ = 0;
   for (ContactSlave& s : slaves_)
-    s.status_changes = 0, s.held_closed = false, s.slip_direction = 0, s.direction_flips = 0, s.held_stick = false;
+    s.status_changes = 0, s.held_closed = false, s.slip_direction = 0, s.direction_flips = 0, s.held_stick = false,
+    s.left_segment = -1, s.held_segment = false, s.returns = 0;
 }
 
 bool ContactPair::update_connectivity(const EvaluationState& state) {
   const bool new_attempt = state.total_time != attempt_time_ || state.dt != attempt_dt_ || !searched_once_;
   if (new_attempt) start_attempt(state);
 
-  for (const std::vector<int>& face : setup_.master_faces)
-    for (int n : face) positions_[static_cast<std::size_t>(n)] = position(reference_, state.u, n);
   const MasterSurface& surface = segments_.surface();
-  const std::vector<Eigen::Vector2d>* points = &positions_;  // the search's points: the nodes, or
-  if (segments_.smoothed()) {                                 // the nodes and the smoothed surface's points
-    segments_.point_positions(positions_, points_);
-    points = &points_;
-  }
+  const std::vector<Eigen::Vector2d>* points = &search_points(state.u);
   std::vector<Eigen::Vector2d> slave_positions(slaves_.size());
   for (std::size_t i = 0; i < slaves_.size(); ++i) slave_positions[i] = position(reference_, state.u, slaves_[i].node);
 
@@ -176,20 +215,42 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
         p = ContactPairing{};
       }
     }
+    // The current pairing continued on its segment extended past its ends
+    // (no value when the projection fails).
+    const auto kept = [&]() -> std::optional<ContactPairing> {
+      const SegmentGeometry g = extended_geometry(surface, *points, s.pairing.segment, slave_positions[i]);
+      if (g.projection.status != ProjectionStatus::converged) return std::nullopt;
+      ContactPairing q = s.pairing;
+      q.xi = g.projection.xi;
+      q.gap = g.gap;
+      q.at_corner = false;
+      return q;
+    };
     // Hysteresis during Newton: a slave that crosses a master node by less
     // than kHandOverBand keeps its segment (extended past its end) until the
     // next increment, so it cannot flip between two segments meeting at a
     // kink, one per iteration.
     if (!new_attempt && p.segment != s.pairing.segment && s.pairing.found() && !s.pairing.at_corner) {
-      std::vector<Eigen::Vector2d> y;
-      for (int n : surface.segment_nodes(s.pairing.segment)) y.push_back((*points)[static_cast<std::size_t>(n)]);
-      const SegmentGeometry g = segment_geometry(slave_positions[i], y, ContactDerivatives::none);
-      if (g.projection.status == ProjectionStatus::converged && std::abs(g.projection.xi) <= 1 + kHandOverBand) {
-        p = s.pairing;
-        p.xi = g.projection.xi;
-        p.gap = g.gap;
+      const std::optional<ContactPairing> q = kept();
+      if (q && std::abs(q->xi) <= 1 + kHandOverBand) p = *q;
+    }
+    // Re-pairing guard: a slave returning across a concave kink to the
+    // segment it left at the previous iteration (A -> B -> A; neither
+    // extended segment alone has an equilibrium there, each one's extension
+    // penetrates the other) for the kMinReturns-th time in the attempt is
+    // held on its current segment, extended, until Newton converges;
+    // on_converged releases it for another pass if it then lies clearly
+    // outside. Smooth joins (SMOOTH) and convex kinks are left alone.
+    if (!new_attempt && s.pairing.found() &&
+        (s.held_segment || (p.found() && p.segment != s.pairing.segment && p.segment == s.left_segment &&
+                            concave_turn(surface, *points, s.pairing.segment, p.segment) > kKinkSine &&
+                            ++s.returns >= kMinReturns))) {
+      if (const std::optional<ContactPairing> q = kept()) {
+        p = *q;
+        s.held_segment = true;
       }
     }
+    s.left_segment = p.segment != s.pairing.segment ? s.pairing.segment : -1;
     if (p.segment != s.pairing.segment) {
       repaired[i] = 1;
       ++statistics_.repaired;
@@ -229,7 +290,7 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
     }
     s.status = s.held_closed ? (status == ContactStatus::Open ? ContactStatus::Slip : status) : status;
     if (s.status != ContactStatus::Open) ++statistics_.closed;
-    if (s.held_closed || s.held_stick) ++statistics_.held_closed;
+    if (s.held_closed || s.held_stick || s.held_segment) ++statistics_.held_closed;
   }
   return changed;
 }
@@ -254,6 +315,7 @@ Acceptance ContactPair::on_converged(const EvaluationState& state) {
     return Acceptance::Iterate;
   }
   bool released = false;
+  const std::vector<Eigen::Vector2d>& points = search_points(state.u);
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     ContactSlave& s = slaves_[i];
     // A node held closed must carry compression; in tension it should have opened.
@@ -271,9 +333,19 @@ Acceptance ContactPair::on_converged(const EvaluationState& state) {
         released = true;
       }
     }
+    // A node held on its segment must still project onto it (within kReleaseBand).
+    if (s.held_segment) {
+      const SegmentGeometry g = extended_geometry(segments_.surface(), points, s.pairing.segment,
+                                                 position(reference_, state.u, s.node));
+      if (g.projection.status != ProjectionStatus::converged || std::abs(g.projection.xi) > 1 + kReleaseBand) {
+        s.held_segment = false;
+        s.left_segment = -1;
+        released = true;
+      }
+    }
   }
   if (!released) {
-    for (ContactSlave& s : slaves_) s.held_closed = false, s.held_stick = false;
+    for (ContactSlave& s : slaves_) s.held_closed = false, s.held_stick = false, s.held_segment = false;
     return Acceptance::Accept;
   }
   if (++releases_ > kMaxReleases)

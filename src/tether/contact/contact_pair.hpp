@@ -86,6 +86,9 @@ struct ContactSlave {
   int slip_direction = 0;          ///< friction force direction at the last update_connectivity (slip only)
   int direction_flips = 0;         ///< reversals of the slip direction in this attempt
   bool held_stick = false;         ///< friction guard engaged: held in stick until Newton converges
+  int left_segment = -1;           ///< segment left by a re-pairing at the previous iteration (-1: none)
+  int returns = 0;                 ///< returns across a concave kink to left_segment in this attempt
+  bool held_segment = false;       ///< re-pairing guard engaged: kept on its segment (extended) until Newton converges
 };
 
 /// Work done by the last update_connectivity (for the iteration log).
@@ -93,7 +96,7 @@ struct ContactIterationStatistics {
   int closed = 0;         ///< slave nodes in contact (stick or slip)
   int status_changes = 0; ///< nodes whose status changed since the previous iteration
   int repaired = 0;       ///< nodes paired with another segment
-  int held_closed = 0;    ///< nodes held by the chattering guard (closed, or in stick)
+  int held_closed = 0;    ///< nodes held by a guard (closed, in stick, or on their segment)
 };
 
 class ContactPair final : public Contribution {
@@ -150,6 +153,8 @@ class ContactPair final : public Contribution {
   MasterSegments segments_;
   std::vector<ContactSlave> slaves_;
   std::vector<std::unique_ptr<ContactNode>> nodes_;
+  /// Updates positions_ (and points_ when smoothed) to `u`; returns the search's points.
+  const std::vector<Eigen::Vector2d>& search_points(const Eigen::VectorXd& u);
   std::vector<Eigen::Vector2d> positions_;  ///< current positions by node index (master nodes kept current)
   std::vector<Eigen::Vector2d> points_;     ///< current positions of the search's points (segments_.point_positions)
   bool searched_once_ = false;
