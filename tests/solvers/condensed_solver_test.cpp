@@ -7,6 +7,8 @@
 
 #include <random>
 
+#include <Eigen/LU>
+
 #include "tether/core/error.hpp"
 #include "tether/solvers/condensed_solver.hpp"
 
@@ -179,4 +181,48 @@ TEST(CondensedSolver, SingularInterfaceSystemGoesToTheFallback) {
   solver.analyze(s);
   EXPECT_THROW(solver.factorize(s, true), SolverError);
   EXPECT_EQ(solver.statistics().fallbacks, 1);
+}
+
+TEST(CondensedSolver, SiUnitsAndClosedHardMultipliersStillCondense) {
+  // Steel in Pa (E ~ 2e11) and closed HARD multipliers (zero diagonal, unit
+  // coupling): the equilibrated interface system must not look singular
+  // because of the units (its condition was ~1/E before the multiplier rows
+  // were scaled by their largest entry).
+  constexpr int kExtra = 4;
+  Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 9, true);
+  a.topLeftCorner(kBulk, kBulk) *= 2.1e11;
+  for (int k = 0; k < kExtra; ++k) a(kBulk + k, kBulk + k) = 0.0;
+  CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(kBulk + kExtra, 1, 2);
+  const Eigen::VectorXd x = solve_with(solver, sparse(a), true, b);
+  // The residual is dominated by round-off of the 1e11 entries; compare with
+  // a dense LU solve instead.
+  const Eigen::VectorXd reference = a.partialPivLu().solve(b);  // (full pivoting would call the multiplier pivots zero)
+  EXPECT_LT((x - reference).norm() / reference.norm(), 1e-8);
+  EXPECT_EQ(solver.statistics().fallbacks, 0);
+  EXPECT_EQ(solver.statistics().sparse_factorizations, 1);
+}
+
+TEST(CondensedSolver, UnsymmetricBulkCouplingUsesLu) {
+  // A_RI != A_IR^T (as a follower load would make it): the R entries are not
+  // symmetric, so A_RR is factorized LU and the Schur complement read in full.
+  constexpr int kExtra = 3;
+  Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 4, false);
+  const std::vector<int> surface = interface_equations(0);
+  for (int s : surface) a(s - kGrid, s) += 0.07;  // row in R (the grid row below), column in I
+  a(3, 4) += 0.05;                                // and one inside R
+  CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g;
+  Eigen::VectorXd b(a.rows());
+  for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = g(rng);
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::MatrixXd ak = k == 0 ? a : with_contact(a, kExtra, 8, false);
+    const Eigen::VectorXd x = solve_with(solver, sparse(ak), false, b);
+    EXPECT_LT(relative_error(ak, x, b), 1e-12) << solver.name();
+    EXPECT_NE(solver.name().find("LU"), std::string::npos) << solver.name();
+  }
+  EXPECT_EQ(solver.statistics().sparse_factorizations, 1);
+  EXPECT_EQ(solver.statistics().reuses, 1);
+  EXPECT_EQ(solver.statistics().fallbacks, 0);
 }

@@ -249,7 +249,10 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   // (CondensedSolver) while they are few; the pattern then holds them all
   // to all, so that re-pairing never rebuilds it.
   std::vector<int> interface;
-  if (options_.solver == SolverKind::Auto && options_.condense_contact && !disc.contact_pairs().empty()) {
+  // Not under NLGEOM: the bulk changes at every iteration there, and the
+  // reserved block would only add fill to the ordinary factorization.
+  if (options_.solver == SolverKind::Auto && options_.condense_contact && !step.nlgeom &&
+      !disc.contact_pairs().empty()) {
     interface = contact_equations(disc.contact_pairs(), dofs, equations);
     const auto m = static_cast<int>(interface.size());
     if (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()) interface.clear();
@@ -355,7 +358,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                           " full factorization(s); bulk factors " +
                           std::to_string(static_cast<long long>(c.factor_entries)) + " entries, " +
                           std::to_string(c.factor_memory_mb) + " MB" +
-                          (c.gave_up ? " (stopped condensing: the matrix changed outside the contact equations)"
+                          (c.gave_up ? " (stopped condensing: the matrix outside the contact equations changed twice in a row or is singular)"
                                      : ""));
     }
   } timing_guard{summary, newton, output_seconds, condensed, observer_, index + 1};

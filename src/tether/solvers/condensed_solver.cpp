@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 #include <string>
 
 #include "tether/core/error.hpp"
@@ -22,6 +23,8 @@ namespace {
 /// Reciprocal condition number of the equilibrated interface matrix below
 /// which it counts as singular and the fallback decides.
 constexpr double kSingularRcond = 1e-12;
+/// A diagonal below this fraction of the largest counts as absent for the scaling.
+constexpr double kNegligibleDiagonal = 1e-14;
 }  // namespace
 
 CondensedSolver::CondensedSolver(std::vector<int> interface, std::unique_ptr<LinearSolver> fallback)
@@ -99,11 +102,18 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
       statistics_.factor_entries = bulk_->factor_entries();
       statistics_.factor_memory_mb = bulk_->memory_mb();
     } catch (const SolverError&) {
-      return use_fallback(a, symmetric);  // A_RR singular: let the fallback decide and name it
+      // A_RR singular (or MUMPS failed): the fallback decides and names the
+      // equation; trying again at every iteration would only double the cost.
+      statistics_.gave_up = true;
+      bulk_ = std::make_unique<MumpsSchur>();
+      return use_fallback(a, symmetric);
     }
   }
 
-  // Dense interface matrix A_II + C, equilibrated by D = 1/sqrt|diag|.
+  // Dense interface matrix A_II + C, equilibrated: D (A_II + C) D with
+  // D = 1/sqrt|diag| on rows with a diagonal, and for rows without one (a
+  // closed HARD multiplier) 1/(largest entry of the row already scaled), so
+  // that the condition test does not depend on the units (1/(E t) otherwise).
   const auto m = static_cast<Eigen::Index>(interface_.size());
   Eigen::MatrixXd s = bulk_->schur();
   for (int j : interface_)
@@ -113,9 +123,22 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
         s(position_[static_cast<std::size_t>(i)], position_[static_cast<std::size_t>(j)]) += a.valuePtr()[k];
     }
   scale_.resize(m);
+  double largest_diagonal = 0;
+  for (Eigen::Index k = 0; k < m; ++k)
+    if (std::isfinite(s(k, k))) largest_diagonal = std::max(largest_diagonal, std::abs(s(k, k)));
+  std::vector<Eigen::Index> without_diagonal;
   for (Eigen::Index k = 0; k < m; ++k) {
     const double d = std::abs(s(k, k));
-    scale_[k] = d > 0 && std::isfinite(d) ? 1.0 / std::sqrt(d) : 1.0;
+    if (d > kNegligibleDiagonal * largest_diagonal && std::isfinite(d)) {
+      scale_[k] = 1.0 / std::sqrt(d);
+    } else {
+      scale_[k] = 0.0;
+      without_diagonal.push_back(k);
+    }
+  }
+  for (Eigen::Index k : without_diagonal) {
+    const double row = (s.row(k).cwiseAbs().transpose().cwiseProduct(scale_)).maxCoeff();
+    scale_[k] = row > 0 && std::isfinite(row) ? 1.0 / row : 1.0;
   }
   lu_ = scale_.asDiagonal() * s * scale_.asDiagonal();
   const int size = static_cast<int>(m);

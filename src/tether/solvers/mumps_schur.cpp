@@ -33,7 +33,8 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
     }
   for (int e : interface) rows.push_back(e + 1), cols.push_back(e + 1), source.push_back(-1);
 
-  const bool new_pattern = !mumps_ || symmetric != symmetric_ || n_ != a.cols() || rows != rows_ || cols != cols_;
+  const bool new_pattern =
+      !analysed_ || !mumps_ || symmetric != symmetric_ || n_ != a.cols() || rows != rows_ || cols != cols_;
   rows_ = std::move(rows), cols_ = std::move(cols), source_ = std::move(source);
   values_.resize(source_.size());
   const double* v = a.valuePtr();
@@ -55,7 +56,9 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
     id.listvar_schur = schur_list_.data();
     mumps_->icntl(19) = 1;  // Schur complement, centralized by rows on the host
     mumps_->icntl(7) = n_ > kMetisThreshold ? 5 : 0;
+    analysed_ = false;  // until the analysis succeeds (a failed one must be redone, not factorized)
     mumps_->run(1);
+    analysed_ = true;
   }
   DMUMPS_STRUC_C& id = mumps_->id;
   id.irn = rows_.data();  // the vectors were replaced above: MUMPS reads them again

@@ -73,6 +73,7 @@ class MumpsSchur {
   std::vector<int> source_;          ///< value-array index of each entry of `a`, -1 for an interface diagonal
   std::vector<double> values_;
   bool factorized_ = false;
+  bool analysed_ = false;            ///< the last analysis (job 1) succeeded
   std::vector<int> schur_list_;      ///< interface equations, 1-based
   std::vector<double> schur_rows_;   ///< MUMPS' Schur array (by rows)
   Eigen::MatrixXd schur_;
