@@ -34,17 +34,7 @@ namespace {
 constexpr double kSteady = 1.0;  ///< steady sliding from this slide distance [mm]
 
 fs::path generate(const std::string& name, const std::string& options) {
-  if (std::system("command -v python3 > /dev/null 2>&1 && command -v gmsh > /dev/null 2>&1") != 0)
-    throw std::runtime_error("skip");
-  const fs::path dir = fs::path(TETHER_BINARY_DIR) / "tests" / "verification" / "ironing";
-  fs::create_directories(dir);
-  const fs::path deck = dir / (name + ".inp");
-  if (!fs::exists(deck)) {
-    const std::string command = "python3 \"" + std::string(TETHER_SOURCE_DIR) + "/tools/make_ironing_deck.py\" " +
-                                options + " \"" + deck.string() + "\" > /dev/null";
-    if (std::system(command.c_str()) != 0) throw std::runtime_error("generator failed: " + command);
-  }
-  return deck;
+  return tether::verification::generated_deck("make_ironing_deck.py", "ironing", name, options);
 }
 
 /// What the test asks of the last Newton iterations of each converged increment.

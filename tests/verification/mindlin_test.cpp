@@ -55,17 +55,7 @@ Exact exact() {
 
 /// Generates the deck (cached in the build tree); throws "skip" without python3/gmsh.
 fs::path generate(const std::string& name, const std::string& options) {
-  if (std::system("command -v python3 > /dev/null 2>&1 && command -v gmsh > /dev/null 2>&1") != 0)
-    throw std::runtime_error("skip");
-  const fs::path dir = fs::path(TETHER_BINARY_DIR) / "tests" / "verification" / "mindlin";
-  fs::create_directories(dir);
-  const fs::path deck = dir / (name + ".inp");
-  if (!fs::exists(deck)) {
-    const std::string command = "python3 \"" + std::string(TETHER_SOURCE_DIR) + "/tools/make_mindlin_deck.py\" " +
-                                options + " \"" + deck.string() + "\" > /dev/null";
-    if (std::system(command.c_str()) != 0) throw std::runtime_error("generator failed: " + command);
-  }
-  return deck;
+  return tether::verification::generated_deck("make_mindlin_deck.py", "mindlin", name, options);
 }
 
 struct StickZone {

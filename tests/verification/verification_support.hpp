@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,6 +16,26 @@
 #include "analysis/run_deck.hpp"
 
 namespace tether::verification {
+
+/// Deck written by the generator tools/`tool` with `options` into
+/// <build>/tests/verification/`folder`/`name`.inp, once (cached); throws
+/// std::runtime_error("skip") without python3 and gmsh, and "generator
+/// failed: ..." when the tool fails.
+inline std::filesystem::path generated_deck(const std::string& tool, const std::string& folder,
+                                            const std::string& name, const std::string& options) {
+  namespace fs = std::filesystem;
+  if (std::system("command -v python3 > /dev/null 2>&1 && command -v gmsh > /dev/null 2>&1") != 0)
+    throw std::runtime_error("skip");
+  const fs::path dir = fs::path(TETHER_BINARY_DIR) / "tests" / "verification" / folder;
+  fs::create_directories(dir);
+  const fs::path deck = dir / (name + ".inp");
+  if (!fs::exists(deck)) {
+    const std::string command = "python3 \"" + std::string(TETHER_SOURCE_DIR) + "/tools/" + tool + "\" " + options +
+                                " \"" + deck.string() + "\" > /dev/null";
+    if (std::system(command.c_str()) != 0) throw std::runtime_error("generator failed: " + command);
+  }
+  return deck;
+}
 
 /// Path of a committed deck, e.g. deck_path("lame_cpe8_4x8").
 inline std::string deck_path(const std::string& name) {
