@@ -68,7 +68,7 @@ std::string restart_source(const Model& model, const std::string& deck, const st
 }
 
 int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
-        bool quiet, const std::string& restart) {
+        bool quiet, const std::string& restart, double memory_mb) {
   const auto t0 = std::chrono::steady_clock::now();
   const Model model = read_with_warnings(deck);
   const fs::path dir = output_dir.empty() ? fs::path(deck).parent_path() / fs::path(deck).stem() : fs::path(output_dir);
@@ -77,6 +77,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   AnalysisOptions options;
   options.solver = parse_solver_kind(solver);
   options.condense_contact = condense;
+  options.memory_budget_mb = memory_mb;
   Relay relay;
   std::unique_ptr<StaticAnalysis> analysis;
   const std::string restart_file = restart_source(model, deck, restart);
@@ -146,6 +147,7 @@ int main(int argc, char** argv) {
 
   std::string deck, output_dir, solver = "auto", restart;
   bool ascii = false, quiet = false, no_condense = false;
+  double memory_mb = 0;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
   run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
   run_cmd->add_option("-o,--output", output_dir, "Output directory (default: next to the deck, named after it)");
@@ -157,6 +159,11 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--no-condense", no_condense,
                     "With contact: factorize the whole matrix at every iteration instead of condensing it onto "
                     "the contact equations (for comparison; same answer)");
+  run_cmd->add_option("--memory", memory_mb,
+                      "Memory the run may use, in MB (e.g. 480, 2000): sparse factors that would not fit are kept "
+                      "on disk in the temporary directory ($TMPDIR) and read back at each solve (slower); "
+                      "default: no limit, everything in core")
+      ->check(CLI::PositiveNumber);
   run_cmd->add_flag("--ascii", ascii, "Write ASCII instead of binary VTU (for debugging)");
   run_cmd->add_flag("-q,--quiet", quiet, "Print nothing but errors");
   auto* check_cmd = app.add_subcommand("check", "Read and validate a deck without solving it");
@@ -176,7 +183,7 @@ int main(int argc, char** argv) {
       return kOk;
     }
     if (*check_cmd) return check(deck);
-    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart);
+    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb);
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInput;

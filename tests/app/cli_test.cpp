@@ -327,3 +327,24 @@ TEST(Cli, RestartFromAnotherModelOrADamagedFileIsRefused) {
             std::string::npos)
       << r.out;
 }
+
+TEST(Cli, MemoryBudgetKeepsTheAnswerAndRefusesNonsense) {
+  const fs::path dir = scratch("memory");
+  write(dir / "plate.inp", kGoodDeck);
+  const std::string deck = (dir / "plate.inp").string();
+  for (const char* bad : {"--memory 0", "--memory -5", "--memory lots"}) {
+    const auto r = tether("run " + deck + " " + bad + " -o " + (dir / "bad").string());
+    EXPECT_NE(r.code, 0) << bad;
+    EXPECT_NE(r.out.find("--memory"), std::string::npos) << bad << ": " << r.out;
+  }
+  // 1 MB: the MUMPS factors go out of core; the printed results are the same.
+  const auto in_core = tether("run " + deck + " --solver mumps -o " + (dir / "in").string());
+  const auto on_disk = tether("run " + deck + " --solver mumps --memory 1 -o " + (dir / "disk").string());
+  ASSERT_EQ(in_core.code, 0) << in_core.out;
+  ASSERT_EQ(on_disk.code, 0) << on_disk.out;
+  const auto read = [](const fs::path& p) {
+    std::ifstream f(p);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(read(dir / "in" / "plate.dat"), read(dir / "disk" / "plate.dat"));
+}

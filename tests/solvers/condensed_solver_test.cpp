@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <random>
+#include <string>
 
 #include <Eigen/LU>
 
@@ -225,4 +229,70 @@ TEST(CondensedSolver, UnsymmetricBulkCouplingUsesLu) {
   EXPECT_EQ(solver.statistics().sparse_factorizations, 1);
   EXPECT_EQ(solver.statistics().reuses, 1);
   EXPECT_EQ(solver.statistics().fallbacks, 0);
+}
+
+TEST(CondensedSolver, AnEntryMovedToAnotherColumnIsAChangeEvenWithEqualValues) {
+  // Two regular unsymmetric matrices whose R entries, read column by column,
+  // have the same rows and values in the same order; only where one column
+  // ends and the next begins differs: (1, 1) in the first is (1, 0) in the
+  // second. The solver must see a change (the column starts are compared),
+  // or it would reuse factors of the wrong matrix.
+  const auto matrix = [](bool moved) {
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(4, 4);
+    a(0, 0) = 4, a(0, 2) = 1, a(2, 1) = 3, a(2, 2) = 5, a(3, 3) = 1;  // equation 3: the interface
+    (moved ? a(1, 0) : a(1, 1)) = 2;
+    return a;
+  };
+  CondensedSolver solver({3}, make_linear_solver(SolverKind::Auto));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(4, 1, 4);
+  const auto passed = [](const Eigen::MatrixXd& a) {  // R entries as MUMPS reads them: rows and values
+    std::vector<std::pair<int, double>> out;
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i)
+        if ((i != 3 || j != 3) && a(i, j) != 0) out.emplace_back(i, a(i, j));
+    return out;
+  };
+  ASSERT_EQ(passed(matrix(false)), passed(matrix(true)));  // the premise of the test
+  const auto exact = [](const Eigen::MatrixXd& a) {  // no explicit zeros (unlike sparse())
+    SparseMatrix s = a.sparseView();
+    s.makeCompressed();
+    return s;
+  };
+  solve_with(solver, exact(matrix(false)), false, b);
+  const Eigen::VectorXd x = solve_with(solver, exact(matrix(true)), false, b);
+  EXPECT_LT(relative_error(matrix(true), x, b), 1e-12);
+  EXPECT_EQ(solver.statistics().sparse_factorizations, 2);
+  EXPECT_EQ(solver.statistics().reuses, 0);
+}
+
+TEST(CondensedSolver, OutOfCoreFactorsUnderAMemoryBudgetGiveTheSameSolution) {
+  // A 1 MB budget is below any process' resident size: the bulk factors go to
+  // disk (MUMPS ICNTL(22), files tether<pid>_* in the temporary directory);
+  // the solution must match the in-core one, and the files must be gone
+  // once the solver is.
+  constexpr int kExtra = 4;
+  const Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 9, true);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(kBulk + kExtra, -2, 1);
+  const std::string prefix = "tether" + std::to_string(static_cast<long>(getpid())) + "_";
+  const auto scratch_files = [&] {
+    int n = 0;
+    for (const auto& f : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+      n += f.path().filename().string().rfind(prefix, 0) == 0;
+    return n;
+  };
+  CondensedSolver in_core(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  const Eigen::VectorXd x0 = solve_with(in_core, sparse(a), true, b);
+  EXPECT_FALSE(in_core.statistics().out_of_core);
+  {
+    CondensedSolver on_disk(interface_equations(kExtra), make_linear_solver(SolverKind::Auto), 1.0);
+    const Eigen::VectorXd x1 = solve_with(on_disk, sparse(a), true, b);
+    Eigen::VectorXd x2;
+    on_disk.solve(b, x2);  // a second solve reads the factors back again
+    EXPECT_TRUE(on_disk.statistics().out_of_core);
+    EXPECT_GT(scratch_files(), 0);
+    EXPECT_LT(relative_error(a, x1, b), 1e-12);
+    EXPECT_LT((x1 - x0).norm(), 1e-12 * x0.norm());
+    EXPECT_LT((x2 - x1).norm(), 1e-14 * x1.norm());
+  }
+  EXPECT_EQ(scratch_files(), 0);
 }

@@ -124,3 +124,18 @@ TEST(LinearSolver, MumpsNamesTheRedundantConstraintRow) {
     EXPECT_TRUE(e.equation() == 2 || e.equation() == 3) << e.what() << " at " << e.equation();
   }
 }
+
+TEST(LinearSolver, MumpsOutOfCoreUnderAMemoryBudgetGivesTheSameSolution) {
+  // A 1 MB budget: the factors go to disk. Same answer as in core.
+  const SparseMatrix a = laplacian(300, 1.0);
+  const Eigen::VectorXd x_exact = Eigen::VectorXd::LinSpaced(300, -1, 3);
+  const Eigen::VectorXd b = a * x_exact;
+  for (double budget : {0.0, 1.0}) {
+    auto solver = make_linear_solver(SolverKind::Mumps, budget);
+    solver->analyze(a);
+    solver->factorize(a, true);
+    Eigen::VectorXd x;
+    solver->solve(b, x);
+    EXPECT_LT((x - x_exact).norm(), 1e-10 * x_exact.norm()) << "budget " << budget;
+  }
+}

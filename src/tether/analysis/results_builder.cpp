@@ -60,22 +60,22 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   const auto& elements = discretization.elements();
   const int n_elements = static_cast<int>(elements.size());
   r.points.resize(n_elements);
-  std::vector<std::vector<Tensor4>> element_stress(n_elements), element_strain(n_elements);
 #pragma omp parallel for schedule(dynamic, 256) if (n_elements >= 2048)
-  for (int e = 0; e < n_elements; ++e) {
-    elements[e]->point_values(state, r.points[e]);
-    elements[e]->extrapolate_to_nodes(r.points[e], element_stress[e], element_strain[e]);
-  }
+  for (int e = 0; e < n_elements; ++e) elements[e]->point_values(state, r.points[e]);
 
+  // Nodal values: the average of each element's extrapolation, accumulated
+  // element by element (one element's extrapolation alive at a time).
   r.nodal_stress.assign(n_nodes, Tensor4{});
   r.nodal_strain.assign(n_nodes, Tensor4{});
   std::vector<int> count(n_nodes, 0);
+  std::vector<Tensor4> element_stress, element_strain;
   for (int e = 0; e < n_elements; ++e) {
+    elements[e]->extrapolate_to_nodes(r.points[e], element_stress, element_strain);
     const auto& nodes = elements[e]->nodes();
     for (std::size_t a = 0; a < nodes.size(); ++a) {
       for (int k = 0; k < 4; ++k) {
-        r.nodal_stress[nodes[a]][k] += element_stress[e][a][k];
-        r.nodal_strain[nodes[a]][k] += element_strain[e][a][k];
+        r.nodal_stress[nodes[a]][k] += element_stress[a][k];
+        r.nodal_strain[nodes[a]][k] += element_strain[a][k];
       }
       ++count[nodes[a]];
     }

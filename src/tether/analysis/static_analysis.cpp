@@ -259,10 +259,10 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   }
   Assembler assembler(contributions, std::move(equations), interface);
   check_constraints(disc, assembler.equations(), EvaluationState{u_, u_, 0, total_time_, 0, step.nlgeom});
-  std::unique_ptr<LinearSolver> solver = make_linear_solver(options_.solver);
+  std::unique_ptr<LinearSolver> solver = make_linear_solver(options_.solver, options_.memory_budget_mb);
   const CondensedSolver* condensed = nullptr;
   if (!interface.empty()) {
-    auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver));
+    auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver), options_.memory_budget_mb);
     condensed = c.get();
     solver = std::move(c);
   }
@@ -357,7 +357,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                           std::to_string(c.reuses) + " reuse(s), " + std::to_string(c.fallbacks) +
                           " full factorization(s); bulk factors " +
                           std::to_string(static_cast<long long>(c.factor_entries)) + " entries, " +
-                          std::to_string(c.factor_memory_mb) + " MB" +
+                          std::to_string(c.factor_memory_mb) + " MB" + (c.out_of_core ? " in core, the factors on disk" : "") +
                           (c.gave_up ? " (stopped condensing: the matrix outside the contact equations changed twice in a row or is singular)"
                                      : ""));
     }

@@ -27,6 +27,9 @@ struct AnalysisOptions {
   /// (CondensedSolver; docs/theory/condensation.md). Off: every Newton
   /// iteration factorizes the whole matrix.
   bool condense_contact = true;
+  /// Memory the run may use [MB] (`tether run --memory`), 0 for no limit:
+  /// sparse MUMPS factors that would not fit are kept out of core.
+  double memory_budget_mb = 0;
   /// Tests of restart: stop (not completed) after this many converged
   /// increments of this run, as if the run had been killed there; 0 = never.
   int stop_after_increments = 0;

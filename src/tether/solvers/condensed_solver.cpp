@@ -27,8 +27,10 @@ constexpr double kSingularRcond = 1e-12;
 constexpr double kNegligibleDiagonal = 1e-14;
 }  // namespace
 
-CondensedSolver::CondensedSolver(std::vector<int> interface, std::unique_ptr<LinearSolver> fallback)
+CondensedSolver::CondensedSolver(std::vector<int> interface, std::unique_ptr<LinearSolver> fallback,
+                                 double memory_budget_mb)
     : interface_(std::move(interface)), fallback_(std::move(fallback)), bulk_(std::make_unique<MumpsSchur>()) {
+  bulk_->set_memory_budget(memory_budget_mb);
   std::sort(interface_.begin(), interface_.end());
   interface_.erase(std::unique(interface_.begin(), interface_.end()), interface_.end());
   statistics_.interface_equations = static_cast<int>(interface_.size());
@@ -101,6 +103,7 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
       ++statistics_.sparse_factorizations;
       statistics_.factor_entries = bulk_->factor_entries();
       statistics_.factor_memory_mb = bulk_->memory_mb();
+      statistics_.out_of_core = bulk_->out_of_core();
     } catch (const SolverError&) {
       // A_RR singular (or MUMPS failed): the fallback decides and names the
       // equation; trying again at every iteration would only double the cost.

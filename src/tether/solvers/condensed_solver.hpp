@@ -38,6 +38,7 @@ struct CondensationStatistics {
   bool gave_up = false;           ///< stopped condensing (R entries changed twice in a row)
   double factor_entries = 0;      ///< entries of the last sparse factors (MUMPS INFOG(29))
   int factor_memory_mb = 0;       ///< MUMPS' memory for the last factorization [MB] (INFOG(22))
+  bool out_of_core = false;       ///< the last sparse factors were kept on disk (memory budget)
 };
 
 class CondensedSolver final : public LinearSolver {
@@ -45,7 +46,9 @@ class CondensedSolver final : public LinearSolver {
   /// `interface`: free equations (any order, duplicates allowed) that hold all
   /// the entries expected to change between factorizations. `fallback`:
   /// the solver used when condensation does not apply.
-  CondensedSolver(std::vector<int> interface, std::unique_ptr<LinearSolver> fallback);
+  /// `memory_budget_mb`: memory the process may use [MB], 0 for no limit;
+  /// the bulk factors go out of core when they would not fit (MumpsSchur::set_memory_budget).
+  CondensedSolver(std::vector<int> interface, std::unique_ptr<LinearSolver> fallback, double memory_budget_mb = 0);
   ~CondensedSolver() override;
 
   void analyze(const SparseMatrix& a) override;

@@ -32,6 +32,7 @@ bool has_nonpositive_diagonal(const SparseMatrix& a) {
 /// choice sticks until the pattern changes. Unsymmetric systems: UMFPACK.
 class AutoSolver final : public LinearSolver {
  public:
+  explicit AutoSolver(double memory_budget_mb) { mumps_.set_memory_budget(memory_budget_mb); }
   void analyze(const SparseMatrix& a) override {
     cholmod_failed_ = mumps_failed_ = false;
     cholmod_ready_ = umfpack_ready_ = mumps_ready_ = false;
@@ -96,15 +97,19 @@ SolverKind parse_solver_kind(const std::string& name) {
                               "' (expected auto, umfpack, cholmod, mumps or sparselu)");
 }
 
-std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind) {
+std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind, double memory_budget_mb) {
   switch (kind) {
     case SolverKind::Umfpack: return std::make_unique<UmfpackSolver>();
     case SolverKind::Cholmod: return std::make_unique<CholmodSolver>();
     case SolverKind::SparseLU: return std::make_unique<SparseLuSolver>();
-    case SolverKind::Mumps: return std::make_unique<MumpsSolver>();
+    case SolverKind::Mumps: {
+      auto mumps = std::make_unique<MumpsSolver>();
+      mumps->set_memory_budget(memory_budget_mb);
+      return mumps;
+    }
     case SolverKind::Auto: break;
   }
-  return std::make_unique<AutoSolver>();
+  return std::make_unique<AutoSolver>(memory_budget_mb);
 }
 
 }  // namespace tether

@@ -48,7 +48,10 @@ class LinearSolver {
   [[nodiscard]] virtual std::string name() const = 0;
 };
 
-/// Creates a solver of the given kind.
-std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind = SolverKind::Auto);
+/// Creates a solver of the given kind. `memory_budget_mb`: memory the whole
+/// process may use [MB], 0 for no limit; MUMPS factorizations that would not
+/// fit keep their factors out of core (on disk, read back at each solve).
+/// The other solvers ignore it.
+std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind = SolverKind::Auto, double memory_budget_mb = 0);
 
 }  // namespace tether

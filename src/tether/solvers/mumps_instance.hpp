@@ -7,6 +7,11 @@
 
 #include <dmumps_c.h>
 
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "tether/core/error.hpp"
@@ -39,6 +44,27 @@ struct MumpsInstance {
 
   int& icntl(int i) { return id.icntl[i - 1]; }
   [[nodiscard]] int infog(int i) const { return id.infog[i - 1]; }
+
+  /// Resident memory of this process now [MB] (Linux /proc; 0 when unknown).
+  static double resident_mb() {
+    std::ifstream statm("/proc/self/statm");
+    long pages_total = 0, pages_resident = 0;
+    if (!(statm >> pages_total >> pages_resident)) return 0;
+    return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
+  }
+
+  /// Between an analysis and a factorization: keeps the factors in core
+  /// unless MUMPS' estimate for an in-core factorization (INFOG(17) [MB])
+  /// exceeds what the process leaves of `budget_mb` (0: no limit); then they
+  /// go out of core (ICNTL(22) = 1) to files in the temporary directory
+  /// ($TMPDIR, else /tmp), which MUMPS deletes when the instance ends.
+  void plan_memory(double budget_mb) {
+    icntl(22) = 0;
+    if (budget_mb <= 0 || infog(17) <= budget_mb - resident_mb()) return;
+    icntl(22) = 1;
+    std::snprintf(id.ooc_tmpdir, sizeof id.ooc_tmpdir, "%s", std::filesystem::temp_directory_path().c_str());
+    std::snprintf(id.ooc_prefix, sizeof id.ooc_prefix, "tether%ld_", static_cast<long>(getpid()));
+  }
 
   /// After a factorization: throws SolverError naming the first equation
   /// (0-based) with a null pivot when MUMPS found any (ICNTL(24) = 1).

@@ -13,33 +13,56 @@ constexpr Eigen::Index kMetisThreshold = 100000;  ///< as MumpsSolver: METIS abo
 MumpsSchur::MumpsSchur() = default;
 MumpsSchur::~MumpsSchur() = default;
 
+namespace {
+
+/// Calls `f(i, j, k)` for each entry of `a` passed to MUMPS, column by column:
+/// row i, column j, value index k. Skips the entries with both row and
+/// column in the interface, and the upper triangle when `symmetric`.
+template <class F>
+void for_each_passed(const SparseMatrix& a, const std::vector<char>& in_interface, bool symmetric, F&& f) {
+  for (Eigen::Index j = 0; j < a.cols(); ++j)
+    for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
+      const int i = a.innerIndexPtr()[k];
+      if (symmetric && i < j) continue;
+      if (in_interface[static_cast<std::size_t>(i)] && in_interface[static_cast<std::size_t>(j)]) continue;
+      f(i, static_cast<int>(j), k);
+    }
+}
+
+}  // namespace
+
 void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interface,
                            const std::vector<char>& in_interface, bool symmetric) {
   if (!a.isCompressed() || a.rows() != a.cols()) throw SolverError("MUMPS Schur: square compressed matrix expected");
   const Eigen::Index m = static_cast<Eigen::Index>(interface.size());
   // The entries MUMPS sees: every one with a row or column in R (lower
   // triangle when symmetric), then an explicit zero diagonal for each
-  // interface equation so that it belongs to the pattern.
-  std::vector<int> rows, cols, source;
+  // interface equation so that it belongs to the pattern. Kept between
+  // factorizations as rows and values plus the start of each column (12
+  // bytes an entry); the column indices MUMPS also reads are built only
+  // for the duration of its analysis and factorization.
+  std::vector<int> rows, column_start(static_cast<std::size_t>(a.cols()) + 2, 0);
   rows.reserve(static_cast<std::size_t>(a.nonZeros()) / (symmetric ? 2 : 1) + interface.size());
-  cols.reserve(rows.capacity());
-  source.reserve(rows.capacity());
+  values_.clear();
+  values_.reserve(rows.capacity());
+  for_each_passed(a, in_interface, symmetric, [&](int i, int j, int k) {
+    rows.push_back(i + 1), values_.push_back(a.valuePtr()[k]);
+    ++column_start[static_cast<std::size_t>(j) + 1];
+  });
   for (Eigen::Index j = 0; j < a.cols(); ++j)
-    for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
-      const int i = a.innerIndexPtr()[k];
-      if (symmetric && i < j) continue;
-      if (in_interface[static_cast<std::size_t>(i)] && in_interface[static_cast<std::size_t>(j)]) continue;
-      rows.push_back(i + 1), cols.push_back(static_cast<int>(j) + 1), source.push_back(k);
-    }
-  for (int e : interface) rows.push_back(e + 1), cols.push_back(e + 1), source.push_back(-1);
+    column_start[static_cast<std::size_t>(j) + 1] += column_start[static_cast<std::size_t>(j)];
+  column_start.back() = column_start[static_cast<std::size_t>(a.cols())] + static_cast<int>(m);  // the interface diagonals
+  for (int e : interface) rows.push_back(e + 1), values_.push_back(0.0);
 
-  const bool new_pattern =
-      !analysed_ || !mumps_ || symmetric != symmetric_ || n_ != a.cols() || rows != rows_ || cols != cols_;
-  rows_ = std::move(rows), cols_ = std::move(cols), source_ = std::move(source);
-  values_.resize(source_.size());
-  const double* v = a.valuePtr();
-  for (std::size_t e = 0; e < source_.size(); ++e) values_[e] = source_[e] >= 0 ? v[source_[e]] : 0.0;
+  const bool new_pattern = !analysed_ || !mumps_ || symmetric != symmetric_ || n_ != a.cols() || rows != rows_ ||
+                           column_start != column_start_;
+  rows_ = std::move(rows), column_start_ = std::move(column_start);
 
+  std::vector<int> cols(rows_.size());
+  for (Eigen::Index j = 0; j < a.cols(); ++j)
+    std::fill(cols.begin() + column_start_[static_cast<std::size_t>(j)],
+              cols.begin() + column_start_[static_cast<std::size_t>(j) + 1], static_cast<int>(j) + 1);
+  std::copy(rows_.end() - m, rows_.end(), cols.end() - m);
   if (new_pattern) {
     if (!mumps_ || symmetric != symmetric_) mumps_ = std::make_unique<detail::MumpsInstance>(symmetric ? 2 : 0);
     symmetric_ = symmetric;
@@ -50,7 +73,7 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
     id.n = static_cast<int>(n_);
     id.nnz = static_cast<MUMPS_INT8>(rows_.size());
     id.irn = rows_.data();
-    id.jcn = cols_.data();
+    id.jcn = cols.data();
     id.a = values_.data();
     id.size_schur = static_cast<int>(m);
     id.listvar_schur = schur_list_.data();
@@ -62,18 +85,22 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   }
   DMUMPS_STRUC_C& id = mumps_->id;
   id.irn = rows_.data();  // the vectors were replaced above: MUMPS reads them again
-  id.jcn = cols_.data();
+  id.jcn = cols.data();
   id.a = values_.data();
   schur_rows_.assign(static_cast<std::size_t>(m * m), 0.0);
   id.schur = schur_rows_.data();
   id.schur_lld = static_cast<int>(m);
   reduced_ready_ = false;
   factorized_ = false;
+  mumps_->plan_memory(memory_budget_mb_);
   mumps_->run(2);
+  id.jcn = nullptr;  // freed below; solves do not read the matrix
+  cols = {};
   mumps_->throw_if_null_pivots();
   factorized_ = true;
   factor_entries_ = mumps_->infog(29) >= 0 ? mumps_->infog(29) : -1e6 * mumps_->infog(29);
   memory_mb_ = mumps_->infog(22);
+  out_of_core_ = mumps_->icntl(22) == 1;
   // By rows: entry (i, j) at i m + j. A symmetric factorization fills the
   // lower triangle (j <= i) only; mirror it.
   schur_.resize(m, m);
@@ -85,17 +112,21 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
 
 bool MumpsSchur::unchanged(const SparseMatrix& a, const std::vector<char>& in_interface) const {
   if (!factorized_ || a.cols() != n_ || !a.isCompressed()) return false;
+  const std::size_t outer = rows_.size() - schur_list_.size();
   std::size_t e = 0;
-  const std::size_t outer = source_.size() - schur_list_.size();
-  for (Eigen::Index j = 0; j < a.cols(); ++j)
-    for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
-      const int i = a.innerIndexPtr()[k];
-      if (symmetric_ && i < j) continue;
-      if (in_interface[static_cast<std::size_t>(i)] && in_interface[static_cast<std::size_t>(j)]) continue;
-      if (e >= outer || rows_[e] != i + 1 || cols_[e] != j + 1 || values_[e] != a.valuePtr()[k]) return false;
-      ++e;
+  bool same = true;
+  Eigen::Index column = -1;
+  for_each_passed(a, in_interface, symmetric_, [&](int i, int j, int k) {
+    if (!same) return;
+    if (j != column) {  // a column's first passed entry: the earlier columns must have ended here
+      for (Eigen::Index c = column + 1; c <= j; ++c)
+        if (column_start_[static_cast<std::size_t>(c)] != static_cast<int>(e)) same = false;
+      column = j;
     }
-  return e == outer;
+    if (e >= outer || rows_[e] != i + 1 || values_[e] != a.valuePtr()[k]) same = false;
+    ++e;
+  });
+  return same && e == outer;
 }
 
 void MumpsSchur::run_schur_solve(int phase) {

@@ -63,15 +63,25 @@ class MumpsSchur {
   [[nodiscard]] double factor_entries() const { return factor_entries_; }
   [[nodiscard]] int memory_mb() const { return memory_mb_; }
 
+  /// Memory the whole process may use [MB], 0 for no limit. When MUMPS'
+  /// estimate for an in-core factorization does not fit in what the process
+  /// leaves of it, the factors are written out of core (MUMPS ICNTL(22), in
+  /// the temporary directory) at the price of reading them back at each solve.
+  void set_memory_budget(double mb) { memory_budget_mb_ = mb; }
+  /// The last factorization kept its factors out of core.
+  [[nodiscard]] bool out_of_core() const { return out_of_core_; }
+
  private:
   /// Solve phase with ICNTL(26) = `phase` (1 condensation, 2 expansion) on rhs_ and reduced_.
   void run_schur_solve(int phase);
 
   std::unique_ptr<detail::MumpsInstance> mumps_;
   bool symmetric_ = false;
-  std::vector<int> rows_, cols_;     ///< coordinates passed to MUMPS, 1-based
-  std::vector<int> source_;          ///< value-array index of each entry of `a`, -1 for an interface diagonal
-  std::vector<double> values_;
+  std::vector<int> rows_;            ///< row of each entry passed to MUMPS, 1-based, column by column
+  std::vector<int> column_start_;    ///< first entry of each column in rows_/values_ (n + 1 of them, then the end)
+  std::vector<double> values_;       ///< the entries factorized last
+  double memory_budget_mb_ = 0;      ///< see set_memory_budget()
+  bool out_of_core_ = false;
   bool factorized_ = false;
   bool analysed_ = false;            ///< the last analysis (job 1) succeeded
   std::vector<int> schur_list_;      ///< interface equations, 1-based

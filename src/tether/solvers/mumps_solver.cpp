@@ -50,6 +50,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, bool /*symmetric*/) {
   DMUMPS_STRUC_C& id = mumps_->id;
   id.a = values_.data();
   factorized_ = false;
+  mumps_->plan_memory(memory_budget_mb_);
   mumps_->run(2);
   mumps_->throw_if_null_pivots();
   factorized_ = true;

@@ -29,6 +29,10 @@ class MumpsSolver final : public LinearSolver {
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   [[nodiscard]] std::string name() const override { return "MUMPS LDLT"; }
 
+  /// Memory the process may use [MB], 0 for no limit: beyond it the factors
+  /// go out of core (see MumpsSchur::set_memory_budget).
+  void set_memory_budget(double mb) { memory_budget_mb_ = mb; }
+
  private:
   struct Instance;
   std::unique_ptr<Instance> mumps_;
@@ -37,6 +41,7 @@ class MumpsSolver final : public LinearSolver {
   std::vector<double> values_;
   Eigen::Index n_ = 0, nnz_ = 0;       ///< pattern analysed (size and entries of the full matrix)
   bool factorized_ = false;
+  double memory_budget_mb_ = 0;
 };
 
 }  // namespace tether
