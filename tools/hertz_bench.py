@@ -189,6 +189,8 @@ def run_code(code, deck, work, args):
     wait_for_load(args.wait_load, args.wait_max)
     if code == "ccx":
         cmd = ["timeout", str(int(args.timeout) + 10), args.ccx, "-i", "hertz"]
+    elif code == "tether-budget":
+        cmd = [args.tether, "run", "hertz.inp", "-o", d, "-q", "--memory", f"{args.tether_memory:g}"]
     else:
         cmd = [args.tether, "run", "hertz.inp", "-o", d, "-q"]
     run = run_timed(cmd, d, args.timeout, env)
@@ -333,6 +335,9 @@ def main(argv=None):
                     help="largest target size run in ccx (default 230k: ~260 s, 3.9 GB; 1M needs far more)")
     ap.add_argument("--tether", default=os.path.join(ROOT, "build", "bin", "tether"))
     ap.add_argument("--ccx", default="ccx")
+    ap.add_argument("--tether-memory", type=float, metavar="MB",
+                    help="also run tether with --memory MB (code 'tether-budget': MUMPS factors out of core "
+                         "when they would not fit)")
     ap.add_argument("--timeout", type=float, default=3600, help="seconds per run (default 3600)")
     ap.add_argument("--threads", type=int, default=1, help="OMP_NUM_THREADS for both codes (default 1)")
     ap.add_argument("--increments", type=int, default=10, help="load increments (make_hertz_deck.py, default 10)")
@@ -361,8 +366,12 @@ def main(argv=None):
     except argparse.ArgumentTypeError as e:
         ap.error(str(e))
     codes = [c.strip() for c in args.codes.split(",") if c.strip()]
-    if any(c not in ("ccx", "tether") for c in codes):
-        ap.error("--codes: ccx and/or tether")
+    if args.tether_memory and "tether-budget" not in codes:
+        codes.append("tether-budget")
+    if any(c not in ("ccx", "tether", "tether-budget") for c in codes):
+        ap.error("--codes: ccx, tether and/or tether-budget (the last needs --tether-memory)")
+    if "tether-budget" in codes and not args.tether_memory:
+        ap.error("code tether-budget needs --tether-memory MB")
     args.tether = os.path.abspath(args.tether)
     meta = {"date": datetime.datetime.now().astimezone().isoformat(timespec="seconds"),
             "command": "tools/hertz_bench.py " + " ".join(argv if argv is not None else sys.argv[1:]),
@@ -384,7 +393,7 @@ def main(argv=None):
                 row.update(status="failed", message=f"'{args.ccx}' not found")
             elif code == "ccx" and make_hertz_deck.parse_count(case["size"]) > args.ccx_max:
                 row.update(status="skipped", message=f"above --ccx-max {args.ccx_max}")
-            elif code == "tether" and not os.access(args.tether, os.X_OK):
+            elif code.startswith("tether") and not os.access(args.tether, os.X_OK):
                 row.update(status="failed", message=f"{args.tether} not found (build it: see README)")
             else:
                 print(f"   {code} ...", end="", flush=True)

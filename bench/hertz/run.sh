@@ -10,6 +10,8 @@
 # Environment:
 #   SIZES="2k 25k 230k 1M"   cases when none are given
 #   CODES=ccx,tether         which codes to run
+#   TETHER_MEMORY=           e.g. 480: also run tether with --memory 480 (row "tether-budget":
+#                            MUMPS factors out of core when they would not fit in 480 MB)
 #   CCX_MAX=230k             largest size run in ccx (230k: ~260 s and 3.9 GB of memory;
 #                            1M needs several times that: raise it only on a free machine)
 #   WORK=/tmp/hertz_bench    decks and run directories (kept for inspection)
@@ -45,6 +47,9 @@ args=(--codes "${CODES:-ccx,tether}" --ccx-max "${CCX_MAX:-230k}" --workdir "${W
       --results "${RESULTS:-$here/results.md}" --json "${WORK:-/tmp/hertz_bench}/results.json"
       --tether "$tether" --timeout "${TIMEOUT:-3600}" --threads "${THREADS:-1}"
       --increments "${INCREMENTS:-10}")
+if [[ -n ${TETHER_MEMORY:-} ]]; then
+  args+=(--tether-memory "$TETHER_MEMORY")
+fi
 if [[ -n ${WAIT_LOAD:-} ]]; then
   args+=(--wait-load "$WAIT_LOAD" --wait-max "${WAIT_MAX:-900}")
 fi
