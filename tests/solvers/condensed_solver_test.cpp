@@ -296,3 +296,17 @@ TEST(CondensedSolver, OutOfCoreFactorsUnderAMemoryBudgetGiveTheSameSolution) {
   }
   EXPECT_EQ(scratch_files(), 0);
 }
+
+TEST(CondensedSolver, AnEntryAboveTheDiagonalWithoutItsMirrorMakesTheBulkUnsymmetric) {
+  // The bulk has (3, 40) but not (40, 3): an LDLT, which reads the lower
+  // triangle only, would drop it; the solver must see the asymmetry of the
+  // pattern (not only of values) and factorize LU.
+  constexpr int kExtra = 2;
+  Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 4, true);
+  a(3, 40) = -0.3;
+  ASSERT_EQ(a(40, 3), 0.0);
+  CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(kBulk + kExtra, 0.5, 2);
+  const Eigen::VectorXd x = solve_with(solver, sparse(a), false, b);
+  EXPECT_LT(relative_error(a, x, b), 1e-12);
+}

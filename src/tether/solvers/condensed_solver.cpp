@@ -53,18 +53,31 @@ void CondensedSolver::use_fallback(const SparseMatrix& a, bool symmetric) {
 }
 
 bool CondensedSolver::outer_symmetric(const SparseMatrix& a) const {
-  const SparseMatrix t = a.transpose();
-  for (Eigen::Index j = 0; j < a.cols(); ++j) {
-    const int begin = a.outerIndexPtr()[j], end = a.outerIndexPtr()[j + 1];
-    if (end - begin != t.outerIndexPtr()[j + 1] - t.outerIndexPtr()[j]) return false;
-    for (int k = begin, kt = t.outerIndexPtr()[j]; k < end; ++k, ++kt) {
-      const int i = a.innerIndexPtr()[k];
-      if (i != t.innerIndexPtr()[kt]) return false;
+  // Each entry (i, j) below the diagonal and outside I×I against its mirror
+  // (j, i), found by bisection in column i (rows sorted): no copy of `a`.
+  // The upper triangle is covered by counting: every column must hold as
+  // many upper as mirrored lower entries, which the lower walk checks.
+  const int* outer = a.outerIndexPtr();
+  const int* inner = a.innerIndexPtr();
+  const double* value = a.valuePtr();
+  std::vector<int> upper(static_cast<std::size_t>(a.cols()), 0), matched(static_cast<std::size_t>(a.cols()), 0);
+  for (Eigen::Index j = 0; j < a.cols(); ++j)
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      const int i = inner[k];
+      if (i < j) {
+        ++upper[static_cast<std::size_t>(j)];
+        continue;
+      }
+      if (i == j) continue;
+      const int* begin = inner + outer[i];
+      const int* end = inner + outer[i + 1];
+      const int* m = std::lower_bound(begin, end, static_cast<int>(j));
+      if (m == end || *m != j) return false;
+      ++matched[static_cast<std::size_t>(i)];
       if (in_interface_[static_cast<std::size_t>(i)] && in_interface_[static_cast<std::size_t>(j)]) continue;
-      if (a.valuePtr()[k] != t.valuePtr()[kt]) return false;
+      if (value[k] != value[outer[i] + (m - begin)]) return false;
     }
-  }
-  return true;
+  return upper == matched;
 }
 
 void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
