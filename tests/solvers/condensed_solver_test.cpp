@@ -310,3 +310,25 @@ TEST(CondensedSolver, AnEntryAboveTheDiagonalWithoutItsMirrorMakesTheBulkUnsymme
   const Eigen::VectorXd x = solve_with(solver, sparse(a), false, b);
   EXPECT_LT(relative_error(a, x, b), 1e-12);
 }
+
+TEST(CondensedSolver, AReuseThatFallsBackIsCountedOnceAsAFallback) {
+  // First matrix: regular, condensed. Second: same bulk, but a multiplier
+  // decoupled and without diagonal, so the interface system is singular and
+  // the call goes to the fallback: one fallback, no reuse.
+  constexpr int kExtra = 2;
+  const Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 5, true);
+  Eigen::MatrixXd singular = a;
+  singular.row(kBulk + 1).setZero(), singular.col(kBulk + 1).setZero();
+  CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(kBulk + kExtra, 1, 2);
+  solve_with(solver, sparse(a), true, b);
+  // Keep the pattern: sparse() drops the zeroed couplings, so assemble the
+  // singular values into the first matrix's pattern.
+  SparseMatrix s = sparse(a);
+  for (Eigen::Index j = 0; j < s.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(s, j); it; ++it) it.valueRef() = singular(it.row(), it.col());
+  EXPECT_THROW(solver.factorize(s, true), SolverError);
+  EXPECT_EQ(solver.statistics().sparse_factorizations, 1);
+  EXPECT_EQ(solver.statistics().reuses, 0);
+  EXPECT_EQ(solver.statistics().fallbacks, 1);
+}

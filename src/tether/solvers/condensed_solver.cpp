@@ -97,8 +97,8 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
   // The R entries must be symmetric for the LDLT of A_RR; a matrix declared
   // unsymmetric (friction) often still is outside the interface.
   const bool outer_sym = symmetric || outer_symmetric(a);
-  if (bulk_valid_ && outer_sym == bulk_symmetric_ && bulk_->unchanged(a, in_interface_)) {
-    ++statistics_.reuses;
+  const bool reused = bulk_valid_ && outer_sym == bulk_symmetric_ && bulk_->unchanged(a, in_interface_);
+  if (reused) {
     changes_in_row_ = 0;
   } else {
     if (bulk_valid_ && ++changes_in_row_ >= 2) {
@@ -170,6 +170,7 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
     dgecon_("1", &size, lu_.data(), &size, &norm1, &rcond, work.data(), iwork.data(), &info, 1);
   }
   if (info != 0 || !(rcond > kSingularRcond)) return use_fallback(a, symmetric);  // also NaN
+  if (reused) ++statistics_.reuses;  // served by the interface system alone (not after a fallback)
 }
 
 void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
