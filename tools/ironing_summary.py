@@ -10,7 +10,8 @@ TOTALS=ONLY, RF of the driven top nodes of the die) of the slide step (total
 time t > 1; slide distance s = (t - 1) S) and prints per increment
 Fx, Fy, Fx / |Fy| and the Newton iterations of the increment (the .sta's ITRS
 of the converged attempt; failed attempts are counted separately). Steady
-sliding: s >= --steady (default 1 mm, several contact widths). Reports the mean,
+sliding: s >= --steady (default 1 mm, several contact widths; up to the .dat's
+7-digit times, so an increment at exactly 1 mm counts). Reports the mean,
 min and max of Fx / |Fy| over it against mu (deck heading), and for mu = 0 the
 largest |Fx| / |Fy|. --png plots Fx / |Fy| and the iterations per increment
 against s for the runs with mu > 0, and 1000 Fx / |Fy| for the mu = 0 runs.
@@ -42,7 +43,8 @@ def summarize(dat, deck_path, sta_path, label, steady):
         history.append({"time": t, "step": step, "slide": max(0.0, t - 1.0) * slide, "Fx": fx, "Fy": fy,
                         "ratio": fx / abs(fy) if fy else float("nan"), "iterations": its})
     sliding = [h for h in history if h["time"] > 1 + 1e-9]
-    window = [h for h in sliding if h["slide"] >= steady - 1e-9]
+    # the .dat's times have 7 digits: the increment at exactly `steady` may read as slide 0.9999990
+    window = [h for h in sliding if h["slide"] >= steady - 1e-6 * max(1.0, slide)]
     ratios = [h["ratio"] for h in window]
     out = {"label": label, "dat": dat, "deck": deck_path, "mu": mu, "slide": slide, "history": history,
            "steady_from": steady, "steady_increments": len(window),
@@ -102,6 +104,7 @@ def plot(results, path):
     fig.axes[-1].set_xlabel("slide distance [mm]")
     fig.tight_layout()
     fig.savefig(path, dpi=120)
+    plt.close(fig)
 
 
 def main(argv=None):

@@ -19,7 +19,11 @@ mapped back, tools/contact_dat.py):
            q = mu p0 (sqrt(1 - x^2/a^2) - (c/a) sqrt(1 - x^2/c^2)), |x| < c,
            q = mu p0 sqrt(1 - x^2/a^2), c <= |x| <= a; errors in units of mu p0,
            max over the stick zone (|x| < c) and over the whole strip;
-  force    sum of tang x tributary length (lumped) of the slave nodes against Q.
+  force    sum of tang x tributary length (lumped) of the slave nodes against Q;
+  a        the contact half-width of the last increment: least squares of
+           p^2 = p0^2 (1 - x^2/a^2) over the nodes with p >= half the peak
+           (tools/hertz_summary.py `figures`; both sides of x = 0), against
+           a = sqrt(4 P R / (pi E*)): identical materials, so Q leaves p unchanged.
 x is the slave node's reference coordinate (linear theory).
 --png plots q(x) / (mu p0) of every run over Mindlin's curve (last increment).
 """
@@ -32,6 +36,7 @@ import sys
 TOOLS = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, TOOLS)
 import contact_dat  # noqa: E402
+import hertz_summary  # noqa: E402
 
 
 def mindlin_q(x, a, c, p0, mu):
@@ -88,6 +93,9 @@ def summarize(dat, deck_path, label):
     if last is None:
         raise SystemExit(f"{dat}: no contact stress block in the tangential step (total time > 1)")
     rows, stick, c_exact, total, source = last
+    pressure = {n: 0.0 for n in deck.nsets.get("SLAVEN", [])}  # ccx prints only its active contact elements
+    pressure.update({n: max(0.0, p) for n, (p, t) in rows.items()})
+    normal = hertz_summary.figures(sorted((deck.xy[n][0], p) for n, p in pressure.items()), {"a": a, "p0": p0})
     sign = 1.0 if total >= 0 else -1.0
     profile, err_stick, err_all = [], 0.0, 0.0
     for n, (p, t) in sorted(rows.items(), key=lambda kv: deck.xy[kv[0]][0]):
@@ -105,7 +113,9 @@ def summarize(dat, deck_path, label):
     return {"label": label, "dat": dat, "deck": deck_path, "P": P, "Q": Q, "mu": mu, "a": a, "p0": p0,
             "c_exact": c_exact, "c": h["c"], "c_error": h["c_error"], "status_from": source,
             "q_error_stick": err_stick, "q_error_all": err_all, "tangential_force": h["tangential_force"],
-            "tangential_force_error": h["tangential_force"] / Q - 1, "history": history, "profile": profile}
+            "tangential_force_error": h["tangential_force"] / Q - 1, "a_fit": normal.get("a_fit"),
+            "a_fit_error": normal.get("a_fit_error"), "a_fit_nodes": normal.get("fit_nodes"),
+            "peak_error": normal.get("peak_error"), "history": history, "profile": profile}
 
 
 def plot(results, path):
@@ -139,6 +149,7 @@ def plot(results, path):
     ax.legend(fontsize=7, loc="lower center", ncol=2)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
+    plt.close(fig)
 
 
 def main(argv=None):
@@ -160,6 +171,9 @@ def main(argv=None):
               f"status from {r['status_from']}), max |q - q_Mindlin| / (mu p0): stick zone {r['q_error_stick']:.4f}, "
               f"whole strip {r['q_error_all']:.4f}, sum of tangential forces {r['tangential_force']:.3f} "
               f"(Q {r['Q']:.6g}, {100 * r['tangential_force_error']:+.3f} %)")
+        if r["a_fit"] is not None:
+            print(f"[ mindlin ] {label}: contact half-width a {r['a_fit']:.5f} (fit over {r['a_fit_nodes']} nodes; exact "
+                  f"{r['a']:.5f}, {100 * r['a_fit_error']:+.2f} %), peak pressure {100 * r['peak_error']:+.2f} % vs p0")
         for h in r["history"]:
             print(f"[ mindlin ]   {label} Q {h['Q']:8.3f}: c {h['c']:.5f} (exact {h['c_exact']:.5f}, "
                   f"{100 * h['c_error']:+.2f} %), {h['stick_nodes']} stick nodes")
