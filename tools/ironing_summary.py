@@ -55,6 +55,7 @@ def summarize(dat, deck_path, sta_path, label, steady):
                    Fy_mean=sum(h["Fy"] for h in window) / len(window))
         if mu > 0:
             out["ratio_error_max"] = max(abs(r / mu - 1) for r in ratios)
+            out["ratio_worst"] = max(ratios, key=lambda r: abs(r / mu - 1))  # signed, farthest from mu
         else:
             out["ratio_abs_max"] = max(abs(r) for r in ratios)
     return out
@@ -79,6 +80,8 @@ def plot(results, path):
         mu = frictional[0]["mu"]
         ax.axhspan(0.98 * mu, 1.02 * mu, color="0.9", label="μ ± 2 %")
         ax.axhline(mu, color="k", lw=0.8, label=f"μ = {mu:g}")
+        ax.axvline(frictional[0]["steady_from"], color="0.5", lw=0.8, ls=":",
+                   label=f"steady sliding from {frictional[0]['steady_from']:g} mm")
         for k, r in enumerate(frictional):
             x, y = sliding(r, "ratio")
             ax.plot(x, y, "-", lw=0.7, color=f"C{k}", label=r["label"])
@@ -91,6 +94,8 @@ def plot(results, path):
             x, y = sliding(r, "iterations")
             ax.plot(x, y, ".", ms=3, color=f"C{k}", label=r["label"])
         ax.axhline(8, color="k", lw=0.8, ls="--", label="8 (issue)")
+        most = max([8] + [h["iterations"] or 0 for r in frictional for h in r["history"]])
+        ax.set_ylim(0, 1.45 * most)  # room for the legend above the points
         ax.set_ylabel("iterations / increment")
         ax.legend(fontsize=7, loc="upper right")
     if frictionless:
