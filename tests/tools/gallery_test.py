@@ -5,8 +5,8 @@ Usage: gallery_test.py SOURCE_DIR TETHER_EXE OUT_DIR
 
 Runs the gallery with --out OUT_DIR, --json and --quick (tether runs every case; ccx every case
 it runs in the full regeneration but the two long frictional ones, Cattaneo-Mindlin and ironing,
-which take it 25-30 s each, up to ~2 min on a loaded machine), then checks that the markdown has every section and figure,
-that every tether error in the JSON is within the tolerance stated for its case (and the same
+which take it 25-30 s each, up to ~2 min on a loaded machine), then checks that the markdown has
+every section and figure, that every tether error in the JSON is within the tolerance stated for its case (and the same
 number is in the markdown row), that the Cattaneo-Mindlin and ironing rows name the tests that
 run the same decks, and, when ccx is installed, that the ccx columns are filled and within their
 tolerances. Exit 0 ok, 1 failure, 77 (skip) when ccx is missing -- after the tether columns have
