@@ -16,7 +16,8 @@ ironing tests (tools/make_mindlin_deck.py, tools/make_ironing_deck.py with the t
 summarised by tools/mindlin_summary.py and tools/ironing_summary.py; ccx runs a copy with a
 penalty stick slope). Those two take most of the time, in ccx above all (25-30 s each on an
 idle 2-core machine, up to ~2 min on a loaded one): --quick runs them in tether only (the smoke
-test's setting; the ccx columns of the other cases are filled as usual). Needs numpy, matplotlib, meshio (Debian python3-*) and gmsh.
+test's setting; the ccx columns of the other cases are filled as usual). Needs numpy, matplotlib,
+meshio (Debian python3-*) and gmsh.
 
 Exit status: 0 every tether error within its stated tolerance, 1 one is not (or a run failed),
 2 usage error (tether not found).
