@@ -12,15 +12,17 @@ namespace tether::testing {
 /// Records every report of an analysis.
 class Recorder final : public AnalysisObserver {
  public:
-  void on_iteration(int iteration, const IterationNorms& norms) override {
-    if (iteration == 0) residuals.emplace_back();
-    residuals.back().push_back(norms.force_residual);
+  void on_iteration(int iteration, const IterationNorms& n) override {
+    if (iteration == 0) residuals.emplace_back(), norms.emplace_back();
+    residuals.back().push_back(n.force_residual);
+    norms.back().push_back(n);
   }
   void on_increment(const IncrementReport& r) override { increments.push_back(r); }
   void on_results(const IncrementResults& r, const Step&, bool) override { results.push_back(r); }
   void on_message(const std::string& m) override { messages.push_back(m); }
 
-  std::vector<std::vector<double>> residuals;  ///< per attempt, per iteration
+  std::vector<std::vector<double>> residuals;  ///< per Newton pass, per iteration: the max force residual
+  std::vector<std::vector<IterationNorms>> norms;  ///< per Newton pass, per iteration: all norms
   std::vector<IncrementReport> increments;
   std::vector<IncrementResults> results;
   std::vector<std::string> messages;

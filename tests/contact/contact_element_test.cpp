@@ -412,9 +412,10 @@ TEST(ContactNode, SlipDirectionIsTheBranchTheResidualTakes) {
   ASSERT_GT(std::abs(c * ds), 2 * mu * lambda_n);  // so that τ and λt = -μN sgn Δs differ in sign
   const int sign = ds > 0 ? 1 : -1;
   f.u[f.n_disp + 1] = -sign * mu * lambda_n;
-  const auto [status, direction] = f.node().status_and_direction(f.state());
-  EXPECT_EQ(status, ContactStatus::Slip);
-  EXPECT_EQ(direction, sign);
+  const ContactBranch branch = f.node().branch(f.state());
+  EXPECT_EQ(branch.status, ContactStatus::Slip);
+  EXPECT_EQ(branch.direction, sign);
+  EXPECT_TRUE(branch.friction_active);
   // The slip row is -(λt - μN sgn τ)/c: zero at λt = +sign μN.
   LocalSystem out;
   out.reset(static_cast<Eigen::Index>(f.node().dofs().size()));
@@ -422,7 +423,45 @@ TEST(ContactNode, SlipDirectionIsTheBranchTheResidualTakes) {
   EXPECT_NEAR(out.residual[out.residual.size() - 1], 2 * sign * mu * lambda_n / c, 1e-14);
   // In stick (|τ| < μN) there is no direction.
   f.u[f.n_disp + 1] = -c * ds;
-  EXPECT_EQ(f.node().status_and_direction(f.state()).second, 0);
+  EXPECT_EQ(f.node().branch(f.state()).direction, 0);
+}
+
+// A node that has just closed has λn = 0 exactly (the open row of the
+// previous iteration drove it there): closed (status Slip) but N = 0, so its
+// friction row is still the open one, -λt/c. When λn turns positive the row
+// becomes the slip (or stick) one while the status stays Slip. That is an
+// active-set change of the semi-smooth Newton method, and the pair counts it
+// (it was invisible before, and made the ironing test's indentation
+// increment 2 look non-quadratic on the force residual:
+// docs/verification_contact.md, "Quadratic convergence").
+TEST(ContactNode, ANodeStartingToCarryANormalForceChangesItsFrictionBranch) {
+  Fixture f(Master::Linear, hard(), Friction::Exact);
+  f.place(0.3, -0.04, 0.8, -0.04);  // penetrating, slid by 0.5: slip once pressed
+  f.u[f.n_disp] = 0;                // λn = 0: closed (λn - c g >= 0) without a force
+  f.u[f.n_disp + 1] = 0;
+  f.pair->update_connectivity(f.state());
+  const ContactBranch closing = f.node().branch(f.state());
+  EXPECT_EQ(closing.status, ContactStatus::Slip);
+  EXPECT_FALSE(closing.friction_active);
+  EXPECT_EQ(closing.direction, 0);
+  // The open friction row: -λt/c with no coupling to λn.
+  LocalSystem out;
+  out.reset(static_cast<Eigen::Index>(f.node().dofs().size()));
+  f.node().evaluate(f.state(), out, true);
+  const Eigen::Index it = out.residual.size() - 1;
+  EXPECT_EQ(out.tangent(it, it - 1), 0.0);
+  EXPECT_EQ(f.pair->statistics().status_changes, 0);
+  f.u[f.n_disp] = 0.8;  // the next iterate carries a normal force
+  f.pair->update_connectivity(f.state());
+  const ContactBranch pressed = f.node().branch(f.state());
+  EXPECT_EQ(pressed.status, ContactStatus::Slip);
+  EXPECT_TRUE(pressed.friction_active);
+  EXPECT_NE(pressed.direction, 0);
+  EXPECT_EQ(f.pair->statistics().status_changes, 1);
+  f.node().evaluate(f.state(), out, true);
+  EXPECT_NE(out.tangent(it, it - 1), 0.0);  // slip row: ∂/∂λn = μ sgn τ / c
+  f.pair->update_connectivity(f.state());  // same state: no change
+  EXPECT_EQ(f.pair->statistics().status_changes, 0);
 }
 
 TEST(ContactNode, ForceOnTheSlaveIsNormalForceAlongTheOutwardNormal) {

@@ -25,7 +25,7 @@ struct IterationNorms {
   /// Contact (summed over the pairs; contact_closed < 0 when the model has none),
   /// as found by the search before this iteration's residual:
   int contact_closed = -1;    ///< slave nodes in contact
-  int contact_changes = 0;    ///< nodes whose status (open/stick/slip) changed since the previous iteration
+  int contact_changes = 0;    ///< nodes whose branch (status open/stick/slip, slip direction, friction row) changed since the previous iteration
   int contact_repaired = 0;   ///< nodes paired with another master segment
   int contact_held = 0;       ///< nodes held by the contact guards (closed, in stick, on their segment)
 };

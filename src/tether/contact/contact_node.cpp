@@ -401,13 +401,16 @@ ContactNodeValues ContactNode::values(const EvaluationState& state) const {
   return v;
 }
 
-std::pair<ContactStatus, int> ContactNode::status_and_direction(const EvaluationState& state) const {
+ContactBranch ContactNode::branch(const EvaluationState& state) const {
   const Point p = compute(state, nullptr, false);
+  ContactBranch b;
+  b.status = p.status;
   // The sign of the slip branch the residual takes at this state (for exact
   // stick that of λt + cΔs: λt itself still has the sign of the previous
   // iteration's branch).
-  const int direction = p.status == ContactStatus::Slip ? p.slip_sign : 0;
-  return {p.status, direction};
+  b.direction = p.status == ContactStatus::Slip ? p.slip_sign : 0;
+  b.friction_active = pair_.mu() > 0 && p.normal_force > 0;
+  return b;
 }
 
 }  // namespace tether

@@ -23,8 +23,6 @@
 /// force, c the pair's complementarity stiffness. Derivations:
 /// docs/theory/contact.md.
 
-#include <utility>
-
 #include "tether/assembly/contribution.hpp"
 #include "tether/model/results.hpp"
 
@@ -35,6 +33,22 @@ class ContactPair;
 /// Contact state of a slave node.
 enum class ContactStatus { Open, Stick, Slip };  ///< closed frictionless nodes are Slip
 
+/// The branch of the piecewise-smooth residual a slave node takes at a state:
+/// its part of the active set of the semi-smooth Newton method. Two states
+/// with the same branch (and pairing) have the same smooth residual function.
+struct ContactBranch {
+  ContactStatus status = ContactStatus::Open;
+  /// Slip with friction: the direction the friction force is driven to (+1 or
+  /// -1 along the master tangent, the sign of λt + cΔs or of the trial force); 0 otherwise.
+  int direction = 0;
+  /// With friction: the node carries a normal force (N > 0), so its friction
+  /// row is the stick or slip one. A node that has just closed (λn = 0
+  /// exactly, set by the open row of the previous iteration) is closed but
+  /// still has the open friction row; it is reported as Slip all the same.
+  bool friction_active = false;
+  friend bool operator==(const ContactBranch&, const ContactBranch&) = default;
+};
+
 class ContactNode final : public Contribution {
  public:
   ContactNode(const ContactPair& pair, int slave) : pair_(pair), slave_(slave) {}
@@ -44,10 +58,9 @@ class ContactNode final : public Contribution {
   [[nodiscard]] std::string describe() const override;
 
   /// Status at the state (as the residual sees it).
-  [[nodiscard]] ContactStatus status(const EvaluationState& state) const { return status_and_direction(state).first; }
-  /// Status and, for a slipping node with friction, the direction of the
-  /// friction force (+1 or -1 along the master tangent; 0 otherwise).
-  [[nodiscard]] std::pair<ContactStatus, int> status_and_direction(const EvaluationState& state) const;
+  [[nodiscard]] ContactStatus status(const EvaluationState& state) const { return branch(state).status; }
+  /// The residual's branch at the state: status, slip direction, friction row.
+  [[nodiscard]] ContactBranch branch(const EvaluationState& state) const;
 
   /// Output values at the state (status, gap, forces, slip).
   [[nodiscard]] ContactNodeValues values(const EvaluationState& state) const;

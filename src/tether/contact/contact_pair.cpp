@@ -166,7 +166,8 @@ void ContactPair::start_attempt(const EvaluationState& state) {
   releases_ = 0;
   uzawa_updates_ = 0;
   for (ContactSlave& s : slaves_)
-    s.status_changes = 0, s.held_closed = false, s.slip_direction = 0, s.direction_flips = 0, s.held_stick = false,
+    s.status_changes = 0, s.held_closed = false, s.slip_direction = 0, s.friction_active = false,
+    s.direction_flips = 0, s.held_stick = false,
     s.left_segment = -1, s.held_segment = false, s.returns = 0;
 }
 
@@ -273,7 +274,17 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
                     setup_.law.enforcement.method == Enforcement::Method::Lagrange;
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     ContactSlave& s = slaves_[i];
-    const auto [status, direction] = nodes_[i]->status_and_direction(state);
+    const ContactBranch branch = nodes_[i]->branch(state);
+    const ContactStatus status = branch.status;
+    const int direction = branch.direction;
+    // Any change of the residual's branch is an active-set change; besides
+    // the status this counts a reversed slip direction and a node that has
+    // just closed starting to carry a normal force (its friction row turns
+    // from the open one to stick or slip while its status stays Slip).
+    if (!new_attempt && (direction != s.slip_direction || branch.friction_active != s.friction_active) &&
+        status == s.status)
+      ++statistics_.status_changes;
+    s.friction_active = branch.friction_active;
     // Friction guard: a node whose slip keeps reversing on the same master
     // segment is really sticking (a reversal while it is handed over to the
     // next segment of a sliding surface is not counted).

@@ -84,6 +84,7 @@ struct ContactSlave {
   int status_changes = 0;
   bool held_closed = false;        ///< chattering guard engaged
   int slip_direction = 0;          ///< friction force direction at the last update_connectivity (slip only)
+  bool friction_active = false;    ///< friction row stick or slip (N > 0) at the last update_connectivity
   int direction_flips = 0;         ///< reversals of the slip direction in this attempt
   bool held_stick = false;         ///< friction guard engaged: held in stick until Newton converges
   int left_segment = -1;           ///< segment left by a re-pairing at the previous iteration (-1: none)
@@ -94,7 +95,9 @@ struct ContactSlave {
 /// Work done by the last update_connectivity (for the iteration log).
 struct ContactIterationStatistics {
   int closed = 0;         ///< slave nodes in contact (stick or slip)
-  int status_changes = 0; ///< nodes whose status changed since the previous iteration
+  /// Nodes whose branch changed since the previous iteration: status
+  /// (open/stick/slip), slip direction, or friction row (ContactBranch).
+  int status_changes = 0;
   int repaired = 0;       ///< nodes paired with another segment
   int held_closed = 0;    ///< nodes held by a guard (closed, in stick, or on their segment)
 };
