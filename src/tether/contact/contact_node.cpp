@@ -164,6 +164,7 @@ struct ContactNode::Point {
   double gap = 0, xi = 0;
   double normal_force = 0, tangential_force = 0, slip = 0;
   int slip_sign = 0;  ///< slip: the sign the friction force is driven to (of λt + cΔs, or of the trial force)
+  bool friction_active = false;  ///< with friction: the friction row is the stick or slip one (not the open one)
   Eigen::Vector2d normal{0, 0}, tangent{0, 0};
 };
 
@@ -293,13 +294,20 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
         out->tangent.col(it).head(ns) += grad_ds;
       }
     }
-    if (!(N > 0)) {
+    // A closed node without force and with τ = 0 — touching at the start of
+    // an increment with no friction history (λt = 0, Δs = 0) — sits where
+    // the open row -λt/c and the stick row Δs meet, both zero. It takes the
+    // stick row there (the limit from N > 0, |τ| < μN): otherwise the first
+    // iteration gives it no friction and lets it slide freely.
+    const bool touching_at_rest = closed && !(N > 0) && tau == 0;
+    if (!(N > 0) && !touching_at_rest) {
       if (out) {
         out->residual[it] = -lambda_t / c;
         if (need_tangent) out->tangent(it, it) = -1 / c;
       }
-    } else if (std::abs(tau) < bound || s.held_stick) {
+    } else if (std::abs(tau) < bound || s.held_stick || touching_at_rest) {
       point.status = ContactStatus::Stick;
+      point.friction_active = true;
       if (out) {
         out->residual[it] = ds;
         if (need_tangent) out->tangent.row(it).head(ns) += grad_ds.transpose();
@@ -307,6 +315,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     } else {
       const double sign = tau >= 0 ? 1.0 : -1.0;
       point.slip_sign = tau >= 0 ? 1 : -1;
+      point.friction_active = true;
       if (out) {
         out->residual[it] = -(lambda_t - bound * sign) / c;
         if (need_tangent) {
@@ -331,11 +340,13 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     if (N > 0 && (std::abs(trial) <= mu * N || s.held_stick)) {
       T = trial;
       point.status = ContactStatus::Stick;
+      point.friction_active = true;
       if (out) dT.head(ns) += k * grad_ds;  // the gradient exists only when asked for
       dT += ds * dk;
     } else if (N > 0) {
       const double sign = trial >= 0 ? 1.0 : -1.0;
       point.slip_sign = trial >= 0 ? 1 : -1;
+      point.friction_active = true;
       T = mu * N * sign;
       dT = mu * sign * dN;
     }
@@ -409,7 +420,7 @@ ContactBranch ContactNode::branch(const EvaluationState& state) const {
   // stick that of λt + cΔs: λt itself still has the sign of the previous
   // iteration's branch).
   b.direction = p.status == ContactStatus::Slip ? p.slip_sign : 0;
-  b.friction_active = pair_.mu() > 0 && p.normal_force > 0;
+  b.friction_active = p.friction_active;
   return b;
 }
 
