@@ -160,9 +160,10 @@ int main(int argc, char** argv) {
                     "With contact: factorize the whole matrix at every iteration instead of condensing it onto "
                     "the contact equations (for comparison; same answer)");
   run_cmd->add_option("--memory", memory_mb,
-                      "Memory the run may use, in MB (e.g. 480, 2000): sparse factors that would not fit are kept "
-                      "on disk in the temporary directory ($TMPDIR) and read back at each solve (slower); "
-                      "default: no limit, everything in core")
+                      "Memory the run may use, in MB (e.g. 480, 2000): MUMPS factors (the condensed contact solver, "
+                      "--solver mumps, symmetric indefinite systems) that would not fit are kept on disk in the "
+                      "temporary directory ($TMPDIR) and read back at each solve (slower); CHOLMOD and UMFPACK "
+                      "ignore it; default: no limit, everything in core")
       ->check(CLI::PositiveNumber);
   run_cmd->add_flag("--ascii", ascii, "Write ASCII instead of binary VTU (for debugging)");
   run_cmd->add_flag("-q,--quiet", quiet, "Print nothing but errors");

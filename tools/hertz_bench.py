@@ -366,6 +366,8 @@ def main(argv=None):
     except argparse.ArgumentTypeError as e:
         ap.error(str(e))
     codes = [c.strip() for c in args.codes.split(",") if c.strip()]
+    if args.tether_memory is not None and args.tether_memory <= 0:
+        ap.error("--tether-memory: a positive number of MB")
     if args.tether_memory and "tether-budget" not in codes:
         codes.append("tether-budget")
     if any(c not in ("ccx", "tether", "tether-budget") for c in codes):

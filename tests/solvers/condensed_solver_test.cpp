@@ -332,3 +332,27 @@ TEST(CondensedSolver, AReuseThatFallsBackIsCountedOnceAsAFallback) {
   EXPECT_EQ(solver.statistics().reuses, 0);
   EXPECT_EQ(solver.statistics().fallbacks, 1);
 }
+
+TEST(CondensedSolver, EntriesMovedOutOfTheLastColumnsAreAChange) {
+  // Interface {2, 3}, unsymmetric. Passed entries column by column: first
+  // (0, 0) (1, 0) | (0, 1) | - | (1, 3); second (0, 0) (1, 0) | (0, 1) (1, 1):
+  // the same rows and values in the same order, the last one moved out of
+  // the trailing column 3 into column 1 (review finding). Both regular.
+  const auto matrix = [](bool moved) {
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(4, 4);
+    a(0, 0) = 4, a(1, 0) = 1, a(0, 1) = 3, a(2, 2) = 1, a(3, 3) = 1;
+    (moved ? a(1, 1) : a(1, 3)) = 2;
+    return a;
+  };
+  const auto exact = [](const Eigen::MatrixXd& a) {
+    SparseMatrix s = a.sparseView();
+    s.makeCompressed();
+    return s;
+  };
+  CondensedSolver solver({2, 3}, make_linear_solver(SolverKind::Auto));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(4, 1, 4);
+  solve_with(solver, exact(matrix(false)), false, b);
+  const Eigen::VectorXd x = solve_with(solver, exact(matrix(true)), false, b);
+  EXPECT_LT(relative_error(matrix(true), x, b), 1e-12);
+  EXPECT_EQ(solver.statistics().reuses, 0);
+}

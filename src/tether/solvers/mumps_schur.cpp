@@ -93,7 +93,12 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   reduced_ready_ = false;
   factorized_ = false;
   mumps_->plan_memory(memory_budget_mb_);
-  mumps_->run(2);
+  try {
+    mumps_->run(2);
+  } catch (...) {
+    id.jcn = nullptr;  // `cols` dies with this call: leave no dangling pointer
+    throw;
+  }
   id.jcn = nullptr;  // freed below; solves do not read the matrix
   cols = {};
   mumps_->throw_if_null_pivots();
@@ -126,6 +131,10 @@ bool MumpsSchur::unchanged(const SparseMatrix& a, const std::vector<char>& in_in
     if (e >= outer || rows_[e] != i + 1 || values_[e] != a.valuePtr()[k]) same = false;
     ++e;
   });
+  // Columns after the last one with a passed entry must be empty in the
+  // factorized matrix too (their entries may have moved into earlier columns).
+  for (Eigen::Index c = column + 1; same && c <= n_; ++c)
+    if (column_start_[static_cast<std::size_t>(c)] != static_cast<int>(e)) same = false;
   return same && e == outer;
 }
 
