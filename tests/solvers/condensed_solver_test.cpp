@@ -64,6 +64,13 @@ SparseMatrix sparse(const Eigen::MatrixXd& a) {
   return s;
 }
 
+/// Sparse copy of the nonzero entries only (no explicit zeros, unlike sparse()).
+SparseMatrix nonzeros(const Eigen::MatrixXd& a) {
+  SparseMatrix s = a.sparseView();
+  s.makeCompressed();
+  return s;
+}
+
 /// A contact-like change of the interface block: a random symmetric (or not)
 /// coupling between surface unknowns and multipliers, with -eps on the
 /// multiplier diagonal.
@@ -253,13 +260,8 @@ TEST(CondensedSolver, AnEntryMovedToAnotherColumnIsAChangeEvenWithEqualValues) {
     return out;
   };
   ASSERT_EQ(passed(matrix(false)), passed(matrix(true)));  // the premise of the test
-  const auto exact = [](const Eigen::MatrixXd& a) {  // no explicit zeros (unlike sparse())
-    SparseMatrix s = a.sparseView();
-    s.makeCompressed();
-    return s;
-  };
-  solve_with(solver, exact(matrix(false)), false, b);
-  const Eigen::VectorXd x = solve_with(solver, exact(matrix(true)), false, b);
+  solve_with(solver, nonzeros(matrix(false)), false, b);
+  const Eigen::VectorXd x = solve_with(solver, nonzeros(matrix(true)), false, b);
   EXPECT_LT(relative_error(matrix(true), x, b), 1e-12);
   EXPECT_EQ(solver.statistics().sparse_factorizations, 2);
   EXPECT_EQ(solver.statistics().reuses, 0);
@@ -344,15 +346,10 @@ TEST(CondensedSolver, EntriesMovedOutOfTheLastColumnsAreAChange) {
     (moved ? a(1, 1) : a(1, 3)) = 2;
     return a;
   };
-  const auto exact = [](const Eigen::MatrixXd& a) {
-    SparseMatrix s = a.sparseView();
-    s.makeCompressed();
-    return s;
-  };
   CondensedSolver solver({2, 3}, make_linear_solver(SolverKind::Auto));
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(4, 1, 4);
-  solve_with(solver, exact(matrix(false)), false, b);
-  const Eigen::VectorXd x = solve_with(solver, exact(matrix(true)), false, b);
+  solve_with(solver, nonzeros(matrix(false)), false, b);
+  const Eigen::VectorXd x = solve_with(solver, nonzeros(matrix(true)), false, b);
   EXPECT_LT(relative_error(matrix(true), x, b), 1e-12);
   EXPECT_EQ(solver.statistics().reuses, 0);
 }
