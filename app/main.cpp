@@ -74,6 +74,8 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   const fs::path dir = output_dir.empty() ? fs::path(deck).parent_path() / fs::path(deck).stem() : fs::path(output_dir);
   const std::string job = fs::path(deck).stem().string();
 
+  if (memory_mb > 0) check_out_of_core_directory();  // refuse before the run, not when the factors first go to disk
+
   AnalysisOptions options;
   options.solver = parse_solver_kind(solver);
   options.condense_contact = condense;
@@ -110,6 +112,9 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
     summary = analysis->run();
   } catch (const ModelError& e) {
     writer.finish(false, e.what());
+    throw;
+  } catch (const ResourceError& e) {
+    writer.finish(false, std::string(e.what()) + "; the increments that converged before have been written");
     throw;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -191,6 +196,9 @@ int main(int argc, char** argv) {
   } catch (const ModelError& e) {
     fmt::print(stderr, "{}: error: {}\n", deck, e.what());
     return kInput;
+  } catch (const ResourceError& e) {
+    fmt::print(stderr, "{}: error: {}\n", deck, e.what());
+    return kNotCompleted;
   } catch (const std::exception& e) {
     fmt::print(stderr, "{}: error: {}\n", deck, e.what());
     return kInternal;

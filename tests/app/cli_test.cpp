@@ -18,9 +18,11 @@ struct Result {
   std::string out;  ///< stdout and stderr together
 };
 
-/// Runs the tether program with `args` (stdout is a pipe, so not a terminal).
-Result tether(const std::string& args) {
-  const std::string command = std::string(TETHER_CLI) + " " + args + " 2>&1";
+/// Runs the tether program with `args` (stdout is a pipe, so not a terminal),
+/// with `environment` ("NAME=value ...", shell syntax) added to its environment.
+Result tether(const std::string& args, const std::string& environment = "") {
+  const std::string command =
+      (environment.empty() ? "" : "env " + environment + " ") + std::string(TETHER_CLI) + " " + args + " 2>&1";
   Result r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -347,4 +349,30 @@ TEST(Cli, MemoryBudgetKeepsTheAnswerAndRefusesNonsense) {
     return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   };
   EXPECT_EQ(read(dir / "in" / "plate.dat"), read(dir / "disk" / "plate.dat"));
+  // The run says so, though there is no contact (no condensed solver to report it).
+  EXPECT_NE(read(dir / "disk" / "plate.msg").find("factorization(s) were kept on disk"), std::string::npos)
+      << read(dir / "disk" / "plate.msg");
+  EXPECT_EQ(read(dir / "in" / "plate.msg").find("on disk"), std::string::npos);
+}
+
+TEST(Cli, MemoryBudgetRefusesAnUnusableTemporaryDirectoryByName) {
+  const fs::path dir = scratch("memory_tmpdir");
+  write(dir / "plate.inp", kGoodDeck);
+  write(dir / "a_file", "not a directory\n");
+  const std::string deck = (dir / "plate.inp").string();
+  const std::string missing = (dir / "missing").string(), file = (dir / "a_file").string();
+  const std::string too_long = (dir / std::string(130, 'd') / std::string(130, 'd')).string();
+  fs::create_directories(too_long);
+  for (const auto& [tmpdir, why] : {std::pair{missing, "does not exist"}, std::pair{file, "not a directory"},
+                                    std::pair{too_long, "longer than MUMPS accepts"}}) {
+    const auto r = tether("run " + deck + " --solver mumps --memory 1 -o " + (dir / "out").string(),
+                          "TMPDIR=" + tmpdir);
+    EXPECT_EQ(r.code, 2) << r.out;  // not completed; neither a crash (3) nor a silent in-core run (0)
+    EXPECT_NE(r.out.find("'" + tmpdir + "' ($TMPDIR)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(why), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("set TMPDIR"), std::string::npos) << r.out;
+  }
+  // Without a budget nothing goes to disk and the directory does not matter.
+  const auto r = tether("run " + deck + " --solver mumps -o " + (dir / "out").string(), "TMPDIR=" + missing);
+  EXPECT_EQ(r.code, 0) << r.out;
 }

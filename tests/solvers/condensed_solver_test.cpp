@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -352,4 +353,27 @@ TEST(CondensedSolver, EntriesMovedOutOfTheLastColumnsAreAChange) {
   const Eigen::VectorXd x = solve_with(solver, nonzeros(matrix(true)), false, b);
   EXPECT_LT(relative_error(matrix(true), x, b), 1e-12);
   EXPECT_EQ(solver.statistics().reuses, 0);
+}
+
+// The bulk entries are recognised by a fingerprint, not by a copy: a change
+// of one unit in the last place of one entry, and two entries that swap
+// their values (the same multiset of values, the same pattern), are changes.
+TEST(CondensedSolver, OneUlpOrTwoSwappedValuesInTheBulkAreAChange) {
+  constexpr int kExtra = 2;
+  const Eigen::MatrixXd bulk = bulk_matrix(kExtra);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(kBulk + kExtra, -1, 2);
+  Eigen::MatrixXd ulp = bulk, swapped = bulk;
+  ulp(5, 5) = std::nextafter(ulp(5, 5), 10.0);
+  swapped(1, 1) = bulk(13, 13), swapped(13, 13) = bulk(1, 1);  // 3 and 4
+  ASSERT_NE(bulk(1, 1), bulk(13, 13));
+  for (const Eigen::MatrixXd& changed : {ulp, swapped}) {
+    CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+    for (const Eigen::MatrixXd& bulk_k : {bulk, changed}) {
+      const Eigen::MatrixXd a = with_contact(bulk_k, kExtra, 3, true);
+      const Eigen::VectorXd x = solve_with(solver, sparse(a), true, b);
+      EXPECT_LT(relative_error(a, x, b), 1e-12);
+    }
+    EXPECT_EQ(solver.statistics().sparse_factorizations, 2);
+    EXPECT_EQ(solver.statistics().reuses, 0);
+  }
 }

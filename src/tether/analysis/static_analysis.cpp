@@ -340,6 +340,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     const NewtonSolver& newton;
     const double& output;
     const CondensedSolver* condensed;
+    const LinearSolver& solver;
+    double memory_budget_mb;
     AnalysisObserver& observer;
     int step;
     ~TimingGuard() {
@@ -348,6 +350,12 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       s.contact_search += t.contact_search, s.assembly += t.assembly, s.analyse += t.analyse;
       s.factorize += t.factorize, s.solve += t.solve, s.factorizations += t.factorizations;
       s.output += output;
+      if (!condensed && solver.out_of_core_factorizations() > 0)
+        observer.on_message("step " + std::to_string(step) + ": the factors of " +
+                            std::to_string(solver.out_of_core_factorizations()) + " of " +
+                            std::to_string(t.factorizations) +
+                            " factorization(s) were kept on disk in the temporary directory (memory budget " +
+                            std::to_string(static_cast<long long>(memory_budget_mb)) + " MB)");
       if (!condensed || t.factorizations == 0) return;
       const CondensationStatistics& c = condensed->statistics();
       s.sparse_factorizations += c.sparse_factorizations;
@@ -361,7 +369,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                           (c.gave_up ? " (stopped condensing: the matrix outside the contact equations changed twice in a row or is singular)"
                                      : ""));
     }
-  } timing_guard{summary, newton, output_seconds, condensed, observer_, index + 1};
+  } timing_guard{summary, newton, output_seconds, condensed, *solver, options_.memory_budget_mb, observer_, index + 1};
 
   auto stop = [&](const std::string& why) {
     summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(step_time) +

@@ -59,6 +59,14 @@ class ModelError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The machine refused something the run needs that has nothing to do with
+/// the model: a scratch directory that is missing or not writable, a full
+/// disk. The message names the resource and what to change.
+class ResourceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// A linear solve failed (singular or numerically broken matrix).
 class SolverError : public std::runtime_error {
  public:

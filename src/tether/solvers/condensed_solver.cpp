@@ -117,6 +117,7 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
       statistics_.factor_entries = bulk_->factor_entries();
       statistics_.factor_memory_mb = bulk_->memory_mb();
       statistics_.out_of_core = bulk_->out_of_core();
+      if (statistics_.out_of_core) ++statistics_.out_of_core_factorizations;
     } catch (const SolverError&) {
       // A_RR singular (or MUMPS failed): the fallback decides and names the
       // equation; trying again at every iteration would only double the cost.
@@ -131,7 +132,8 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
   // closed HARD multiplier) 1/(largest entry of the row already scaled), so
   // that the condition test does not depend on the units (1/(E t) otherwise).
   const auto m = static_cast<Eigen::Index>(interface_.size());
-  Eigen::MatrixXd s = bulk_->schur();
+  lu_ = bulk_->schur();  // becomes A_II + C, equilibrated, then its LU, in place
+  Eigen::MatrixXd& s = lu_;
   for (int j : interface_)
     for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
       const int i = a.innerIndexPtr()[k];
@@ -156,7 +158,8 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
     const double row = (s.row(k).cwiseAbs().transpose().cwiseProduct(scale_)).maxCoeff();
     scale_[k] = row > 0 && std::isfinite(row) ? 1.0 / row : 1.0;
   }
-  lu_ = scale_.asDiagonal() * s * scale_.asDiagonal();
+  lu_.array().colwise() *= scale_.array();  // D s D: row i times d_i, then column j times d_j
+  lu_.array().rowwise() *= scale_.transpose().array();
   const int size = static_cast<int>(m);
   const double norm1 = lu_.cwiseAbs().colwise().sum().maxCoeff();
   pivots_.resize(interface_.size());

@@ -39,6 +39,7 @@ struct CondensationStatistics {
   double factor_entries = 0;      ///< entries of the last sparse factors (MUMPS INFOG(29))
   int factor_memory_mb = 0;       ///< MUMPS' memory for the last factorization [MB] (INFOG(22))
   bool out_of_core = false;       ///< the last sparse factors were kept on disk (memory budget)
+  int out_of_core_factorizations = 0;  ///< sparse factorizations whose factors were kept on disk
 };
 
 class CondensedSolver final : public LinearSolver {
@@ -55,6 +56,10 @@ class CondensedSolver final : public LinearSolver {
   void factorize(const SparseMatrix& a, bool symmetric) override;
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   [[nodiscard]] std::string name() const override;
+  /// Those of the bulk (statistics().out_of_core_factorizations) and of the fallback.
+  [[nodiscard]] int out_of_core_factorizations() const override {
+    return statistics_.out_of_core_factorizations + fallback_->out_of_core_factorizations();
+  }
 
   [[nodiscard]] const CondensationStatistics& statistics() const { return statistics_; }
 

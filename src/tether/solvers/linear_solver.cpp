@@ -73,6 +73,7 @@ class AutoSolver final : public LinearSolver {
     active_->solve(b, x);
   }
   [[nodiscard]] std::string name() const override { return active_ ? active_->name() : "auto"; }
+  [[nodiscard]] int out_of_core_factorizations() const override { return mumps_.out_of_core_factorizations(); }
 
  private:
   CholmodSolver cholmod_;

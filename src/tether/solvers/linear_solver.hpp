@@ -46,6 +46,10 @@ class LinearSolver {
 
   /// Name of the factorization last used, e.g. "UMFPACK" (for logs).
   [[nodiscard]] virtual std::string name() const = 0;
+
+  /// How many factorizations so far kept their factors on disk (a memory
+  /// budget; see make_linear_solver()); 0 for the solvers that never do.
+  [[nodiscard]] virtual int out_of_core_factorizations() const { return 0; }
 };
 
 /// Creates a solver of the given kind. `memory_budget_mb`: memory the whole
@@ -53,5 +57,10 @@ class LinearSolver {
 /// fit keep their factors out of core (on disk, read back at each solve).
 /// The other solvers ignore it.
 std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind = SolverKind::Auto, double memory_budget_mb = 0);
+
+/// Checks the directory MUMPS's out-of-core factors would go to ($TMPDIR,
+/// else /tmp): throws ResourceError naming it when it is missing, not
+/// writable or too long a path. Returns it.
+std::string check_out_of_core_directory();
 
 }  // namespace tether

@@ -9,7 +9,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -53,16 +55,39 @@ struct MumpsInstance {
     return static_cast<double>(pages_resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
   }
 
+  /// The directory out-of-core factors go to: $TMPDIR, else /tmp. Throws
+  /// ResourceError naming it when it is missing, not a writable directory,
+  /// or too long a path for MUMPS (255 characters).
+  static std::string scratch_directory() {
+    const char* tmpdir = std::getenv("TMPDIR");
+    const std::string dir = tmpdir && *tmpdir ? tmpdir : "/tmp";
+    const std::string origin = tmpdir && *tmpdir ? " ($TMPDIR)" : "";
+    auto refuse = [&](const std::string& why) {
+      throw ResourceError("the temporary directory '" + dir + "'" + origin + " for out-of-core factors " + why +
+                          ": set TMPDIR to a writable directory, or raise or drop --memory");
+    };
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) refuse("does not exist or is not a directory");
+    if (access(dir.c_str(), W_OK | X_OK) != 0) refuse("is not writable");
+    if (dir.size() > 255) refuse("has a path longer than MUMPS accepts (255 characters)");
+    return dir;
+  }
+
   /// Between an analysis and a factorization: keeps the factors in core
   /// unless MUMPS' estimate for an in-core factorization (INFOG(17) [MB])
   /// exceeds what the process leaves of `budget_mb` (0: no limit); then they
-  /// go out of core (ICNTL(22) = 1) to files in the temporary directory
-  /// ($TMPDIR, else /tmp), which MUMPS deletes when the instance ends.
+  /// go out of core (ICNTL(22) = 1) to files in scratch_directory(), which
+  /// MUMPS deletes when the instance ends. The memory this instance still
+  /// holds from its previous factorization (INFOG(22)) is freed by the next
+  /// one, so it is not counted as used: otherwise a run near the budget
+  /// would alternate between in core and out of core.
   void plan_memory(double budget_mb) {
+    const double held = factorized ? std::max(0, infog(22)) : 0.0;
     icntl(22) = 0;
-    if (budget_mb <= 0 || infog(17) <= budget_mb - resident_mb()) return;
+    if (budget_mb <= 0 || infog(17) <= budget_mb - std::max(0.0, resident_mb() - held)) return;
+    const std::string dir = scratch_directory();
     icntl(22) = 1;
-    std::snprintf(id.ooc_tmpdir, sizeof id.ooc_tmpdir, "%s", std::filesystem::temp_directory_path().c_str());
+    std::snprintf(id.ooc_tmpdir, sizeof id.ooc_tmpdir, "%s", dir.c_str());
     std::snprintf(id.ooc_prefix, sizeof id.ooc_prefix, "tether%ld_", static_cast<long>(getpid()));
   }
 
@@ -80,17 +105,26 @@ struct MumpsInstance {
   /// MUMPS asks for it (INFOG(1) = -9, -8).
   void run(int job) {
     id.job = job;
+    if (job == 2) factorized = false;  // the previous factors go with this call
     dmumps_c(&id);
     for (int retry = 0; retry < 3 && job == 2 && (infog(1) == -9 || infog(1) == -8); ++retry) {
       icntl(14) *= 2;
       id.job = job;
       dmumps_c(&id);
     }
+    const char* phase = job == 1 ? "analysis" : job == 2 ? "factorization" : "solve";
+    // -90: out-of-core I/O failed (disk full, directory removed meanwhile): not a property of the matrix.
+    if (infog(1) == -90 && icntl(22) == 1)
+      throw ResourceError(std::string("MUMPS could not write or read its out-of-core factors in '") + id.ooc_tmpdir +
+                          "' during the " + phase + " (INFOG(1) = -90): is the disk full? Free space there, set "
+                          "TMPDIR to another directory, or raise or drop --memory");
     if (infog(1) < 0)
-      throw SolverError("MUMPS " + std::string(job == 1 ? "analysis" : job == 2 ? "factorization" : "solve") +
-                        " failed (INFOG(1) = " + std::to_string(infog(1)) + ", INFOG(2) = " +
-                        std::to_string(infog(2)) + ")");
+      throw SolverError("MUMPS " + std::string(phase) + " failed (INFOG(1) = " + std::to_string(infog(1)) +
+                        ", INFOG(2) = " + std::to_string(infog(2)) + ")");
+    if (job == 2) factorized = true;
   }
+
+  bool factorized = false;  ///< the last factorization succeeded (its factors are held)
 };
 
 }  // namespace tether::detail

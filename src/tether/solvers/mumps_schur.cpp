@@ -1,5 +1,7 @@
 #include "tether/solvers/mumps_schur.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <string>
 
 #include "tether/solvers/mumps_instance.hpp"
@@ -29,7 +31,28 @@ void for_each_passed(const SparseMatrix& a, const std::vector<char>& in_interfac
     }
 }
 
+/// SplitMix64's finalizer: a bijection of 64-bit words that spreads every input bit.
+std::uint64_t mix(std::uint64_t x) {
+  x ^= x >> 30, x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27, x *= 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
 }  // namespace
+
+// Each entry adds a hash of (row, column, value bits) to both lanes, the
+// lanes with different keys. A matrix is a set of distinct (row, column)
+// entries, so the sum (order-free, and pipelined where a chain would not be)
+// identifies it; an entry that moves, appears or changes value changes each
+// lane by a pseudo-random 64-bit amount.
+void MumpsSchur::add_entry(Fingerprint& f, int i, int j, double value) {
+  const std::uint64_t position = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(i)) << 32) |
+                                 static_cast<std::uint32_t>(j);
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(value);
+  f.a += mix(position * 0x9e3779b97f4a7c15ULL + bits);
+  f.b += mix((bits ^ 0xd6e8feb86659fd93ULL) * 0xa0761d6478bd642fULL + position);
+  ++f.count;
+}
 
 void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interface,
                            const std::vector<char>& in_interface, bool symmetric) {
@@ -37,72 +60,68 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   const Eigen::Index m = static_cast<Eigen::Index>(interface.size());
   // The entries MUMPS sees: every one with a row or column in R (lower
   // triangle when symmetric), then an explicit zero diagonal for each
-  // interface equation so that it belongs to the pattern. Kept between
-  // factorizations as rows and values plus the start of each column (12
-  // bytes an entry); the column indices MUMPS also reads are built only
-  // for the duration of its analysis and factorization.
-  std::vector<int> rows, column_start(static_cast<std::size_t>(a.cols()) + 2, 0);
-  rows.reserve(static_cast<std::size_t>(a.nonZeros()) / (symmetric ? 2 : 1) + interface.size());
-  values_.clear();
-  values_.reserve(rows.capacity());
+  // interface equation so that it belongs to the pattern. They exist only
+  // for the duration of MUMPS's analysis and factorization; what is kept to
+  // recognise them later is their fingerprint.
+  std::vector<int> rows, cols;
+  std::vector<double> values;
+  const std::size_t capacity = static_cast<std::size_t>(a.nonZeros()) / (symmetric ? 2 : 1) + interface.size();
+  rows.reserve(capacity), cols.reserve(capacity), values.reserve(capacity);
+  Fingerprint pattern, entries;
   for_each_passed(a, in_interface, symmetric, [&](int i, int j, int k) {
-    rows.push_back(i + 1), values_.push_back(a.valuePtr()[k]);
-    ++column_start[static_cast<std::size_t>(j) + 1];
+    rows.push_back(i + 1), cols.push_back(j + 1), values.push_back(a.valuePtr()[k]);
+    add_entry(pattern, i, j), add_entry(entries, i, j, a.valuePtr()[k]);
   });
-  for (Eigen::Index j = 0; j < a.cols(); ++j)
-    column_start[static_cast<std::size_t>(j) + 1] += column_start[static_cast<std::size_t>(j)];
-  column_start.back() = column_start[static_cast<std::size_t>(a.cols())] + static_cast<int>(m);  // the interface diagonals
-  for (int e : interface) rows.push_back(e + 1), values_.push_back(0.0);
+  for (int e : interface) rows.push_back(e + 1), cols.push_back(e + 1), values.push_back(0.0);
 
-  const bool new_pattern = !analysed_ || !mumps_ || symmetric != symmetric_ || n_ != a.cols() || rows != rows_ ||
-                           column_start != column_start_;
-  rows_ = std::move(rows), column_start_ = std::move(column_start);
-
-  std::vector<int> cols(rows_.size());
-  for (Eigen::Index j = 0; j < a.cols(); ++j)
-    std::fill(cols.begin() + column_start_[static_cast<std::size_t>(j)],
-              cols.begin() + column_start_[static_cast<std::size_t>(j) + 1], static_cast<int>(j) + 1);
-  std::copy(rows_.end() - m, rows_.end(), cols.end() - m);
+  const bool new_pattern =
+      !analysed_ || !mumps_ || symmetric != symmetric_ || n_ != a.cols() || pattern != pattern_ ||
+      schur_list_.size() != interface.size() ||
+      !std::equal(interface.begin(), interface.end(), schur_list_.begin(), [](int e, int s) { return e + 1 == s; });
+  DMUMPS_STRUC_C* id = mumps_ ? &mumps_->id : nullptr;
   if (new_pattern) {
     if (!mumps_ || symmetric != symmetric_) mumps_ = std::make_unique<detail::MumpsInstance>(symmetric ? 2 : 0);
+    id = &mumps_->id;
     symmetric_ = symmetric;
     n_ = a.cols();
+    pattern_ = pattern;
     schur_list_.resize(interface.size());
     for (std::size_t k = 0; k < interface.size(); ++k) schur_list_[k] = interface[k] + 1;
-    DMUMPS_STRUC_C& id = mumps_->id;
-    id.n = static_cast<int>(n_);
-    id.nnz = static_cast<MUMPS_INT8>(rows_.size());
-    id.irn = rows_.data();
-    id.jcn = cols.data();
-    id.a = values_.data();
-    id.size_schur = static_cast<int>(m);
-    id.listvar_schur = schur_list_.data();
+    id->n = static_cast<int>(n_);
+    id->nnz = static_cast<MUMPS_INT8>(rows.size());
+    id->irn = rows.data();
+    id->jcn = cols.data();
+    id->a = values.data();
+    id->size_schur = static_cast<int>(m);
+    id->listvar_schur = schur_list_.data();
     mumps_->icntl(19) = 1;  // Schur complement, centralized by rows on the host
     mumps_->icntl(7) = n_ > kMetisThreshold ? 5 : 0;
     analysed_ = false;  // until the analysis succeeds (a failed one must be redone, not factorized)
-    mumps_->run(1);
+    try {
+      mumps_->run(1);
+    } catch (...) {
+      id->irn = id->jcn = nullptr, id->a = nullptr;  // the arrays die with this call
+      throw;
+    }
     analysed_ = true;
   }
-  DMUMPS_STRUC_C& id = mumps_->id;
-  id.irn = rows_.data();  // the vectors were replaced above: MUMPS reads them again
-  id.jcn = cols.data();
-  id.a = values_.data();
+  id->irn = rows.data();  // this call's arrays: MUMPS reads them again
+  id->jcn = cols.data();
+  id->a = values.data();
   schur_rows_.assign(static_cast<std::size_t>(m * m), 0.0);
-  id.schur = schur_rows_.data();
-  id.schur_lld = static_cast<int>(m);
+  id->schur = schur_rows_.data();
+  id->schur_lld = static_cast<int>(m);
   reduced_ready_ = false;
   factorized_ = false;
+  struct Detach {  // solves do not read the matrix: leave no dangling pointer, whatever happens
+    DMUMPS_STRUC_C* id;
+    ~Detach() { id->irn = id->jcn = nullptr, id->a = nullptr; }
+  } detach{id};
   mumps_->plan_memory(memory_budget_mb_);
-  try {
-    mumps_->run(2);
-  } catch (...) {
-    id.jcn = nullptr;  // `cols` dies with this call: leave no dangling pointer
-    throw;
-  }
-  id.jcn = nullptr;  // freed below; solves do not read the matrix
-  cols = {};
+  mumps_->run(2);
   mumps_->throw_if_null_pivots();
   factorized_ = true;
+  entries_ = entries;
   factor_entries_ = mumps_->infog(29) >= 0 ? mumps_->infog(29) : -1e6 * mumps_->infog(29);
   memory_mb_ = mumps_->infog(22);
   out_of_core_ = mumps_->icntl(22) == 1;
@@ -113,29 +132,14 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
     for (Eigen::Index j = 0; j < m; ++j)
       schur_(i, j) = symmetric_ && j > i ? schur_rows_[static_cast<std::size_t>(j * m + i)]
                                          : schur_rows_[static_cast<std::size_t>(i * m + j)];
+  schur_rows_ = {};  // m² doubles: the next factorization allocates its own
 }
 
 bool MumpsSchur::unchanged(const SparseMatrix& a, const std::vector<char>& in_interface) const {
   if (!factorized_ || a.cols() != n_ || !a.isCompressed()) return false;
-  const std::size_t outer = rows_.size() - schur_list_.size();
-  std::size_t e = 0;
-  bool same = true;
-  Eigen::Index column = -1;
-  for_each_passed(a, in_interface, symmetric_, [&](int i, int j, int k) {
-    if (!same) return;
-    if (j != column) {  // a column's first passed entry: the earlier columns must have ended here
-      for (Eigen::Index c = column + 1; c <= j; ++c)
-        if (column_start_[static_cast<std::size_t>(c)] != static_cast<int>(e)) same = false;
-      column = j;
-    }
-    if (e >= outer || rows_[e] != i + 1 || values_[e] != a.valuePtr()[k]) same = false;
-    ++e;
-  });
-  // Columns after the last one with a passed entry must be empty in the
-  // factorized matrix too (their entries may have moved into earlier columns).
-  for (Eigen::Index c = column + 1; same && c <= n_; ++c)
-    if (column_start_[static_cast<std::size_t>(c)] != static_cast<int>(e)) same = false;
-  return same && e == outer;
+  Fingerprint entries;
+  for_each_passed(a, in_interface, symmetric_, [&](int i, int j, int k) { add_entry(entries, i, j, a.valuePtr()[k]); });
+  return entries == entries_;
 }
 
 void MumpsSchur::run_schur_solve(int phase) {

@@ -16,6 +16,7 @@
 /// equation.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -46,7 +47,10 @@ class MumpsSchur {
   /// True when the entries factorize() would pass to MUMPS for `a` (pattern
   /// and values, bitwise) equal those of the last factorization, so that it
   /// still holds for `a`. Only the lower triangle is compared for a symmetric
-  /// factorization. O(nnz), no allocation.
+  /// factorization. Compared through a 128-bit fingerprint of the entries
+  /// (row, column and value bits, in order), so that no copy of the matrix
+  /// is kept: two different matrices pass for equal with a probability of
+  /// about 2⁻¹²⁸. O(nnz), no allocation.
   [[nodiscard]] bool unchanged(const SparseMatrix& a, const std::vector<char>& in_interface) const;
 
   /// -A_IR A_RR⁻¹ A_RI of the last factorization, full (both triangles), |I| × |I|.
@@ -75,11 +79,20 @@ class MumpsSchur {
   /// Solve phase with ICNTL(26) = `phase` (1 condensation, 2 expansion) on rhs_ and reduced_.
   void run_schur_solve(int phase);
 
+  /// 128-bit fingerprint of a sequence of entries (two independent 64-bit lanes).
+  struct Fingerprint {
+    std::uint64_t a = 0, b = 0;
+    std::size_t count = 0;
+    bool operator==(const Fingerprint&) const = default;
+  };
+
+  /// Adds the entry (i, j) = `value` to `f` (0-based; the pattern fingerprint uses value 0).
+  static void add_entry(Fingerprint& f, int i, int j, double value = 0.0);
+
   std::unique_ptr<detail::MumpsInstance> mumps_;
   bool symmetric_ = false;
-  std::vector<int> rows_;            ///< row of each entry passed to MUMPS, 1-based, column by column
-  std::vector<int> column_start_;    ///< first entry of each column in rows_/values_ (n + 1 of them, then the end)
-  std::vector<double> values_;       ///< the entries factorized last
+  Fingerprint pattern_;              ///< rows and columns of the entries analysed last
+  Fingerprint entries_;              ///< rows, columns and values of the entries factorized last
   double memory_budget_mb_ = 0;      ///< see set_memory_budget()
   bool out_of_core_ = false;
   bool factorized_ = false;

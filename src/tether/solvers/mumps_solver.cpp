@@ -14,6 +14,8 @@ struct MumpsSolver::Instance : detail::MumpsInstance {
   Instance() : MumpsInstance(2) {}  // general symmetric: LDLT with 2x2 pivots (indefinite allowed)
 };
 
+std::string check_out_of_core_directory() { return detail::MumpsInstance::scratch_directory(); }
+
 MumpsSolver::MumpsSolver() : mumps_(std::make_unique<Instance>()) {}
 MumpsSolver::~MumpsSolver() = default;
 
@@ -52,6 +54,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, bool /*symmetric*/) {
   factorized_ = false;
   mumps_->plan_memory(memory_budget_mb_);
   mumps_->run(2);
+  if (mumps_->icntl(22) == 1) ++out_of_core_factorizations_;
   mumps_->throw_if_null_pivots();
   factorized_ = true;
 }

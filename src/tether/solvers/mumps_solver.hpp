@@ -32,6 +32,7 @@ class MumpsSolver final : public LinearSolver {
   /// Memory the process may use [MB], 0 for no limit: beyond it the factors
   /// go out of core (see MumpsSchur::set_memory_budget).
   void set_memory_budget(double mb) { memory_budget_mb_ = mb; }
+  [[nodiscard]] int out_of_core_factorizations() const override { return out_of_core_factorizations_; }
 
  private:
   struct Instance;
@@ -42,6 +43,7 @@ class MumpsSolver final : public LinearSolver {
   Eigen::Index n_ = 0, nnz_ = 0;       ///< pattern analysed (size and entries of the full matrix)
   bool factorized_ = false;
   double memory_budget_mb_ = 0;
+  int out_of_core_factorizations_ = 0;
 };
 
 }  // namespace tether
