@@ -36,6 +36,25 @@ std::string format_time(double t) {
   return s.str();
 }
 
+/// For a step that stopped without convergence: a known cause worth naming.
+/// Coulomb friction over a faceted (unsmoothed, linear, several faces)
+/// master surface stops Newton when loaded slave nodes cross the concave
+/// kinks a deformable master forms at its nodes (docs/theory/contact.md,
+/// "Re-pairing guard"); SMOOTH rounds those corners. Empty when no pair is
+/// like that.
+std::string non_convergence_hint(const Discretization& disc) {
+  for (const auto& pair : disc.contact_pairs()) {
+    const ContactPairSetup& p = pair->setup();
+    if (pair->mu() <= 0 || p.smoothing > 0 || p.master_faces.size() < 2) continue;
+    const bool linear = std::all_of(p.master_faces.begin(), p.master_faces.end(),
+                                    [](const std::vector<int>& f) { return f.size() == 2; });
+    if (linear)
+      return "; " + p.name + " has friction over a faceted master surface, where Newton can stop as loaded slave "
+             "nodes cross the master's nodes: SMOOTH=0.2 on *CONTACT PAIR (ABAQUS's default) rounds its corners";
+  }
+  return "";
+}
+
 }  // namespace
 
 StaticAnalysis::StaticAnalysis(const Model& model, AnalysisObserver& observer, AnalysisOptions options)
@@ -381,7 +400,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
 
   while (step_time < period * (1 - 1e-12)) {
     if (increment >= step.max_increments)
-      return stop("the maximum number of increments (INC=" + std::to_string(step.max_increments) + ") was reached");
+      return stop("the maximum number of increments (INC=" + std::to_string(step.max_increments) + ") was reached" +
+                  non_convergence_hint(disc));
     dt = std::min(dt, period - step_time);
     if (period - step_time - dt < 1e-9 * period) dt = period - step_time;
     const double t_new = step_time + dt;
@@ -514,14 +534,17 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                                                 "open: let it start touching (a gap of exactly 0 counts as "
                                                 "closed), close initial gaps with ADJUST= on *CONTACT PAIR, or "
                                                 "move it into contact with a prescribed displacement first"))));
-    if (step.direct) return stop(outcome.message + " with fixed increments (*STATIC, DIRECT)");
+    if (step.direct)
+      return stop(outcome.message + " with fixed increments (*STATIC, DIRECT)" + non_convergence_hint(disc));
     if (attempt > controls.max_cutbacks)
-      return stop(outcome.message + " after " + std::to_string(controls.max_cutbacks) + " cut-backs");
+      return stop(outcome.message + " after " + std::to_string(controls.max_cutbacks) + " cut-backs" +
+                  non_convergence_hint(disc));
     dt *= controls.cutback_factor;
     easy_in_row = 0;
     ++attempt;
     if (dt < min_dt * (1 - 1e-12))
-      return stop(outcome.message + "; the increment would fall below the minimum " + format_time(min_dt));
+      return stop(outcome.message + "; the increment would fall below the minimum " + format_time(min_dt) +
+                  non_convergence_hint(disc));
     observer_.on_message("cut back to increment " + format_time(dt) + ": " + outcome.message);
   }
 
