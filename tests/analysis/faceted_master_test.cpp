@@ -143,3 +143,21 @@ TEST(FacetedMaster, FrictionalSlidingWithoutSmoothStopsAndTheMessageNamesSmooth)
   // A frictionless stop would not carry the hint (nothing to name there).
   EXPECT_EQ(smoothed.summary.message.find("faceted"), std::string::npos);
 }
+
+
+TEST(FacetedMaster, FrictionalPressingOntoTheSmoothedFoundationConvergesWhereNodesTouchWithinRoundOff) {
+  // x0 = 0.52, SMOOTH=0.2, μ = 0.3: the mesh puts the two left slave nodes
+  // 1.1e-16 above the smoothed foundation and the others at exactly 0. The
+  // two were open in the first iteration (no friction row), slid, and then
+  // reversed their slip every iteration while hopping between two pieces of
+  // the smoothed surface: step 1 stopped after 6 cut-backs (0 increments), at
+  // any increment size (the problem is linear in the load). A gap within
+  // round-off now touches: the whole deck, slide included, completes.
+  const auto run = run_deck_text(block_on_foundation(0.52, "*FRICTION\n0.3\n", ", SMOOTH=0.2"));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const auto [most, attempts] = iterations(run);
+  std::printf("[ faceted ] frictional, SMOOTH=0.2, x0 = 0.52: %d increments, %d iterations, at most %d per increment\n",
+              run.summary.increments, run.summary.iterations, most);
+  EXPECT_EQ(attempts, 10);  // 2 + 8, no cut-back
+  EXPECT_LE(most, 8);
+}

@@ -499,6 +499,28 @@ TEST(ContactNode, ANodeTouchingAtRestTakesTheStickRow) {
   EXPECT_LT(tangent_error(f.node(), f.state(), 1e-7), 2e-6);
 }
 
+// A node placed on the master by the mesh generator lands a few ulps either
+// side of it. On the positive side (g = +1e-15) it must touch like a node at
+// exactly 0 — closed, at rest, the stick row — not be open, carry no friction
+// in the first iteration and slide freely: that stopped a block pressed with
+// friction onto a smoothed foundation at any increment size (x0 = 0.52 in
+// tests/analysis/faceted_master_test.cpp). A real clearance (1e-9) stays open.
+TEST(ContactNode, AGapWithinRoundOffTouchesAndAClearanceDoesNot) {
+  Fixture f(Master::Linear, hard(), Friction::Exact);
+  f.u.setZero();
+  f.u[1] = -f.reference[0].y() + 1e-15;
+  f.u_start = f.u;
+  f.pair->update_connectivity(f.state());
+  ASSERT_GT(f.node().values(f.state()).gap, 0.0);
+  const ContactBranch touching = f.node().branch(f.state());
+  EXPECT_EQ(touching.status, ContactStatus::Stick);
+  EXPECT_TRUE(touching.friction_active);
+  f.u[1] = -f.reference[0].y() + 1e-9;
+  f.u_start = f.u;
+  f.pair->update_connectivity(f.state());
+  EXPECT_EQ(f.node().branch(f.state()).status, ContactStatus::Open);
+}
+
 TEST(ContactNode, ForceOnTheSlaveIsNormalForceAlongTheOutwardNormal) {
   Fixture f(Master::Linear, linear_law(), Friction::None);
   f.u.setZero();

@@ -531,8 +531,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                              (disc.contact_pairs().empty()
                                   ? std::string()
                                   : std::string("; a body held only by contact floats while its contact is "
-                                                "open: let it start touching (a gap of exactly 0 counts as "
-                                                "closed), close initial gaps with ADJUST= on *CONTACT PAIR, or "
+                                                "open: let it start touching (a gap of 0, to within "
+                                                "round-off, counts as closed), close initial gaps with ADJUST= on *CONTACT PAIR, or "
                                                 "move it into contact with a prescribed displacement first"))));
     if (step.direct)
       return stop(outcome.message + " with fixed increments (*STATIC, DIRECT)" + non_convergence_hint(disc));

@@ -73,6 +73,14 @@ struct Gap {
   double g = 0;
   ContactVector gradient;
   ContactMatrix hessian;
+  /// Round-off of g [length]: 1e-12 of the largest coordinate involved.
+  double round_off = 0;
+  /// g for deciding contact: a positive gap within round-off is a touch
+  /// (0). A node placed on the master surface by the mesh generator lands a
+  /// few ulps either side of it; on the positive side it would otherwise be
+  /// open in the first iteration, carry no friction and slide freely while
+  /// its neighbours, at exactly 0, touch and stick.
+  [[nodiscard]] double decisive() const { return g > 0 && g <= round_off ? 0.0 : g; }
 };
 
 Gap gap_of(const ContactSlave& s, std::span<const Eigen::Vector2d> y, bool need_hessian) {
@@ -80,6 +88,9 @@ Gap gap_of(const ContactSlave& s, std::span<const Eigen::Vector2d> y, bool need_
   const auto seg = y.subspan(1);
   gap.geometry = segment_geometry(y[0], seg, need_hessian ? ContactDerivatives::hessian : ContactDerivatives::gradient);
   const int nu = 2 * static_cast<int>(y.size());
+  double largest = 0;
+  for (const Eigen::Vector2d& p : y) largest = std::max(largest, p.lpNorm<Eigen::Infinity>());
+  gap.round_off = 1e-12 * largest;
   if (!s.pairing.at_corner) {
     gap.g = gap.geometry.gap;
     gap.gradient = gap.geometry.gap_gradient;
@@ -225,7 +236,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     // min(λn/c, g + ε λn) = 0: exact for ε = 0, regularised otherwise.
     const double eps = enforcement.epsilon;
     const double g_reg = gap.g + eps * lambda_n;
-    closed = lambda_n - c * g_reg >= 0 || s.held_closed;
+    closed = lambda_n - c * (gap.decisive() + eps * lambda_n) >= 0 || s.held_closed;
     N = closed ? std::max(lambda_n, 0.0) : 0.0;
     if (closed && lambda_n > 0) dN[in] = 1;
     // An open node's multiplier is driven to zero by its own row; its force
@@ -260,7 +271,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
       const double rho = enforcement.penalty;
       const double base = enforcement.method == Enforcement::Method::Augmented ? s.lambda_bar : 0.0;
       const double trial = base - rho * gap.g;
-      if (trial >= 0 && (trial > 0 || gap.g <= 0)) {
+      if (trial >= 0 && (trial > 0 || gap.decisive() <= 0)) {
         N = trial;
         dN.head(nu) = -rho * gap.gradient;
       }
