@@ -24,7 +24,8 @@ Model (units mm, N, MPa; plane strain, thickness 1; NLGEOM in both steps):
     (tether: exact; ccx: penalty K = 50 E), *FRICTION mu (--mu, default 0.3;
     exact stick in tether) or "mu, K" with --stick-slope K (penalty stick, for
     ccx, which otherwise defaults to 1e5); --mu 0 writes no *FRICTION;
-    *CONTACT PAIR, TYPE=NODE TO SURFACE.
+    *CONTACT PAIR, TYPE=NODE TO SURFACE. --die-as-master swaps the roles (the
+    surface names stay): the track's nodes become the slaves of the die's arc.
   * Output, every increment: *NODE PRINT, NSET=TOPN, TOTALS=ONLY of RF (the
     force the drivers exert on the die: Fx, Fy), U of REF (the top node above
     the die centre), *CONTACT PRINT CSTR. --controls R_n C_n adds *CONTROLS,
@@ -179,7 +180,11 @@ def write_deck(path, mesh, opts):
             "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD"]
     if opts.mu > 0:
         out += ["*FRICTION", f"{opts.mu:g}" + (f", {opts.stick_slope:g}" if opts.stick_slope else "")]
-    out += ["*CONTACT PAIR, INTERACTION=SI, TYPE=NODE TO SURFACE", "SLAVE, MASTER",
+    # --die-as-master swaps the roles, not the surface names: the die's arc
+    # (surface SLAVE) becomes the master and the block's track (surface
+    # MASTER) the slave, as ABAQUS advises for a die much stiffer than the block.
+    out += ["*CONTACT PAIR, INTERACTION=SI, TYPE=NODE TO SURFACE",
+            "MASTER, SLAVE" if opts.die_as_master else "SLAVE, MASTER",
             "*BOUNDARY", "BOTTOM, 1, 2"]
     output = ["*NODE PRINT, NSET=TOPN, TOTALS=ONLY", "RF", "*NODE PRINT, NSET=REF", "U",
               "*CONTACT PRINT", "CSTR"]
@@ -199,7 +204,8 @@ def write_deck(path, mesh, opts):
             "master_segment": [seg[0], seg[-1]], "track": [t0, t1], "block_length": mesh["L"],
             "top_nodes": len(top_nodes), "ref": nid(ref), "radius": Rd, "x0": x0, "mu": opts.mu,
             "indent": opts.indent, "slide": opts.slide, "E": E, "die_E": opts.die_modulus * E, "nu": NU,
-            "stick_slope": opts.stick_slope, "indent_increments": n1, "slide_increments": n2,
+            "stick_slope": opts.stick_slope, "die_as_master": opts.die_as_master,
+            "indent_increments": n1, "slide_increments": n2,
             "segments_per_increment": opts.slide / n2 / opts.master_size}
 
 
@@ -224,6 +230,9 @@ def main(argv=None):
                     help="die element size near its lowest point [mm] (default 0.05)")
     ap.add_argument("--slave-width", type=float, default=1.0, help="slave faces within this |x - X0| [mm]")
     ap.add_argument("--die-modulus", type=float, default=1.0, help="die E in units of the block's E (default 1)")
+    ap.add_argument("--die-as-master", action="store_true",
+                    help="the die's arc (surface SLAVE) is the master and the block's track (surface MASTER) "
+                         "the slave: the stiffer body as the master, as ABAQUS advises for a stiff die")
     ap.add_argument("--margin", type=float, default=10.0, help="block beyond the track ends, and X0 [mm] (default 10)")
     ap.add_argument("--depth", type=float, default=10.0, help="block depth H [mm] (default 10)")
     ap.add_argument("--track-depth", type=float, default=0.5,

@@ -162,3 +162,36 @@ SLAVE, MASTER
   expect_deck_error_at(quadratic, "SLAVE, MASTER", {"SMOOTH", "linear (2-node)", "quadratic", "element 1"});
   EXPECT_NO_THROW(read_deck_string(replaced(quadratic, ", SMOOTH=0.2", ""), "c.inp"));
 }
+
+// A slave body 10 or more times stiffer than its master: a warning at the
+// *CONTACT PAIR data line naming both surfaces, the ratio and the swap (the
+// 100x stiff die as the slave of the ironing deck stops in its slide; as the
+// master it completes: docs/verification_contact.md, finding 2). Not for the
+// right roles, a ratio below 10, or a node-based slave (no material).
+TEST(ContactKeywords, AStiffSlaveBodyIsWarnedAboutWithTheSwap) {
+  const auto deck = [](const std::string& upper_modulus, const std::string& pair) {
+    return "*NODE\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n5, 0, 1\n6, 1, 1\n7, 1, 2\n8, 0, 2\n"
+           "*ELEMENT, TYPE=CPE4, ELSET=LOW\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=CPE4, ELSET=UP\n2, 5, 6, 7, 8\n"
+           "*NSET, NSET=UPN\n5, 6\n"
+           "*SURFACE, NAME=LOWTOP\nLOW, S3\n*SURFACE, NAME=UPBOTTOM\nUP, S1\n*SURFACE, NAME=UPNODES, TYPE=NODE\nUPN\n"
+           "*MATERIAL, NAME=SOFT\n*ELASTIC\n1000, 0.3\n*MATERIAL, NAME=STIFF\n*ELASTIC\n" +
+           upper_modulus + ", 0.3\n*SOLID SECTION, ELSET=LOW, MATERIAL=SOFT\n*SOLID SECTION, ELSET=UP, MATERIAL=STIFF\n"
+           "*SURFACE INTERACTION, NAME=SI\n*CONTACT PAIR, INTERACTION=SI\n" +
+           pair + "\n*STEP\n*STATIC\n*END STEP\n";
+  };
+  const auto warnings_of = [](const std::string& text) {
+    std::vector<DeckWarning> w;
+    read_deck_string(text, "pair.inp", &w);
+    return w;
+  };
+  const std::vector<DeckWarning> stiff_slave = warnings_of(deck("1e5", "UPBOTTOM, LOWTOP"));
+  ASSERT_EQ(stiff_slave.size(), 1u);
+  EXPECT_EQ(stiff_slave[0].where.line, 32);  // the data line of *CONTACT PAIR
+  for (const char* words : {"slave surface UPBOTTOM", "100 times stiffer", "master surface LOWTOP",
+                            "E 100000 against 1000", "Swap them on the data line: LOWTOP, UPBOTTOM"})
+    EXPECT_NE(stiff_slave[0].message.find(words), std::string::npos) << words << " in: " << stiff_slave[0].message;
+  EXPECT_TRUE(warnings_of(deck("1e5", "LOWTOP, UPBOTTOM")).empty());  // the stiffer body is the master
+  EXPECT_TRUE(warnings_of(deck("9e3", "UPBOTTOM, LOWTOP")).empty());  // 9 times: below the threshold
+  EXPECT_EQ(warnings_of(deck("1e4", "UPBOTTOM, LOWTOP")).size(), 1u);  // 10 times
+  EXPECT_TRUE(warnings_of(deck("1e5", "UPNODES, LOWTOP")).empty());  // node surface: no body to compare
+}

@@ -18,7 +18,8 @@
 namespace tether::verification {
 
 /// Deck written by the generator tools/`tool` with `options` into
-/// <build>/tests/verification/`folder`/`name`.inp, once (cached); throws
+/// <build>/tests/verification/`folder`/`name`.inp, once (cached while the
+/// command stays the same: it is kept in `name`.command); throws
 /// std::runtime_error("skip") without python3 and gmsh, and "generator
 /// failed: ..." when the tool fails.
 inline std::filesystem::path generated_deck(const std::string& tool, const std::string& folder,
@@ -29,10 +30,17 @@ inline std::filesystem::path generated_deck(const std::string& tool, const std::
   const fs::path dir = fs::path(TETHER_BINARY_DIR) / "tests" / "verification" / folder;
   fs::create_directories(dir);
   const fs::path deck = dir / (name + ".inp");
-  if (!fs::exists(deck)) {
-    const std::string command = "python3 \"" + std::string(TETHER_SOURCE_DIR) + "/tools/" + tool + "\" " + options +
-                                " \"" + deck.string() + "\" > /dev/null";
+  // The command that wrote the cached deck sits beside it: a test whose
+  // options changed gets a fresh deck, not the old one under the same name.
+  const fs::path written_by = dir / (name + ".command");
+  const std::string command = "python3 \"" + std::string(TETHER_SOURCE_DIR) + "/tools/" + tool + "\" " + options +
+                              " \"" + deck.string() + "\" > /dev/null";
+  std::string cached;
+  if (std::ifstream in(written_by); in) std::getline(in, cached);
+  if (!fs::exists(deck) || cached != command) {
+    fs::remove(written_by);
     if (std::system(command.c_str()) != 0) throw std::runtime_error("generator failed: " + command);
+    std::ofstream(written_by) << command << "\n";
   }
   return deck;
 }

@@ -19,13 +19,11 @@ double measure(const Model& model, const Element& e, const Eigen::Vector2d& x) {
   return e.section >= 0 ? model.sections[static_cast<std::size_t>(e.section)].thickness : 1.0;
 }
 
-/// A stiffness of the element's material [stress]: E, or ~6 C10 for neo-Hooke.
+/// A stiffness of the element's material [stress] (MaterialData::modulus), 0 without a section.
 double modulus(const Model& model, const Element& e) {
   if (e.section < 0) return 0;
-  const MaterialData& m = model.materials[static_cast<std::size_t>(model.sections[static_cast<std::size_t>(e.section)].material)];
-  if (m.elastic) return m.elastic->young;
-  if (m.neo_hooke) return 6 * m.neo_hooke->c10;
-  return 0;
+  return model.materials[static_cast<std::size_t>(model.sections[static_cast<std::size_t>(e.section)].material)]
+      .modulus();
 }
 
 std::vector<int> face_node_indices(const Model& model, const ElementFace& f) {

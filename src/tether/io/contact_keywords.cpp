@@ -254,4 +254,29 @@ void apply_contact_adjustments(DeckState& state) {
   }
 }
 
+void warn_about_stiff_slaves(DeckState& state) {
+  const Model& model = state.model;
+  // The stiffest material among the elements of a surface's faces [stress]; 0 for a node surface.
+  const auto modulus = [&](const Surface& surface) {
+    double most = 0;
+    for (const ElementFace& f : surface.faces) {
+      const Element& e = model.elements[static_cast<std::size_t>(f.element)];
+      if (e.section < 0) continue;
+      const SolidSection& section = model.sections[static_cast<std::size_t>(e.section)];
+      most = std::max(most, model.materials[static_cast<std::size_t>(section.material)].modulus());
+    }
+    return most;
+  };
+  for (const ContactPairData& pair : model.contact_pairs) {
+    const double slave = modulus(model.surfaces.at(pair.slave)), master = modulus(model.surfaces.at(pair.master));
+    if (!(master > 0) || slave < kStiffSlaveRatio * master) continue;
+    state.warn(pair.where, "the slave surface " + pair.slave + " belongs to a body " +
+                               format_number(slave / master) + " times stiffer than the master surface " +
+                               pair.master + " (E " + format_number(slave) + " against " + format_number(master) +
+                               "): the stiffer body should be the master (ABAQUS's advice too); a stiff slave "
+                               "over-constrains node-to-surface contact and Newton may need many more iterations "
+                               "or stop. Swap them on the data line: " + pair.master + ", " + pair.slave);
+  }
+}
+
 }  // namespace tether::deck

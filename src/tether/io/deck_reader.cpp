@@ -72,6 +72,7 @@ Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& de
     state.warn({deck_path, 0}, "the deck has no *STEP: nothing will be solved");
   deck::check_model(state);
   deck::apply_contact_adjustments(state);
+  deck::warn_about_stiff_slaves(state);
   return std::move(state.model);
 }
 

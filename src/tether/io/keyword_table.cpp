@@ -291,7 +291,8 @@ std::vector<KeywordSpec> build_table() {
        {real("ELASTIC SLIP", "0", "ABAQUS: slip at which the full friction force is reached (a stick penalty).")},
        handle_friction, ""},
       {"CONTACT PAIR", kModelData, "Node-to-surface contact of a slave surface against a master surface.",
-       "`slave_surface, master_surface` (master: element faces; slave: element faces or nodes)",
+       "`slave_surface, master_surface` (master: element faces; slave: element faces or nodes; the stiffer "
+       "body should be the master: a slave 10 or more times stiffer is warned about)",
        {name("INTERACTION", "The *SURFACE INTERACTION to use.", true),
         choice("TYPE", "NODE TO SURFACE", {"NODE TO SURFACE", "SURFACE TO SURFACE"},
                "NODE TO SURFACE (tether's formulation); SURFACE TO SURFACE is refused."),

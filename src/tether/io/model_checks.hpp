@@ -19,6 +19,12 @@ void check_model(DeckState& state);
 /// ABAQUS does), and notes how many moved. In contact_keywords.cpp.
 void apply_contact_adjustments(DeckState& state);
 
+/// Slave surfaces of a body at least kStiffSlaveRatio times stiffer than
+/// their master (MaterialData::modulus of the faces' elements): a warning at
+/// the *CONTACT PAIR line that names both and the swap. In contact_keywords.cpp.
+void warn_about_stiff_slaves(DeckState& state);
+inline constexpr double kStiffSlaveRatio = 10;
+
 /// Determinant of the isoparametric Jacobian at each corner of `e` (in
 /// corner order), from the reference coordinates of the model.
 std::vector<double> corner_jacobians(const Model& model, const Element& e);

@@ -26,4 +26,7 @@ bool is_integer_token(std::string_view token);
 /// Upper-case copy.
 std::string to_upper(std::string_view text);
 
+/// "%g"-like text of a number (6 significant digits) for messages.
+std::string format_number(double v);
+
 }  // namespace tether::deck

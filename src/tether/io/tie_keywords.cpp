@@ -19,20 +19,12 @@ namespace tether::deck {
 
 namespace {
 
-/// "%g"-like text of a number for messages.
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
-
-std::string point(const Eigen::Vector2d& x) { return "(" + num(x.x()) + ", " + num(x.y()) + ")"; }
+std::string point(const Eigen::Vector2d& x) { return "(" + format_number(x.x()) + ", " + format_number(x.y()) + ")"; }
 
 /// POSITION TOLERANCE=, >= 0 (0 or absent: the keyword's default).
 double position_tolerance(const ParameterValues& params, const SourceLocation& at) {
   const double tolerance = params.real("POSITION TOLERANCE");
-  if (tolerance < 0) throw InputError(at, "POSITION TOLERANCE=" + num(tolerance) + ": expected a length >= 0");
+  if (tolerance < 0) throw InputError(at, "POSITION TOLERANCE=" + format_number(tolerance) + ": expected a length >= 0");
   return tolerance;
 }
 
@@ -178,19 +170,19 @@ void tie_surfaces(DeckState& state, const DataLine& line, const Enforcement& enf
     std::string why = too_far.empty()
                           ? "every node of slave surface " + slave.name + " is also a node of the master surface"
                           : "no node of slave surface " + slave.name + " lies within POSITION TOLERANCE=" +
-                                num(tolerance) + " of master surface " + master.name + " (the closest is " +
-                                num(closest_untied) + " away)";
+                                format_number(tolerance) + " of master surface " + master.name + " (the closest is " +
+                                format_number(closest_untied) + " away)";
     throw InputError(at, "*TIE " + name + " ties nothing: " + why +
                              "; expected slave nodes on (or near) the master surface");
   }
   if (!too_far.empty())
     state.warn(at, "*TIE " + name + ": " + std::to_string(too_far.size()) + " slave node(s) farther than POSITION " +
-                       "TOLERANCE=" + num(tolerance) + " from master surface " + master.name +
+                       "TOLERANCE=" + format_number(tolerance) + " from master surface " + master.name +
                        " are not tied: " + labels(model, too_far));
   if (n_moved > 0)
     state.warn(at, "*TIE " + name + ": ADJUST=YES moved " + std::to_string(n_moved) +
                        " slave node(s) onto master surface " + master.name + " in the reference configuration " +
-                       "(largest move " + num(largest_move) + "); ADJUST=NO keeps them where they are");
+                       "(largest move " + format_number(largest_move) + "); ADJUST=NO keeps them where they are");
 }
 
 }  // namespace
@@ -255,7 +247,7 @@ void handle_periodic(DeckState& state, const KeywordBlock& block, const Paramete
                                " at " + point(xa[static_cast<std::size_t>(pairing.unpaired_a)]) +
                                " has no partner in " + f[1] + ": expected a node at " +
                                point(xa[static_cast<std::size_t>(pairing.unpaired_a)] + translation) +
-                               " within POSITION TOLERANCE=" + num(tolerance) + " (translation " +
+                               " within POSITION TOLERANCE=" + format_number(tolerance) + " (translation " +
                                point(translation) + ")");
     }
     if (pairing.unpaired_b >= 0) {

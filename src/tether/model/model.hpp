@@ -62,6 +62,15 @@ struct MaterialData {
   std::optional<NeoHooke> neo_hooke;
   std::optional<double> density;  ///< [mass/volume]
   SourceLocation where;
+
+  /// A stiffness of the material [stress] for scaling and comparing bodies:
+  /// E, or 6 C10 (= 3μ, E of the incompressible small-strain limit) for
+  /// neo-Hooke; 0 with neither.
+  [[nodiscard]] double modulus() const {
+    if (elastic) return elastic->young;
+    if (neo_hooke) return 6 * neo_hooke->c10;
+    return 0;
+  }
 };
 
 /// `*SOLID SECTION`.
