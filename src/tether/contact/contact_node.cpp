@@ -119,26 +119,6 @@ Gap gap_of(const ContactSlave& s, std::span<const Eigen::Vector2d> y, bool need_
   return gap;
 }
 
-/// Hessian of the slip increment over the points of slip_points(), by
-/// central differences of its exact gradient (the curvature term T ∂²Δs
-/// only; see the theory page).
-Eigen::MatrixXd slip_hessian(std::vector<Eigen::Vector2d> points, int m, double xi_c) {
-  const int n = 2 * static_cast<int>(points.size());
-  const double h = 1e-6 * std::max((points[2] - points[1]).norm(), 1e-300);
-  Eigen::MatrixXd H(n, n);
-  for (int j = 0; j < n; ++j) {
-    auto& c = points[static_cast<std::size_t>(j / 2)][j % 2];
-    const double keep = c;
-    c = keep + h;
-    const SlipVector plus = slip_of(points, m, xi_c, nullptr, true).gradient;
-    c = keep - h;
-    const SlipVector minus = slip_of(points, m, xi_c, nullptr, true).gradient;
-    c = keep;
-    H.col(j) = (plus - minus) / (2 * h);
-  }
-  return 0.5 * (H + H.transpose());
-}
-
 /// T of r_real = Tᵀ r_v, K_real = Tᵀ K_v T: the local unknowns of compute()
 /// [slave, current segment's virtual nodes, committed segment's virtual nodes
 /// (after a hand-over), multipliers] as linear functions of the slave's dofs
@@ -293,16 +273,29 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
   const double ds = slip.value;
   const SlipVector& grad_ds = slip.gradient;
   point.slip = ds;
+  // The friction force T acts at the contact point y(ξ*) along t: its
+  // virtual work is T |y'| δξ* = T (δy_s - Σ N_a(ξ*) δy^a)·t (at g = 0), so
+  // its direction over [slave, segment] is F = |y'| ∂ξ*/∂x, and ∂F/∂x =
+  // ∂ξ*/∂x ⊗ ∂|y'|/∂x + |y'| ∂²ξ*/∂x². (Not T ∇Δs: that would put the
+  // master's share at the committed point ξ_c, where the slave was at the
+  // last converged increment, and move it to ξ* when the next increment
+  // commits: a jump of the residual between increments, and answers that
+  // depend on the increment size.)
+  const SegmentGeometry& geo = gap.geometry;
+  const ContactVector force_direction = geo.metric * geo.xi_gradient;
+  const auto force_jacobian = [&] {
+    return ContactMatrix(geo.xi_gradient * geo.metric_gradient.transpose() + geo.metric * geo.xi_hessian);
+  };
   double T = 0;
   if (exact_stick) {
     T = lambda_t;
     const double tau = lambda_t + c * ds;
     const double bound = mu * N;
     if (out) {
-      out->residual.head(ns) += lambda_t * grad_ds;
+      out->residual.head(nu) += lambda_t * force_direction;
       if (need_tangent) {
-        out->tangent.topLeftCorner(ns, ns) += lambda_t * slip_hessian(points, m, s.committed_xi);
-        out->tangent.col(it).head(ns) += grad_ds;
+        out->tangent.topLeftCorner(nu, nu) += lambda_t * force_jacobian();
+        out->tangent.col(it).head(nu) += force_direction;
       }
     }
     // A closed node without force and with τ = 0 — touching at the start of
@@ -362,10 +355,10 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
       dT = mu * sign * dN;
     }
     if (out) {
-      out->residual.head(ns) += T * grad_ds;
+      out->residual.head(nu) += T * force_direction;
       if (need_tangent && T != 0) {
-        out->tangent.topRows(ns) += grad_ds * dT.transpose();
-        out->tangent.topLeftCorner(ns, ns) += T * slip_hessian(points, m, s.committed_xi);
+        out->tangent.topRows(nu) += force_direction * dT.transpose();
+        out->tangent.topLeftCorner(nu, nu) += T * force_jacobian();
       }
     }
   }
