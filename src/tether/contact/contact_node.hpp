@@ -13,7 +13,8 @@
 ///   normal:   r_u += -N_λ ∇g,  HARD: N_λ = λn and
 ///             r_λn = -g (closed: λn - c g >= 0)  or  -λn/c (open);
 ///             soft: N = A p(-g), no multiplier;
-///   friction: r_u += T ∇Δs,  exact stick: T = λt and
+///   friction: r_u += T F, F = |y'| ∂ξ*/∂x (T at the contact point y(ξ*)
+///             along t), exact stick: T = λt and
 ///             r_λt = Δs (stick: |λt + c Δs| < μN), -(λt - μN sgn(λt + cΔs))/c (slip),
 ///             -λt/c (open); penalty: T = return map of T_old + k Δs onto |T| <= μN.
 ///
