@@ -22,6 +22,20 @@ constexpr int kParallelThreshold = 2048;
 
 }  // namespace
 
+bool SparsityPattern::matches(const SparseMatrix& m) const {
+  if (m.rows() != n || m.cols() != n || m.nonZeros() != nonZeros() || !m.isCompressed()) return false;
+  return std::equal(outer.begin(), outer.end(), m.outerIndexPtr()) &&
+         std::equal(inner.begin(), inner.end(), m.innerIndexPtr());
+}
+
+void SparsityPattern::assign_to(SparseMatrix& m) const {
+  m.resize(n, n);  // compressed, no entries; keeps the storage
+  m.resizeNonZeros(nonZeros());
+  std::copy(outer.begin(), outer.end(), m.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), m.innerIndexPtr());
+  std::fill_n(m.valuePtr(), inner.size(), 0.0);
+}
+
 Assembler::Assembler(std::vector<Contribution*> contributions, EquationMap equations,
                      std::vector<int> reserved_block)
     : contributions_(std::move(contributions)), equations_(std::move(equations)),
@@ -45,9 +59,9 @@ bool Assembler::update_connectivity(const EvaluationState& state) {
 }
 
 int Assembler::find_position(int row, int col) const {
-  const int* inner = pattern_.innerIndexPtr();
-  const int* begin = inner + pattern_.outerIndexPtr()[col];
-  const int* end = inner + pattern_.outerIndexPtr()[col + 1];
+  const int* inner = pattern_.inner.data();
+  const int* begin = inner + pattern_.outer[static_cast<std::size_t>(col)];
+  const int* end = inner + pattern_.outer[static_cast<std::size_t>(col) + 1];
   const int* it = std::lower_bound(begin, end, row);
   return it != end && *it == row ? static_cast<int>(it - inner) : -1;
 }
@@ -155,8 +169,12 @@ void Assembler::build_pattern() {
   }
   for (int ej : reserved_block_)
     for (int ei : reserved_block_) rows[fill[ej]++] = ei;
-  std::vector<int> outer(n + 1, 0);
-  std::vector<int> inner;
+  // Built in place in pattern_ (the previous structure is dropped first).
+  pattern_ = SparsityPattern{};
+  pattern_.n = n;
+  std::vector<int>& outer = pattern_.outer;
+  std::vector<int>& inner = pattern_.inner;
+  outer.assign(static_cast<std::size_t>(n) + 1, 0);
   inner.reserve(rows.size() / 2);
   for (int j = 0; j < n; ++j) {
     auto b = rows.begin() + count[j], e = rows.begin() + count[j + 1];
@@ -167,12 +185,8 @@ void Assembler::build_pattern() {
   }
   rows.clear();
   rows.shrink_to_fit();
+  inner.shrink_to_fit();
 
-  pattern_ = SparseMatrix(n, n);
-  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
-  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
-  std::fill_n(pattern_.valuePtr(), inner.size(), 0.0);
   auto position = [&](int row, int col) {
     return static_cast<int>(std::lower_bound(inner.data() + outer[col], inner.data() + outer[col + 1], row) -
                             inner.data());
@@ -258,16 +272,7 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   if (tangent) {
     // A re-paired contact node can move entries without changing their
     // number: compare the structure, not only its size.
-    const auto same_structure = [&] {
-      if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows() ||
-          tangent->cols() != pattern_.cols() || !tangent->isCompressed())
-        return false;
-      const auto n = static_cast<std::size_t>(pattern_.cols() + 1);
-      const auto nnz = static_cast<std::size_t>(pattern_.nonZeros());
-      return std::equal(pattern_.outerIndexPtr(), pattern_.outerIndexPtr() + n, tangent->outerIndexPtr()) &&
-             std::equal(pattern_.innerIndexPtr(), pattern_.innerIndexPtr() + nnz, tangent->innerIndexPtr());
-    };
-    if (!same_structure()) *tangent = pattern_;
+    if (!pattern_.matches(*tangent)) pattern_.assign_to(*tangent);
     std::fill_n(tangent->valuePtr(), tangent->nonZeros(), 0.0);
   }
   double* values = tangent ? tangent->valuePtr() : nullptr;

@@ -23,6 +23,24 @@
 
 namespace tether {
 
+/// Compressed-column structure of the tangent over the free equations, without
+/// values: the tangent itself is the caller's matrix (assemble()), so the
+/// assembler does not keep a second, zero-valued copy of its values.
+struct SparsityPattern {
+  int n = 0;               ///< rows = columns (free equations)
+  std::vector<int> outer;  ///< n + 1 column starts
+  std::vector<int> inner;  ///< row indices, sorted and unique within each column
+
+  [[nodiscard]] Eigen::Index rows() const { return n; }
+  [[nodiscard]] Eigen::Index cols() const { return n; }
+  [[nodiscard]] Eigen::Index nonZeros() const { return static_cast<Eigen::Index>(inner.size()); }
+  /// True when `m` is compressed and has exactly this structure.
+  [[nodiscard]] bool matches(const SparseMatrix& m) const;
+  /// Makes `m` a compressed matrix with this structure and zero values
+  /// (reusing its storage when large enough).
+  void assign_to(SparseMatrix& m) const;
+};
+
 /// Wall-clock seconds spent in the parts of one assembly (for benchmarks).
 struct AssemblyTiming {
   double pattern = 0;   ///< last pattern build
@@ -52,7 +70,7 @@ class Assembler {
   void assemble(const EvaluationState& state, Eigen::VectorXd& residual, SparseMatrix* tangent);
 
   [[nodiscard]] const EquationMap& equations() const { return equations_; }
-  [[nodiscard]] const SparseMatrix& pattern() const { return pattern_; }
+  [[nodiscard]] const SparsityPattern& pattern() const { return pattern_; }
   [[nodiscard]] int n_colours() const { return static_cast<int>(colours_.size()); }
   [[nodiscard]] const AssemblyTiming& timing() const { return timing_; }
   /// Pattern builds so far (the first included) and connectivity changes
@@ -75,7 +93,7 @@ class Assembler {
 
   std::vector<Contribution*> contributions_;
   EquationMap equations_;
-  SparseMatrix pattern_;                 ///< values zero; copied into the tangent
+  SparsityPattern pattern_;              ///< the tangent's structure; assemble() gives it to a tangent that lacks it
   /// Value-array index of local entry (a, b) of contribution c, column-major:
   /// positions_[offsets_[c] + b * n + a]; -1 where a row or column is prescribed.
   std::vector<int> positions_;
