@@ -1,15 +1,50 @@
 #include "tether/elements/continuum_element.hpp"
 
 #include <Eigen/LU>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <fmt/format.h>
 #include <numbers>
 
 #include "tether/fem/extrapolation.hpp"
-#include "tether/fem/shape_functions.hpp"
 
 namespace tether {
+
+namespace {
+
+/// Shape functions and local derivatives at the points of one rule, the same
+/// for every element of a shape (computed once).
+struct RuleShapes {
+  std::vector<ShapeVector> N;
+  std::vector<ShapeGradient> dN;
+  std::vector<double> weight;
+};
+
+const RuleShapes& rule_shapes(Shape shape, QuadratureRule rule) {
+  static const auto table = [] {
+    std::array<std::array<RuleShapes, 4>, 4> t;
+    for (Shape sh : {Shape::Tri3, Shape::Quad4, Shape::Tri6, Shape::Quad8})
+      for (QuadratureRule ru : {QuadratureRule::Triangle1, QuadratureRule::Triangle3, QuadratureRule::Quad2x2,
+                                QuadratureRule::Quad3x3}) {
+        const bool tri_shape = sh == Shape::Tri3 || sh == Shape::Tri6;
+        if (tri_shape != (rule_shape(ru) == Shape::Tri3)) continue;
+        RuleShapes& r = t[static_cast<std::size_t>(sh)][static_cast<std::size_t>(ru)];
+        for (const QuadraturePoint& p : quadrature_points(ru)) {
+          ShapeVector N;
+          ShapeGradient dN;
+          shape_functions(sh, p.xi, N, dN);
+          r.N.push_back(N);
+          r.dN.push_back(dN);
+          r.weight.push_back(p.weight);
+        }
+      }
+    return t;
+  }();
+  return table[static_cast<std::size_t>(shape)][static_cast<std::size_t>(rule)];
+}
+
+}  // namespace
 
 ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vector<int> node_indices,
                                    std::vector<Eigen::Vector2d> ref_coords,
@@ -38,38 +73,39 @@ ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vect
     dofs_.push_back(dofs.displacement(node, 1));
   }
 
-  geometry_.resize(static_cast<std::size_t>(n_points_ * stride()));
-  ShapeVector N;
-  ShapeGradient dN;
-  const auto points = quadrature_points(rule_);
+  PointGeometry g;
   for (int q = 0; q < n_points_; ++q) {
-    shape_functions(type.shape, points[q].xi, N, dN);
-    Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // J(i,j) = dX_i/dxi_j
-    Eigen::Vector2d X = Eigen::Vector2d::Zero();
-    for (int a = 0; a < n_nodes_; ++a) {
-      J += ref_coords_[a] * dN.row(a);
-      X += N(a) * ref_coords_[a];
-    }
-    const double detJ = J.determinant();
+    const double detJ = point_geometry(q, g);
     if (!(detJ > 0))
       throw ModelError(fmt::format(
           "{}: Jacobian determinant {:.3g} <= 0 at integration point {} in the reference "
           "configuration (distorted element or clockwise node order)",
           describe(), detJ, q + 1));
-    if (axisymmetric && !(X.x() > 0))
+    if (axisymmetric && !(g.R > 0))
       throw ModelError(fmt::format("{}: integration point {} lies at r = {:.3g} <= 0", describe(),
-                                   q + 1, X.x()));
-    const ShapeGradient G = dN * J.inverse();  // dN/dX
-    double* d = geometry_.data() + q * stride();
-    for (int a = 0; a < n_nodes_; ++a) {
-      d[a] = N(a);
-      d[n_nodes_ + a] = G(a, 0);
-      d[2 * n_nodes_ + a] = G(a, 1);
-    }
-    const double measure = axisymmetric ? 2 * std::numbers::pi * X.x() : thickness;
-    d[3 * n_nodes_] = points[q].weight * detJ * measure;
-    d[3 * n_nodes_ + 1] = X.x();
+                                   q + 1, g.R));
   }
+}
+
+double ContinuumElement::point_geometry(int q, PointGeometry& g) const {
+  const RuleShapes& shapes = rule_shapes(type_.shape, rule_);
+  const ShapeVector& N = shapes.N[static_cast<std::size_t>(q)];
+  const ShapeGradient& dN = shapes.dN[static_cast<std::size_t>(q)];
+  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // J(i,j) = dX_i/dxi_j
+  Eigen::Vector2d X = Eigen::Vector2d::Zero();
+  for (int a = 0; a < n_nodes_; ++a) {
+    J += ref_coords_[a] * dN.row(a);
+    X += N(a) * ref_coords_[a];
+  }
+  const double detJ = J.determinant();
+  g.N = N;
+  g.R = X.x();
+  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  const double measure = axisymmetric ? 2 * std::numbers::pi * X.x() : thickness_;
+  g.dV = shapes.weight[static_cast<std::size_t>(q)] * detJ * measure;
+  if (detJ > 0) g.G = dN * J.inverse();  // dN/dX
+  else g.G.setZero(n_nodes_, 2);
+  return detJ;
 }
 
 std::string ContinuumElement::describe() const {
@@ -80,19 +116,19 @@ void ContinuumElement::gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::Vector
   for (int i = 0; i < 2 * n_nodes_; ++i) ue(i) = u(dofs_[i]);
 }
 
-void ContinuumElement::material_point(int q, const double* ue, bool nlgeom, MaterialPoint& mp) const {
-  const double* d = point_data(q);
+void ContinuumElement::material_point(const PointGeometry& g, const double* ue, bool nlgeom,
+                                      MaterialPoint& mp) const {
   const int n = n_nodes_;
   Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
   double ur = 0;
   for (int a = 0; a < n; ++a) {
-    H(0, 0) += ue[2 * a] * d[n + a];
-    H(0, 1) += ue[2 * a] * d[2 * n + a];
-    H(1, 0) += ue[2 * a + 1] * d[n + a];
-    H(1, 1) += ue[2 * a + 1] * d[2 * n + a];
-    ur += ue[2 * a] * d[a];
+    H(0, 0) += ue[2 * a] * g.G(a, 0);
+    H(0, 1) += ue[2 * a] * g.G(a, 1);
+    H(1, 0) += ue[2 * a + 1] * g.G(a, 0);
+    H(1, 1) += ue[2 * a + 1] * g.G(a, 1);
+    ur += ue[2 * a] * g.N(a);
   }
-  const double hoop = ur / d[3 * n + 1];
+  const double hoop = ur / g.R;
   if (nlgeom)
     finite_strain_point(*material_, type_.family, H, hoop, mp);
   else
@@ -111,10 +147,11 @@ void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalS
   const bool axisymmetric = type_.family == Family::Axisymmetric;
   MaterialPoint mp;
   Eigen::Matrix<double, 4, ND> B;
+  PointGeometry g;
   for (int q = 0; q < n_points_; ++q) {
-    const double* d = point_data(q);
-    const Eigen::Map<const Nodal> N(d), Gx(d + NN), Gy(d + 2 * NN);
-    const double dV = d[3 * NN], R = d[3 * NN + 1];
+    point_geometry(q, g);
+    const Eigen::Map<const Nodal> N(g.N.data()), Gx(g.G.data()), Gy(g.G.data() + NN);
+    const double dV = g.dV, R = g.R;
     Eigen::Matrix2d H;
     H.col(0).noalias() = U * Gx;
     H.col(1).noalias() = U * Gy;
@@ -176,11 +213,13 @@ double ContinuumElement::strain_energy(const EvaluationState& s) const {
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
   MaterialPoint mp;
+  PointGeometry g;
   double energy = 0;
   try {
     for (int q = 0; q < n_points_; ++q) {
-      material_point(q, ue.data(), s.nlgeom, mp);
-      energy += strain_energy_density(*material_, s.nlgeom, mp) * point_data(q)[3 * n_nodes_];
+      point_geometry(q, g);
+      material_point(g, ue.data(), s.nlgeom, mp);
+      energy += strain_energy_density(*material_, s.nlgeom, mp) * g.dV;
     }
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
@@ -193,13 +232,14 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
   gather(s.u, ue);
   out.resize(n_points_);
   MaterialPoint mp;
+  PointGeometry g;
   try {
     for (int q = 0; q < n_points_; ++q) {
-      material_point(q, ue.data(), s.nlgeom, mp);
-      const double* d = point_data(q);
+      point_geometry(q, g);
+      material_point(g, ue.data(), s.nlgeom, mp);
       Eigen::Vector2d x = Eigen::Vector2d::Zero();
       for (int a = 0; a < n_nodes_; ++a)
-        x += d[a] * (ref_coords_[a] + Eigen::Vector2d(ue(2 * a), ue(2 * a + 1)));
+        x += g.N(a) * (ref_coords_[a] + Eigen::Vector2d(ue(2 * a), ue(2 * a + 1)));
       const Eigen::Vector4d sigma = cauchy_stress(s.nlgeom, mp);
       PointValues& pv = out[q];
       pv.x = x;

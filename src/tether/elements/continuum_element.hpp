@@ -10,6 +10,7 @@
 #include "tether/assembly/contribution.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/fem/quadrature.hpp"
+#include "tether/fem/shape_functions.hpp"
 #include "tether/elements/material_point.hpp"
 #include "tether/materials/constitutive_model.hpp"
 #include "tether/model/element_type.hpp"
@@ -65,13 +66,21 @@ class ContinuumElement final : public Contribution {
                             std::vector<Tensor4>& nodal_strain) const;
 
  private:
-  /// Doubles stored per integration point: N, dN/dX, dN/dY (n each), dV, R.
-  [[nodiscard]] int stride() const { return 3 * n_nodes_ + 2; }
-  [[nodiscard]] const double* point_data(int q) const { return geometry_.data() + q * stride(); }
+  /// Geometry of one integration point, recomputed from the reference
+  /// coordinates at each use (storing it took 14 doubles per point of a CPE4,
+  /// more than half of the element's memory).
+  struct PointGeometry {
+    ShapeVector N;    ///< shape functions
+    ShapeGradient G;  ///< dN/dX: column 0 = d/dX, column 1 = d/dY
+    double dV = 0;    ///< weight * det J * (thickness, or 2 pi R)
+    double R = 0;     ///< X of the point (the radius for axisymmetry)
+  };
+  /// Fills `g` for integration point q; returns det J (checked > 0 at construction).
+  double point_geometry(int q, PointGeometry& g) const;
   /// Local displacement vector (u_0x, u_0y, u_1x, ...).
   void gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const;
-  /// Evaluates point q from local displacements ue.
-  void material_point(int q, const double* ue, bool nlgeom, MaterialPoint& mp) const;
+  /// Evaluates the point with geometry g from local displacements ue.
+  void material_point(const PointGeometry& g, const double* ue, bool nlgeom, MaterialPoint& mp) const;
   template <int NN>
   void evaluate_kernel(const double* ue, bool nlgeom, LocalSystem& out, bool need_tangent) const;
 
@@ -85,7 +94,6 @@ class ContinuumElement final : public Contribution {
   double thickness_;
   QuadratureRule rule_;
   int n_points_;
-  std::vector<double> geometry_;
 };
 
 }  // namespace tether
