@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <bit>
 #include <ostream>
 #include <span>
@@ -62,33 +64,45 @@ constexpr std::string_view vtk_type_name() {
   else if constexpr (std::is_same_v<T, std::uint8_t>) return "UInt8";
 }
 
-template <class T>
+/// Values produced per piece: arrays are generated and encoded piece by
+/// piece, so writing a file needs no mesh-sized buffer.
+constexpr std::size_t kPieceValues = 3 * 8192;
+
+/// Writes one DataArray of `n_values` values, produced in order by
+/// `produce(std::span<T> piece)`, which fills the next piece.size() values.
+template <class T, class Produce>
 void write_data_array(Sink& sink, VtuEncoding encoding, std::string_view indent, std::string_view name,
-                      int n_components, std::span<const T> values) {
+                      int n_components, std::size_t n_values, Produce&& produce) {
   auto out = std::back_inserter(sink.buffer());
   fmt::format_to(out, "{}<DataArray type=\"{}\" Name=\"{}\"", indent, vtk_type_name<T>(), name);
   if (n_components > 1) fmt::format_to(out, " NumberOfComponents=\"{}\"", n_components);
+  std::vector<T> piece(std::min(n_values, kPieceValues));
   if (encoding == VtuEncoding::Ascii) {
     sink.append(" format=\"ascii\">\n");
     const std::size_t per_line = static_cast<std::size_t>(std::max(n_components, 6));
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      if constexpr (std::is_same_v<T, std::uint8_t>)
-        fmt::format_to(std::back_inserter(sink.buffer()), "{}", static_cast<int>(values[i]));
-      else
-        fmt::format_to(std::back_inserter(sink.buffer()), "{}", values[i]);
-      sink.buffer() += ((i + 1) % per_line == 0 || i + 1 == values.size()) ? '\n' : ' ';
-      sink.maybe_flush();
+    for (std::size_t done = 0; done < n_values; done += piece.size()) {
+      const std::span<T> values(piece.data(), std::min(piece.size(), n_values - done));
+      produce(values);
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        const std::size_t i = done + k;
+        if constexpr (std::is_same_v<T, std::uint8_t>)
+          fmt::format_to(std::back_inserter(sink.buffer()), "{}", static_cast<int>(values[k]));
+        else
+          fmt::format_to(std::back_inserter(sink.buffer()), "{}", values[k]);
+        sink.buffer() += ((i + 1) % per_line == 0 || i + 1 == n_values) ? '\n' : ' ';
+        sink.maybe_flush();
+      }
     }
   } else {
     sink.append(" format=\"binary\">\n");
     // Header (byte count as UInt64) and data form one base64 stream.
     Base64Encoder encoder(sink.buffer());
-    const std::uint64_t n_bytes = values.size() * sizeof(T);
+    const std::uint64_t n_bytes = n_values * sizeof(T);
     encoder.add(&n_bytes, sizeof n_bytes);
-    constexpr std::size_t kChunk = 3 * 65536;  // multiple of 3 and of sizeof(T)
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-    for (std::size_t done = 0; done < n_bytes; done += kChunk) {
-      encoder.add(bytes + done, std::min<std::size_t>(kChunk, n_bytes - done));
+    for (std::size_t done = 0; done < n_values; done += piece.size()) {
+      const std::span<T> values(piece.data(), std::min(piece.size(), n_values - done));
+      produce(values);
+      encoder.add(values.data(), values.size() * sizeof(T));
       sink.maybe_flush();
     }
     encoder.finish();
@@ -98,10 +112,27 @@ void write_data_array(Sink& sink, VtuEncoding encoding, std::string_view indent,
   sink.maybe_flush();
 }
 
-template <class T>
-void write_data_array(Sink& sink, VtuEncoding encoding, std::string_view indent, std::string_view name,
-                      int n_components, const std::vector<T>& values) {
-  write_data_array(sink, encoding, indent, name, n_components, std::span<const T>(values));
+/// Producer of the values `value(i)`, i = 0, 1, ... in order.
+template <class Value>
+auto indexed(Value value) {
+  return [value = std::move(value), i = std::size_t{0}](auto piece) mutable {
+    for (auto& v : piece) v = value(i++);
+  };
+}
+
+/// Producer of tuples of `width` values per item: `fill(item, double* tuple)`
+/// writes item `item`'s tuple (called once per item).
+template <class Fill>
+auto tuples(int width, Fill fill) {
+  return [fill = std::move(fill), width = static_cast<std::size_t>(width), tuple = std::array<double, 6>{},
+          i = std::size_t{0}](std::span<double> piece) mutable {
+    for (double& v : piece) {
+      const std::size_t c = i % width;
+      if (c == 0) fill(i / width, tuple.data());
+      v = tuple[c];
+      ++i;
+    }
+  };
 }
 
 /// (xx, yy, zz, xy) -> VTK order (XX, YY, ZZ, XY, YZ, XZ).
@@ -114,20 +145,35 @@ void put_tensor(double* dst, const Tensor4& t) {
   dst[5] = 0;
 }
 
-std::vector<double> vectors3(const std::vector<Eigen::Vector2d>& v) {
-  std::vector<double> out(3 * v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    out[3 * i] = v[i].x();
-    out[3 * i + 1] = v[i].y();
-    out[3 * i + 2] = 0;
-  }
-  return out;
+void put_vector(double* dst, const Eigen::Vector2d& v) {
+  dst[0] = v.x();
+  dst[1] = v.y();
+  dst[2] = 0;
 }
 
-std::vector<double> tensors6(const std::vector<Tensor4>& t) {
-  std::vector<double> out(6 * t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) put_tensor(&out[6 * i], t[i]);
-  return out;
+void write_vectors3(Sink& sink, VtuEncoding enc, std::string_view indent, std::string_view name,
+                    const std::vector<Eigen::Vector2d>& v) {
+  write_data_array<double>(sink, enc, indent, name, 3, 3 * v.size(),
+                           tuples(3, [&](std::size_t i, double* t) { put_vector(t, v[i]); }));
+}
+
+void write_tensors6(Sink& sink, VtuEncoding enc, std::string_view indent, std::string_view name,
+                    const std::vector<Tensor4>& v) {
+  write_data_array<double>(sink, enc, indent, name, 6, 6 * v.size(),
+                           tuples(6, [&](std::size_t i, double* t) { put_tensor(t, v[i]); }));
+}
+
+/// Point data that is nonzero on few nodes (constraint and contact nodes):
+/// kept per node in a map, written as full arrays piece by piece.
+template <class Combined>
+using SparseNodal = std::map<std::size_t, Combined>;
+
+template <class Combined, class Get>
+auto sparse_nodal(const SparseNodal<Combined>& values, Combined absent, Get get) {
+  return [&values, absent = std::move(absent), get = std::move(get)](std::size_t node) {
+    const auto it = values.find(node);
+    return get(it == values.end() ? absent : it->second);
+  };
 }
 
 void check_size(std::size_t actual, std::size_t expected, const char* what) {
@@ -136,73 +182,67 @@ void check_size(std::size_t actual, std::size_t expected, const char* what) {
                                             what, actual, expected));
 }
 
-/// CONTACT_* point data (see VtuWriter): several pairs on one node are
-/// combined (sums; smallest gap; highest status).
+/// CONTACT_* values of one node (see VtuWriter): several pairs on one node
+/// are combined (sums; smallest gap; highest status).
+struct ContactNodal {
+  std::int64_t slave = 0, status = -1;
+  double pressure = 0, gap = 0, shear = 0, slip = 0;
+  Eigen::Vector2d force{0, 0};
+};
+
 void write_contact_point_data(Sink& sink, VtuEncoding enc, std::string_view indent,
                               const std::vector<ContactPairValues>& contact, std::size_t n_nodes) {
-  std::vector<std::int64_t> slave(n_nodes, 0), status(n_nodes, -1);
-  std::vector<double> pressure(n_nodes, 0.0), gap(n_nodes, 0.0), shear(n_nodes, 0.0), slip(n_nodes, 0.0);
-  std::vector<Eigen::Vector2d> force(n_nodes, Eigen::Vector2d::Zero());
+  SparseNodal<ContactNodal> nodal;
   for (const auto& pair : contact)
     for (const auto& v : pair.nodes) {
       if (v.node < 0 || static_cast<std::size_t>(v.node) >= n_nodes)
         throw std::invalid_argument(
             fmt::format("VtuWriter: contact pair '{}' names slave node index {} outside the mesh", pair.name, v.node));
-      const auto i = static_cast<std::size_t>(v.node);
+      ContactNodal& n = nodal[static_cast<std::size_t>(v.node)];
       const std::int64_t code = v.status == ContactNodeValues::Status::Open    ? 0
                                 : v.status == ContactNodeValues::Status::Stick ? 1
                                                                                : 2;
-      gap[i] = slave[i] != 0 ? std::min(gap[i], v.gap) : v.gap;
-      slave[i] = 1;
-      status[i] = std::max(status[i], code);
-      pressure[i] += v.pressure;
-      shear[i] += v.shear;
-      slip[i] += v.total_slip;
-      force[i] += v.force;
+      n.gap = n.slave != 0 ? std::min(n.gap, v.gap) : v.gap;
+      n.slave = 1;
+      n.status = std::max(n.status, code);
+      n.pressure += v.pressure;
+      n.shear += v.shear;
+      n.slip += v.total_slip;
+      n.force += v.force;
     }
-  write_data_array(sink, enc, indent, "CONTACT_SLAVE", 1, slave);
-  write_data_array(sink, enc, indent, "CONTACT_STATUS", 1, status);
-  write_data_array(sink, enc, indent, "CONTACT_PRESSURE", 1, pressure);
-  write_data_array(sink, enc, indent, "CONTACT_GAP", 1, gap);
-  write_data_array(sink, enc, indent, "CONTACT_SHEAR", 1, shear);
-  write_data_array(sink, enc, indent, "CONTACT_SLIP", 1, slip);
-  write_data_array(sink, enc, indent, "CONTACT_FORCE", 3, vectors3(force));
+  const ContactNodal none;
+  const auto int_field = [&](std::string_view name, auto get) {
+    write_data_array<std::int64_t>(sink, enc, indent, name, 1, n_nodes, indexed(sparse_nodal(nodal, none, get)));
+  };
+  const auto real_field = [&](std::string_view name, auto get) {
+    write_data_array<double>(sink, enc, indent, name, 1, n_nodes, indexed(sparse_nodal(nodal, none, get)));
+  };
+  int_field("CONTACT_SLAVE", [](const ContactNodal& n) { return n.slave; });
+  int_field("CONTACT_STATUS", [](const ContactNodal& n) { return n.status; });
+  real_field("CONTACT_PRESSURE", [](const ContactNodal& n) { return n.pressure; });
+  real_field("CONTACT_GAP", [](const ContactNodal& n) { return n.gap; });
+  real_field("CONTACT_SHEAR", [](const ContactNodal& n) { return n.shear; });
+  real_field("CONTACT_SLIP", [](const ContactNodal& n) { return n.slip; });
+  const auto force = sparse_nodal(nodal, none, [](const ContactNodal& n) { return n.force; });
+  write_data_array<double>(sink, enc, indent, "CONTACT_FORCE", 3, 3 * n_nodes,
+                           tuples(3, [&](std::size_t i, double* t) { put_vector(t, force(i)); }));
 }
 
 }  // namespace
 
 VtuWriter::VtuWriter(const Model& model, VtuEncoding encoding) : model_(model), encoding_(encoding) {
-  const auto n = static_cast<std::size_t>(model.n_nodes());
-  points_.resize(3 * n);
-  node_ids_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    points_[3 * i] = model.coords[i].x();
-    points_[3 * i + 1] = model.coords[i].y();
-    points_[3 * i + 2] = 0;
-    node_ids_[i] = i < model.node_ids.size() ? model.node_ids[i] : static_cast<std::int64_t>(i + 1);
-  }
-  offsets_.reserve(model.elements.size());
-  cell_types_.reserve(model.elements.size());
-  element_ids_.reserve(model.elements.size());
-  for (const auto& e : model.elements) {
-    for (const int node : e.nodes) connectivity_.push_back(node);
-    offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
-    cell_types_.push_back(vtk_cell_type(e.type.shape));
-    element_ids_.push_back(e.id);
-  }
   // Nodes outside every element (constraint-only nodes: a link's end, a
   // reference node) get a VTK_VERTEX cell each, so they are drawn and the file
-  // has cells even without elements; ElementId 0, stress 0.
+  // has cells even without elements; ElementId 0, stress 0. The mesh arrays
+  // themselves are generated from the Model while a file is written.
+  const auto n = static_cast<std::size_t>(model.n_nodes());
   std::vector<bool> used(n, false);
-  for (const auto& e : model.elements)
+  for (const auto& e : model.elements) {
     for (const int node : e.nodes) used[static_cast<std::size_t>(node)] = true;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (used[i]) continue;
-    connectivity_.push_back(static_cast<std::int64_t>(i));
-    offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
-    cell_types_.push_back(1);  // VTK_VERTEX
-    element_ids_.push_back(0);
+    n_element_connectivity_ += e.nodes.size();
   }
+  for (std::size_t i = 0; i < n; ++i)
+    if (!used[i]) lonely_nodes_.push_back(static_cast<int>(i));
 }
 
 void VtuWriter::write(const IncrementResults& results, const std::filesystem::path& file) const {
@@ -212,9 +252,10 @@ void VtuWriter::write(const IncrementResults& results, const std::filesystem::pa
 }
 
 void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
-  const std::size_t n_nodes = node_ids_.size();
-  const std::size_t n_cells = element_ids_.size();           // elements, then vertex cells
-  const std::size_t n_elements = model_.elements.size();
+  const Model& model = model_;
+  const std::size_t n_nodes = static_cast<std::size_t>(model.n_nodes());
+  const std::size_t n_elements = model.elements.size();
+  const std::size_t n_cells = n_elements + lonely_nodes_.size();  // elements, then vertex cells
   if (r.displacement.size() != n_nodes)
     throw std::invalid_argument(fmt::format("VtuWriter: IncrementResults::displacement has {} entries, the mesh needs {}",
                                             r.displacement.size(), n_nodes));
@@ -246,19 +287,20 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
                  n_nodes, n_cells, r.nodal_stress.empty() ? "" : " Scalars=\"S_Mises\" Tensors=\"S\"");
 
   constexpr std::string_view kIndent = "        ";
-  write_data_array(sink, enc, kIndent, "NodeId", 1, node_ids_);
-  write_data_array(sink, enc, kIndent, "U", 3, vectors3(r.displacement));
-  if (!r.reaction.empty()) write_data_array(sink, enc, kIndent, "RF", 3, vectors3(r.reaction));
+  write_data_array<std::int64_t>(sink, enc, kIndent, "NodeId", 1, n_nodes, indexed([&](std::size_t i) {
+    return i < model.node_ids.size() ? static_cast<std::int64_t>(model.node_ids[i]) : static_cast<std::int64_t>(i + 1);
+  }));
+  write_vectors3(sink, enc, kIndent, "U", r.displacement);
+  if (!r.reaction.empty()) write_vectors3(sink, enc, kIndent, "RF", r.reaction);
   if (!r.nodal_stress.empty()) {
-    write_data_array(sink, enc, kIndent, "S", 6, tensors6(r.nodal_stress));
-    std::vector<double> mises(n_nodes);
-    for (std::size_t i = 0; i < n_nodes; ++i) mises[i] = von_mises(r.nodal_stress[i]);
-    write_data_array(sink, enc, kIndent, "S_Mises", 1, mises);
+    write_tensors6(sink, enc, kIndent, "S", r.nodal_stress);
+    write_data_array<double>(sink, enc, kIndent, "S_Mises", 1, n_nodes,
+                             indexed([&](std::size_t i) { return von_mises(r.nodal_stress[i]); }));
   }
-  if (!r.nodal_strain.empty()) write_data_array(sink, enc, kIndent, "E", 6, tensors6(r.nodal_strain));
+  if (!r.nodal_strain.empty()) write_tensors6(sink, enc, kIndent, "E", r.nodal_strain);
   if (!r.multipliers.empty()) {
-    std::vector<double> lambda(n_nodes, 0.0);
-    std::vector<Eigen::Vector2d> force(n_nodes, Eigen::Vector2d::Zero());
+    SparseNodal<double> lambda;
+    SparseNodal<Eigen::Vector2d> force;
     const auto checked = [&](const MultiplierValues& m, int node) {
       if (node < 0 || static_cast<std::size_t>(node) >= n_nodes)
         throw std::invalid_argument(fmt::format("VtuWriter: multiplier owner '{}' names node index {} outside the mesh",
@@ -271,37 +313,64 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
         const std::size_t i = checked(m, node);
         if (m.value.size() != 1 || std::find(seen.begin(), seen.end(), i) != seen.end()) continue;
         seen.push_back(i);
-        lambda[i] += m.value.front();
+        lambda.try_emplace(i, 0.0).first->second += m.value.front();
       }
-      for (const auto& f : m.nodal_force) force[checked(m, f.node)] += f.force;
+      for (const auto& f : m.nodal_force)
+        force.try_emplace(checked(m, f.node), Eigen::Vector2d::Zero()).first->second += f.force;
     }
-    write_data_array(sink, enc, kIndent, "LAGRANGE_MULTIPLIER", 1, lambda);
-    write_data_array(sink, enc, kIndent, "CONSTRAINT_FORCE", 3, vectors3(force));
+    write_data_array<double>(sink, enc, kIndent, "LAGRANGE_MULTIPLIER", 1, n_nodes,
+                             indexed(sparse_nodal(lambda, 0.0, [](double v) { return v; })));
+    const auto nodal_force =
+        sparse_nodal(force, Eigen::Vector2d(Eigen::Vector2d::Zero()), [](const Eigen::Vector2d& v) { return v; });
+    write_data_array<double>(sink, enc, kIndent, "CONSTRAINT_FORCE", 3, 3 * n_nodes,
+                             tuples(3, [&](std::size_t i, double* t) { put_vector(t, nodal_force(i)); }));
   }
   if (!r.contact.empty()) write_contact_point_data(sink, enc, kIndent, r.contact, n_nodes);
   sink.append("      </PointData>\n      <CellData Scalars=\"ElementId\">\n");
-  write_data_array(sink, enc, kIndent, "ElementId", 1, element_ids_);
+  write_data_array<std::int64_t>(sink, enc, kIndent, "ElementId", 1, n_cells, indexed([&](std::size_t c) {
+    return c < n_elements ? static_cast<std::int64_t>(model.elements[c].id) : std::int64_t{0};
+  }));
   if (!r.points.empty()) {
-    std::vector<double> average(6 * n_cells, 0.0), mises(n_cells, 0.0);
-    for (std::size_t e = 0; e < n_elements; ++e) {
-      const auto& points = r.points[e];
-      if (points.empty()) continue;
+    // Arithmetic mean of the integration-point stresses (zero for vertex cells).
+    const auto mean_stress = [&](std::size_t c) {
       Tensor4 mean{};
+      if (c >= n_elements || r.points[c].empty()) return mean;
+      const auto& points = r.points[c];
       for (const auto& p : points)
-        for (int c = 0; c < 4; ++c) mean[c] += p.stress[c];
-      for (double& c : mean) c /= static_cast<double>(points.size());
-      put_tensor(&average[6 * e], mean);
-      mises[e] = von_mises(mean);
-    }
-    write_data_array(sink, enc, kIndent, "S", 6, average);
-    write_data_array(sink, enc, kIndent, "S_Mises", 1, mises);
+        for (int k = 0; k < 4; ++k) mean[k] += p.stress[k];
+      for (double& k : mean) k /= static_cast<double>(points.size());
+      return mean;
+    };
+    write_data_array<double>(sink, enc, kIndent, "S", 6, 6 * n_cells,
+                             tuples(6, [&](std::size_t c, double* t) { put_tensor(t, mean_stress(c)); }));
+    write_data_array<double>(sink, enc, kIndent, "S_Mises", 1, n_cells, indexed([&](std::size_t c) {
+      return c < n_elements && !r.points[c].empty() ? von_mises(mean_stress(c)) : 0.0;
+    }));
   }
   sink.append("      </CellData>\n      <Points>\n");
-  write_data_array(sink, enc, kIndent, "Points", 3, points_);
+  write_data_array<double>(sink, enc, kIndent, "Points", 3, 3 * n_nodes,
+                           tuples(3, [&](std::size_t i, double* t) { put_vector(t, model.coords[i]); }));
   sink.append("      </Points>\n      <Cells>\n");
-  write_data_array(sink, enc, kIndent, "connectivity", 1, connectivity_);
-  write_data_array(sink, enc, kIndent, "offsets", 1, offsets_);
-  write_data_array(sink, enc, kIndent, "types", 1, cell_types_);
+  // Connectivity: element nodes in order, then one node per vertex cell.
+  write_data_array<std::int64_t>(
+      sink, enc, kIndent, "connectivity", 1, n_element_connectivity_ + lonely_nodes_.size(),
+      [&, e = std::size_t{0}, a = std::size_t{0}, lonely = std::size_t{0}](std::span<std::int64_t> piece) mutable {
+        for (auto& v : piece) {
+          while (e < n_elements && a == model.elements[e].nodes.size()) ++e, a = 0;
+          v = e < n_elements ? model.elements[e].nodes[a++] : lonely_nodes_[lonely++];
+        }
+      });
+  write_data_array<std::int64_t>(sink, enc, kIndent, "offsets", 1, n_cells,
+                                 [&, c = std::size_t{0}, end = std::int64_t{0}](std::span<std::int64_t> piece) mutable {
+                                   for (auto& v : piece) {
+                                     end += c < n_elements ? static_cast<std::int64_t>(model.elements[c].nodes.size()) : 1;
+                                     v = end;
+                                     ++c;
+                                   }
+                                 });
+  write_data_array<std::uint8_t>(sink, enc, kIndent, "types", 1, n_cells, indexed([&](std::size_t c) {
+    return c < n_elements ? vtk_cell_type(model.elements[c].type.shape) : std::uint8_t{1};  // 1: VTK_VERTEX
+  }));
   sink.append("      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
   sink.flush();
   if (!out) throw std::runtime_error("VtuWriter: error while writing the .vtu stream");

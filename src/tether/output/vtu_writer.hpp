@@ -74,8 +74,10 @@ std::uint8_t vtk_cell_type(Shape shape);
 /// A node that is slave in several pairs gets the sums of pressure, shear,
 /// slip and force, the smallest gap and the highest status.
 ///
-/// The mesh arrays are built once at construction; the Model must outlive the
-/// writer and must not change.
+/// The mesh arrays (points, connectivity, ids) are generated from the Model
+/// while a file is written, and every array is encoded piece by piece, so the
+/// writer keeps no mesh-sized data; the Model must outlive the writer and
+/// must not change.
 class VtuWriter {
  public:
   explicit VtuWriter(const Model& model, VtuEncoding encoding = VtuEncoding::Base64);
@@ -91,12 +93,8 @@ class VtuWriter {
  private:
   const Model& model_;
   VtuEncoding encoding_;
-  std::vector<double> points_;
-  std::vector<std::int64_t> node_ids_;
-  std::vector<std::int64_t> connectivity_;
-  std::vector<std::int64_t> offsets_;
-  std::vector<std::uint8_t> cell_types_;
-  std::vector<std::int64_t> element_ids_;
+  std::vector<int> lonely_nodes_;             ///< nodes outside every element (one VTK_VERTEX cell each)
+  std::size_t n_element_connectivity_ = 0;    ///< sum of the elements' node counts
 };
 
 }  // namespace tether
