@@ -80,6 +80,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   options.solver = parse_solver_kind(solver);
   options.condense_contact = condense;
   options.memory_budget_mb = memory_mb;
+  options.stream_element_results = true;  // the writer does not keep the results
   Relay relay;
   std::unique_ptr<StaticAnalysis> analysis;
   const std::string restart_file = restart_source(model, deck, restart);

@@ -42,6 +42,36 @@ TEST(VtuWriter, AsciiDocumentHasTheMeshAndFields) {
   EXPECT_EQ(text.substr(text.size() - 11), "</VTKFile>\n");
 }
 
+TEST(VtuWriter, NodesOutsideEveryElementGetVertexCells) {
+  // Two nodes held only by constraints (labels 31, 32, after the mesh nodes):
+  // one VTK_VERTEX cell each, after the elements, ElementId 0 and zero cell stress.
+  Model model = tiny_model();
+  for (const int label : {31, 32}) {
+    model.node_index[label] = model.n_nodes();
+    model.node_ids.push_back(label);
+    model.coords.emplace_back(3.0, 0.5 * label);
+  }
+  std::ostringstream out;
+  VtuWriter(model, VtuEncoding::Ascii).write(synthetic_results(model, 1, 1, 1.0, 1.0), out);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("<Piece NumberOfPoints=\"17\" NumberOfCells=\"7\">"), std::string::npos);
+  EXPECT_NE(text.find("Name=\"connectivity\" format=\"ascii\">\n0 1 2 3 1 4\n5 2 6 7 8 9\n3 2 10 11 2 5\n"
+                      "10 8 12 13 5 14\n10 15 16\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("Name=\"offsets\" format=\"ascii\">\n4 12 16 22 25 26\n27\n"), std::string::npos);
+  EXPECT_NE(text.find("Name=\"types\" format=\"ascii\">\n9 23 9 22 5 1\n1\n"), std::string::npos);
+  EXPECT_NE(text.find("Name=\"ElementId\" format=\"ascii\">\n101 102 103 104 105 0\n0\n"), std::string::npos);
+  const auto at = text.find("Name=\"S_Mises\" format=\"ascii\">", text.find("<CellData"));
+  ASSERT_NE(at, std::string::npos);
+  const auto start = text.find('>', at) + 2;
+  std::string mises = text.substr(start, text.find("</DataArray>", start) - start);
+  mises.erase(mises.find_last_not_of(' ') + 1);  // the closing tag's indentation
+  ASSERT_GE(mises.size(), 4u);
+  EXPECT_EQ(mises.substr(mises.size() - 4), "0\n0\n") << mises;
+  EXPECT_NE(text.find("Name=\"NodeId\" format=\"ascii\">\n11 12 13 14 19 20\n15 16 17 18 21 22\n23 24 25 31 32\n"),
+            std::string::npos);
+}
+
 TEST(VtuWriter, LeavesOutFieldsTheResultsDoNotHave) {
   const Model model = tiny_model();
   auto results = synthetic_results(model, 1, 1, 1.0, 1.0);

@@ -33,10 +33,18 @@ Eigen::VectorXd eliminated_multipliers(const EquationMap& equations, const Eigen
   return lambda;
 }
 
+/// Elements whose points are alive at once when the results are streamed.
+constexpr int kPointBlock = 8192;
+
 }  // namespace
 
+void DiscretizationPoints::points(int element, std::vector<PointValues>& out) const {
+  discretization_.elements()[static_cast<std::size_t>(element)]->point_values(state_, out);
+}
+
 IncrementResults build_results(const Discretization& discretization, const EvaluationState& state,
-                               const Eigen::VectorXd& full_residual, const EquationMap& equations) {
+                               const Eigen::VectorXd& full_residual, const EquationMap& equations,
+                               const ElementPointSource* stream) {
   // Residual including the forces of eliminated constraints (so reactions at
   // prescribed dofs they involve are complete).
   const Eigen::VectorXd lambda = eliminated_multipliers(equations, full_residual);
@@ -59,9 +67,16 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
 
   const auto& elements = discretization.elements();
   const int n_elements = static_cast<int>(elements.size());
-  r.points.resize(n_elements);
-#pragma omp parallel for schedule(dynamic, 256) if (n_elements >= 2048)
-  for (int e = 0; e < n_elements; ++e) elements[e]->point_values(state, r.points[e]);
+  const DiscretizationPoints own_source(discretization, state);
+  const ElementPointSource& source = stream ? *stream : own_source;
+  std::vector<std::vector<PointValues>> block;
+  if (stream) {
+    r.point_source = stream;
+    r.element_stress.resize(static_cast<std::size_t>(n_elements));
+    block.resize(static_cast<std::size_t>(std::min(n_elements, kPointBlock)));
+  } else {
+    r.points.resize(static_cast<std::size_t>(n_elements));
+  }
 
   // Nodal values: the average of each element's extrapolation, accumulated
   // element by element (one element's extrapolation alive at a time).
@@ -69,15 +84,25 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   r.nodal_strain.assign(n_nodes, Tensor4{});
   std::vector<int> count(n_nodes, 0);
   std::vector<Tensor4> element_stress, element_strain;
-  for (int e = 0; e < n_elements; ++e) {
-    elements[e]->extrapolate_to_nodes(r.points[e], element_stress, element_strain);
-    const auto& nodes = elements[e]->nodes();
-    for (std::size_t a = 0; a < nodes.size(); ++a) {
-      for (int k = 0; k < 4; ++k) {
-        r.nodal_stress[nodes[a]][k] += element_stress[a][k];
-        r.nodal_strain[nodes[a]][k] += element_strain[a][k];
+  for (int first = 0; first < n_elements; first += kPointBlock) {
+    const int last = std::min(n_elements, first + kPointBlock);
+    const auto points_of = [&](int e) -> std::vector<PointValues>& {
+      return stream ? block[static_cast<std::size_t>(e - first)] : r.points[static_cast<std::size_t>(e)];
+    };
+#pragma omp parallel for schedule(dynamic, 256) if (last - first >= 2048)
+    for (int e = first; e < last; ++e) source.points(e, points_of(e));
+    for (int e = first; e < last; ++e) {
+      const std::vector<PointValues>& points = points_of(e);
+      if (stream) r.element_stress[static_cast<std::size_t>(e)] = mean_stress(points);
+      elements[e]->extrapolate_to_nodes(points, element_stress, element_strain);
+      const auto& nodes = elements[e]->nodes();
+      for (std::size_t a = 0; a < nodes.size(); ++a) {
+        for (int k = 0; k < 4; ++k) {
+          r.nodal_stress[nodes[a]][k] += element_stress[a][k];
+          r.nodal_strain[nodes[a]][k] += element_strain[a][k];
+        }
+        ++count[nodes[a]];
       }
-      ++count[nodes[a]];
     }
   }
   for (int i = 0; i < n_nodes; ++i)

@@ -7,10 +7,31 @@
 
 namespace tether {
 
+/// The integration-point values of the discretization's elements in one
+/// state: the source of streamed results (IncrementResults::point_source).
+/// Borrows both; the elements keep no history, so the values depend only on
+/// the state's displacements.
+class DiscretizationPoints final : public ElementPointSource {
+ public:
+  DiscretizationPoints(const Discretization& discretization, const EvaluationState& state)
+      : discretization_(discretization), state_(state) {}
+  void points(int element, std::vector<PointValues>& out) const override;
+
+ private:
+  const Discretization& discretization_;
+  EvaluationState state_;
+};
+
 /// Displacements and reactions per node, integration-point values per element
 /// and nodal averages of the values extrapolated from each element.
 /// `residual` is the full residual (reactions are read at prescribed dofs).
+/// With `stream` (normally a DiscretizationPoints of the same discretization
+/// and state, which must outlive the use of the results) the results are
+/// streamed: no `points`, but `element_stress` and `point_source = stream`
+/// (see IncrementResults). Element values are computed in blocks of elements,
+/// so streaming never holds more than one block's points.
 IncrementResults build_results(const Discretization& discretization, const EvaluationState& state,
-                               const Eigen::VectorXd& residual, const EquationMap& equations);
+                               const Eigen::VectorXd& residual, const EquationMap& equations,
+                               const ElementPointSource* stream = nullptr);
 
 }  // namespace tether

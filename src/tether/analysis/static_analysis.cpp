@@ -480,7 +480,11 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       const auto output_start = std::chrono::steady_clock::now();
       // Results first: they describe the increment (contact slip since the
       // last converged state), which commit() then makes history.
-      IncrementResults results = build_results(disc, s, problem.full_residual(), assembler.equations());
+      // Streamed element values are computed from s.u during on_results,
+      // after commit(): elements keep no history, so they are the same.
+      const DiscretizationPoints point_source(disc, s);
+      IncrementResults results = build_results(disc, s, problem.full_residual(), assembler.equations(),
+                                               options_.stream_element_results ? &point_source : nullptr);
       for (Contribution* c : contributions) c->commit(s);
       step_time = t_new;
       total_time_ = total_new;

@@ -30,6 +30,13 @@ struct AnalysisOptions {
   /// Memory the run may use [MB] (`tether run --memory`), 0 for no limit:
   /// sparse MUMPS factors that would not fit are kept out of core.
   double memory_budget_mb = 0;
+  /// Streamed results: the IncrementResults handed to the observer carry no
+  /// integration-point values (`points` empty) but each element's mean stress
+  /// and a source that computes an element's points during on_results (see
+  /// IncrementResults), so writing an increment takes memory per node rather
+  /// than per integration point. For observers that write the results and do
+  /// not keep them (`tether run`); off: every point is stored.
+  bool stream_element_results = false;
   /// Tests of restart: stop (not completed) after this many converged
   /// increments of this run, as if the run had been killed there; 0 = never.
   int stop_after_increments = 0;

@@ -72,7 +72,26 @@ struct ContactPairValues {
   double dissipation = 0;             ///< Σ dissipation
 };
 
+/// Computes the integration-point values of one element on demand (streamed
+/// results: see IncrementResults::point_source).
+class ElementPointSource {
+ public:
+  virtual ~ElementPointSource() = default;
+  /// Values at the integration points of element `element` (index into
+  /// Model::elements), as IncrementResults::points[element] would hold them.
+  virtual void points(int element, std::vector<PointValues>& out) const = 0;
+};
+
 /// Everything written for one converged increment.
+///
+/// Element values come in one of two forms. Stored (the default): `points`
+/// holds every integration point of every element. Streamed
+/// (AnalysisOptions::stream_element_results, what the `tether run` writers
+/// use): `points` is empty, `element_stress` holds each element's mean stress
+/// and `point_source` computes an element's points when asked, so the results
+/// of an increment take memory per node, not per integration point. The
+/// source belongs to the analysis and may be used only during
+/// AnalysisObserver::on_results; a copy kept past that call must not use it.
 struct IncrementResults {
   int step = 1;             ///< 1-based
   int increment = 1;        ///< 1-based within the step
@@ -83,9 +102,20 @@ struct IncrementResults {
   std::vector<Eigen::Vector2d> reaction;      ///< per node: internal minus applied force at constrained dofs
   std::vector<Tensor4> nodal_stress;          ///< per node: average of extrapolated element values
   std::vector<Tensor4> nodal_strain;          ///< per node, as above
-  std::vector<std::vector<PointValues>> points;  ///< per element, per integration point
+  std::vector<std::vector<PointValues>> points;  ///< per element, per integration point (empty when streamed)
+  std::vector<Tensor4> element_stress;        ///< streamed only: per element, mean of its point stresses
+  const ElementPointSource* point_source = nullptr;  ///< streamed only: computes points[e] on demand
   std::vector<MultiplierValues> multipliers;
   std::vector<ContactPairValues> contact;     ///< one per *CONTACT PAIR
 };
+
+/// Arithmetic mean of the stresses at `points` (zero when there are none).
+Tensor4 mean_stress(const std::vector<PointValues>& points);
+
+/// Element `element`'s integration-point values: `results.points[element]`
+/// when the results store them, else computed into `buffer` by
+/// `results.point_source`; empty when the results have neither.
+const std::vector<PointValues>& element_points(const IncrementResults& results, std::size_t element,
+                                               std::vector<PointValues>& buffer);
 
 }  // namespace tether

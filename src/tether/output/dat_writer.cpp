@@ -84,7 +84,7 @@ void write_nodal(Out out, const Model& model, const Selection& sel, const std::v
 }
 
 void write_points(Out out, const Model& model, const Selection& sel, const IncrementResults& r, bool stress) {
-  if (r.points.size() != static_cast<std::size_t>(model.n_elements()))
+  if (r.points.size() != static_cast<std::size_t>(model.n_elements()) && !(r.points.empty() && r.point_source))
     throw std::invalid_argument(fmt::format("DatWriter: EL PRINT needs integration-point values for {} elements, "
                                             "results have {}",
                                             model.n_elements(), r.points.size()));
@@ -92,8 +92,9 @@ void write_points(Out out, const Model& model, const Selection& sel, const Incre
                stress ? "stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)"
                       : "strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)",
                sel.name, r.total_time);
+  std::vector<PointValues> buffer;
   for (const int e : sel.indices) {
-    const auto& points = r.points[static_cast<std::size_t>(e)];
+    const auto& points = element_points(r, static_cast<std::size_t>(e), buffer);
     const int label = model.elements[static_cast<std::size_t>(e)].id;
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Tensor4& t = stress ? points[k].stress : points[k].strain;

@@ -168,11 +168,13 @@ void write_tensors6(Sink& sink, VtuEncoding enc, std::string_view indent, std::s
 template <class Combined>
 using SparseNodal = std::map<std::size_t, Combined>;
 
+/// Producer of get(value of node i), or get(absent) for a node without one,
+/// for i = 0, 1, ... asked in increasing order (a cursor walks the map).
 template <class Combined, class Get>
 auto sparse_nodal(const SparseNodal<Combined>& values, Combined absent, Get get) {
-  return [&values, absent = std::move(absent), get = std::move(get)](std::size_t node) {
-    const auto it = values.find(node);
-    return get(it == values.end() ? absent : it->second);
+  return [&values, absent = std::move(absent), get = std::move(get), it = values.begin()](std::size_t node) mutable {
+    while (it != values.end() && it->first < node) ++it;
+    return get(it != values.end() && it->first == node ? it->second : absent);
   };
 }
 
@@ -223,7 +225,7 @@ void write_contact_point_data(Sink& sink, VtuEncoding enc, std::string_view inde
   real_field("CONTACT_GAP", [](const ContactNodal& n) { return n.gap; });
   real_field("CONTACT_SHEAR", [](const ContactNodal& n) { return n.shear; });
   real_field("CONTACT_SLIP", [](const ContactNodal& n) { return n.slip; });
-  const auto force = sparse_nodal(nodal, none, [](const ContactNodal& n) { return n.force; });
+  auto force = sparse_nodal(nodal, none, [](const ContactNodal& n) { return n.force; });
   write_data_array<double>(sink, enc, indent, "CONTACT_FORCE", 3, 3 * n_nodes,
                            tuples(3, [&](std::size_t i, double* t) { put_vector(t, force(i)); }));
 }
@@ -263,6 +265,7 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   check_size(r.nodal_stress.size(), n_nodes, "nodal_stress");
   check_size(r.nodal_strain.size(), n_nodes, "nodal_strain");
   check_size(r.points.size(), n_elements, "points");
+  check_size(r.element_stress.size(), n_elements, "element_stress");
 
   Sink sink(out);
   const auto enc = encoding_;
@@ -320,7 +323,7 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
     }
     write_data_array<double>(sink, enc, kIndent, "LAGRANGE_MULTIPLIER", 1, n_nodes,
                              indexed(sparse_nodal(lambda, 0.0, [](double v) { return v; })));
-    const auto nodal_force =
+    auto nodal_force =
         sparse_nodal(force, Eigen::Vector2d(Eigen::Vector2d::Zero()), [](const Eigen::Vector2d& v) { return v; });
     write_data_array<double>(sink, enc, kIndent, "CONSTRAINT_FORCE", 3, 3 * n_nodes,
                              tuples(3, [&](std::size_t i, double* t) { put_vector(t, nodal_force(i)); }));
@@ -330,22 +333,16 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   write_data_array<std::int64_t>(sink, enc, kIndent, "ElementId", 1, n_cells, indexed([&](std::size_t c) {
     return c < n_elements ? static_cast<std::int64_t>(model.elements[c].id) : std::int64_t{0};
   }));
-  if (!r.points.empty()) {
+  if (!r.points.empty() || !r.element_stress.empty()) {
     // Arithmetic mean of the integration-point stresses (zero for vertex cells).
-    const auto mean_stress = [&](std::size_t c) {
-      Tensor4 mean{};
-      if (c >= n_elements || r.points[c].empty()) return mean;
-      const auto& points = r.points[c];
-      for (const auto& p : points)
-        for (int k = 0; k < 4; ++k) mean[k] += p.stress[k];
-      for (double& k : mean) k /= static_cast<double>(points.size());
-      return mean;
+    const auto cell_stress = [&](std::size_t c) {
+      if (c >= n_elements) return Tensor4{};
+      return r.points.empty() ? r.element_stress[c] : mean_stress(r.points[c]);
     };
     write_data_array<double>(sink, enc, kIndent, "S", 6, 6 * n_cells,
-                             tuples(6, [&](std::size_t c, double* t) { put_tensor(t, mean_stress(c)); }));
-    write_data_array<double>(sink, enc, kIndent, "S_Mises", 1, n_cells, indexed([&](std::size_t c) {
-      return c < n_elements && !r.points[c].empty() ? von_mises(mean_stress(c)) : 0.0;
-    }));
+                             tuples(6, [&](std::size_t c, double* t) { put_tensor(t, cell_stress(c)); }));
+    write_data_array<double>(sink, enc, kIndent, "S_Mises", 1, n_cells,
+                             indexed([&](std::size_t c) { return von_mises(cell_stress(c)); }));
   }
   sink.append("      </CellData>\n      <Points>\n");
   write_data_array<double>(sink, enc, kIndent, "Points", 3, 3 * n_nodes,
