@@ -194,9 +194,29 @@ void Assembler::build_pattern() {
 
   // 2. Value positions of each contribution's local entries: plain for
   //    contributions on free/prescribed dofs only, weighted through T otherwise.
+  //    A plain contribution whose dofs come in node pairs (2k, 2k+1) with
+  //    consecutive equations (or both prescribed), each pair's second column
+  //    having the rows of its first, stores one position per 2x2 block: the
+  //    block's other entries sit at p + 1 (next row), p + len and p + len + 1
+  //    (next column, len = length of the block's first column).
+  std::vector<bool> same_rows_as_previous(static_cast<std::size_t>(n), false);
+  for (int j = 1; j < n; ++j)
+    same_rows_as_previous[j] = outer[j + 1] - outer[j] == outer[j] - outer[j - 1] &&
+                               std::equal(inner.begin() + outer[j], inner.begin() + outer[j + 1],
+                                          inner.begin() + outer[j - 1]);
+  const auto in_blocks = [&](std::span<const int> dofs) {
+    if (dofs.size() % 2 != 0) return false;
+    for (std::size_t k = 0; k < dofs.size(); k += 2) {
+      const int e0 = equations_.equation(dofs[k]), e1 = equations_.equation(dofs[k + 1]);
+      if (e0 < 0 && e1 < 0) continue;
+      if (e0 < 0 || e1 != e0 + 1 || !same_rows_as_previous[static_cast<std::size_t>(e1)]) return false;
+    }
+    return true;
+  };
   offsets_.assign(n_contrib + 1, 0);
   weighted_index_.assign(n_contrib, -1);
   weighted_.clear();
+  blocked_.assign(static_cast<std::size_t>(n_contrib), 0);
   for (int c = 0; c < n_contrib; ++c) {
     const auto dofs = contributions_[c]->dofs();
     const auto m = dofs.size();
@@ -205,10 +225,13 @@ void Assembler::build_pattern() {
     if (weighted) {
       weighted_index_[c] = static_cast<int>(weighted_.size());
       weighted_.emplace_back();
+    } else {
+      blocked_[c] = in_blocks(dofs);
     }
-    offsets_[c + 1] = offsets_[c] + (weighted ? 0 : m * m);
+    offsets_[c + 1] = offsets_[c] + (weighted ? 0 : blocked_[c] ? m * m / 4 : m * m);
   }
   positions_.assign(offsets_[n_contrib], -1);
+  positions_.shrink_to_fit();
 #pragma omp parallel for schedule(dynamic, 256) if (n_contrib >= kParallelThreshold)
   for (int c = 0; c < n_contrib; ++c) {
     const auto dofs = contributions_[c]->dofs();
@@ -227,12 +250,13 @@ void Assembler::build_pattern() {
         }
       continue;
     }
-    for (std::size_t b = 0; b < m; ++b) {
+    const std::size_t step = blocked_[c] ? 2 : 1, h = m / step;
+    for (std::size_t b = 0; b < m; b += step) {
       const int ej = equations_.equation(dofs[b]);
       if (ej < 0) continue;
-      for (std::size_t a = 0; a < m; ++a) {
+      for (std::size_t a = 0; a < m; a += step) {
         const int ei = equations_.equation(dofs[a]);
-        if (ei >= 0) positions_[offsets_[c] + b * m + a] = position(ei, ej);
+        if (ei >= 0) positions_[offsets_[c] + (b / step) * h + a / step] = position(ei, ej);
       }
     }
   }
@@ -276,6 +300,7 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     std::fill_n(tangent->valuePtr(), tangent->nonZeros(), 0.0);
   }
   double* values = tangent ? tangent->valuePtr() : nullptr;
+  const int* outer = pattern_.outer.data();
   std::exception_ptr failure;
   std::atomic<bool> failed{false};
 
@@ -303,6 +328,27 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
       return;
     }
     const int* pos = own_positions ? own_positions : positions_.data() + offsets_[c];
+    if (!own_positions && blocked_[c]) {
+      const Eigen::Index h = m / 2;
+      for (Eigen::Index l = 0; l < h; ++l) {
+        const double* k0 = ke + 2 * l * m;  // columns 2l and 2l + 1
+        const double* k1 = k0 + m;
+        int len = -1;
+        for (Eigen::Index k = 0; k < h; ++k) {
+          const int p = pos[l * h + k];
+          if (p < 0) continue;
+          if (len < 0) {
+            const int f = equations_.equation(dofs[2 * l]);
+            len = outer[f + 1] - outer[f];
+          }
+          values[p] += k0[2 * k];
+          values[p + 1] += k0[2 * k + 1];
+          values[p + len] += k1[2 * k];
+          values[p + len + 1] += k1[2 * k + 1];
+        }
+      }
+      return;
+    }
     for (Eigen::Index e = 0; e < m * m; ++e)
       if (pos[e] >= 0) values[pos[e]] += ke[e];
   };

@@ -14,6 +14,7 @@
 /// does not depend on the number of threads.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -96,8 +97,12 @@ class Assembler {
   SparsityPattern pattern_;              ///< the tangent's structure; assemble() gives it to a tangent that lacks it
   /// Value-array index of local entry (a, b) of contribution c, column-major:
   /// positions_[offsets_[c] + b * n + a]; -1 where a row or column is prescribed.
+  /// A blocked contribution (blocked_[c], dofs in node pairs) stores one index
+  /// per 2x2 block, positions_[offsets_[c] + (b/2) * (n/2) + a/2] for even a, b
+  /// (see build_pattern): a quarter of the memory.
   std::vector<int> positions_;
   std::vector<std::size_t> offsets_;
+  std::vector<std::uint8_t> blocked_;
   /// Contributions touching a dependent (eliminated) dof scatter through the
   /// map T: local entry e = b * n + a adds weight[k] * k_e to values[pos[k]]
   /// for k in [start[e], start[e + 1]).
