@@ -57,6 +57,83 @@ TEST(Assembler, MatchesDenseAssemblyOfSpringChain) {
   EXPECT_LT((Eigen::MatrixXd(k) - kd.bottomRightCorner(n - 1, n - 1)).norm(), 1e-12);
 }
 
+namespace {
+
+/// Linear contribution over any dof list with a dense, unsymmetric matrix of
+/// distinct entries (a misplaced entry changes the assembled matrix).
+class DenseBlock final : public Contribution {
+ public:
+  DenseBlock(std::vector<int> dofs, double seed) : dofs_(std::move(dofs)) {
+    const auto m = static_cast<Eigen::Index>(dofs_.size());
+    k_.resize(m, m);
+    for (Eigen::Index j = 0; j < m; ++j)
+      for (Eigen::Index i = 0; i < m; ++i) k_(i, j) = seed + 0.37 * static_cast<double>(i) + 1.13 * static_cast<double>(j * j);
+  }
+  std::span<const int> dofs() const override { return dofs_; }
+  void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override {
+    Eigen::VectorXd ue(k_.rows());
+    for (Eigen::Index a = 0; a < ue.size(); ++a) ue[a] = s.u[dofs_[static_cast<std::size_t>(a)]];
+    out.residual = k_ * ue;
+    if (need_tangent) out.tangent = k_;
+  }
+  std::string describe() const override { return "dense block"; }
+  const Eigen::MatrixXd& matrix() const { return k_; }
+
+ private:
+  std::vector<int> dofs_;
+  Eigen::MatrixXd k_;
+};
+
+}  // namespace
+
+TEST(Assembler, NodeBlockScatterMatchesDenseAssembly) {
+  // A 5 x 3 grid of nodes (dofs 2i, 2i+1; node = 5 row + column), 4 x 2
+  // "quads" of 8 dofs. Node 0 fully prescribed (its blocks skipped); node 10
+  // with x prescribed only, a spring in x only between nodes 12 and 14 (their
+  // x and y columns differ) and one quad listing a node's dofs y before x:
+  // those quads keep full positions. Blocked: the three quads of the first row
+  // with normal order.
+  const int nx = 5, ny = 3, n_nodes = nx * ny, n = 2 * n_nodes;
+  std::vector<DenseBlock> quads;
+  quads.reserve(8);
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+      std::vector<int> dofs{2 * a, 2 * a + 1, 2 * b, 2 * b + 1, 2 * c, 2 * c + 1, 2 * d, 2 * d + 1};
+      if (i == 3 && j == 0) std::swap(dofs[0], dofs[1]);
+      quads.emplace_back(dofs, 1.0 + static_cast<double>(quads.size()));
+    }
+  Spring spring(2 * 12, 2 * 14, 5.0);
+  std::vector<Contribution*> list;
+  for (auto& q : quads) list.push_back(&q);
+  list.push_back(&spring);
+  std::vector<bool> prescribed(n, false);
+  prescribed[0] = prescribed[1] = true;
+  prescribed[2 * 10] = true;
+  const EquationMap map(prescribed);
+  Assembler assembler(list, map);
+  EXPECT_EQ(assembler.n_blocked(), 3);
+
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(n, 0.1, 2.0);
+  const EvaluationState state{u, u};
+  Eigen::VectorXd r;
+  SparseMatrix k;
+  assembler.assemble(state, r, &k);
+
+  Eigen::MatrixXd full = Eigen::MatrixXd::Zero(n, n);
+  for (const auto& q : quads) {
+    const auto dofs = q.dofs();
+    for (std::size_t b = 0; b < dofs.size(); ++b)
+      for (std::size_t a = 0; a < dofs.size(); ++a)
+        full(dofs[a], dofs[b]) += q.matrix()(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+  }
+  full(24, 24) += 5, full(28, 28) += 5, full(24, 28) -= 5, full(28, 24) -= 5;
+  Eigen::MatrixXd expected(map.n_equations(), map.n_equations());
+  for (int j = 0; j < map.n_equations(); ++j)
+    for (int i = 0; i < map.n_equations(); ++i) expected(i, j) = full(map.dof(i), map.dof(j));
+  EXPECT_EQ(Eigen::MatrixXd(k), expected);
+}
+
 TEST(Assembler, PropagatesContributionFailure) {
   class Broken final : public Contribution {
    public:

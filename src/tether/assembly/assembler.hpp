@@ -14,6 +14,7 @@
 /// does not depend on the number of threads.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -77,6 +78,8 @@ class Assembler {
   /// Pattern builds so far (the first included) and connectivity changes
   /// placed in the existing pattern.
   [[nodiscard]] int pattern_builds() const { return pattern_builds_; }
+  /// Contributions scattered by 2x2 node blocks (one position per block; see build_pattern).
+  [[nodiscard]] int n_blocked() const { return static_cast<int>(std::count(blocked_.begin(), blocked_.end(), 1)); }
   [[nodiscard]] int relocations() const { return relocations_; }
 
  private:
