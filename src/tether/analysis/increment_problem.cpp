@@ -21,13 +21,13 @@ EvaluationState IncrementProblem::state() const {
   return EvaluationState{u_, u_start_, time_.step_time, time_.total_time, time_.dt, time_.nlgeom};
 }
 
-bool IncrementProblem::evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent, IterationNorms& norms,
+bool IncrementProblem::evaluate(Eigen::VectorXd& residual, bool with_tangent, IterationNorms& norms,
                                 double& force_scale) {
   const EvaluationState s = state();
   const auto t0 = std::chrono::steady_clock::now();
   const bool changed = assembler_.update_connectivity(s);
   const auto t1 = std::chrono::steady_clock::now();
-  assembler_.assemble(s, full_, tangent);
+  assembler_.assemble(s, full_, with_tangent);
   full_ -= external_;
   search_seconds_ = std::chrono::duration<double>(t1 - t0).count();
   assembly_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();

@@ -27,7 +27,8 @@ class IncrementProblem final : public NewtonProblem {
                    const Eigen::VectorXd& external, std::vector<const Contribution*> loads, IncrementTime time,
                    bool symmetric);
 
-  bool evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent, IterationNorms& norms, double& force_scale) override;
+  bool evaluate(Eigen::VectorXd& residual, bool with_tangent, IterationNorms& norms, double& force_scale) override;
+  [[nodiscard]] const SparseMatrix& tangent() const override { return assembler_.tangent(); }
   void apply_correction(const Eigen::VectorXd& correction, double alpha) override;
   [[nodiscard]] double displacement_norm(const Eigen::VectorXd& correction) const override;
   [[nodiscard]] bool symmetric() const override { return symmetric_; }

@@ -20,14 +20,13 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
                                   const IterationListener& listener) {
   NewtonOutcome out;
   Eigen::VectorXd residual, correction;
-  SparseMatrix tangent;
   IterationNorms norms;
   double previous = 0, before_previous = 0;
 
   for (int iteration = 0;; ++iteration) {
     double q = 0;
     try {
-      const bool changed = problem.evaluate(residual, &tangent, norms, q);
+      const bool changed = problem.evaluate(residual, true, norms, q);
       problem.add_evaluation_time(timing_);
       if (changed) analysed_ = false;
     } catch (const ModelError& e) {
@@ -62,6 +61,7 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
     }
 
     try {
+      const SparseMatrix& tangent = problem.tangent();
       auto t0 = std::chrono::steady_clock::now();
       if (!analysed_) {
         solver_.analyze(tangent), analysed_ = true;
@@ -99,7 +99,7 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
       double trial_q = 0;
       for (int k = 0; k < 5; ++k) {
         try {
-          problem.evaluate(trial, nullptr, trial_norms, trial_q);
+          problem.evaluate(trial, false, trial_norms, trial_q);
           problem.add_evaluation_time(timing_);
         } catch (const ModelError&) {
           trial_norms.force_residual = INFINITY;

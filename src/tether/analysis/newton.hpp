@@ -33,11 +33,15 @@ struct SolveTiming {
 class NewtonProblem {
  public:
   virtual ~NewtonProblem() = default;
-  /// Residual over the free equations and, when `tangent` is not null, the
-  /// tangent. Returns true when the matrix pattern changed since the last call.
-  /// Fills `norms` (all but correction / previous residual) and the force scale q.
-  virtual bool evaluate(Eigen::VectorXd& residual, SparseMatrix* tangent, IterationNorms& norms,
+  /// Residual over the free equations and, when `with_tangent`, the tangent
+  /// (tangent(); unchanged otherwise). Returns true when the matrix pattern
+  /// changed since the last call. Fills `norms` (all but correction /
+  /// previous residual) and the force scale q.
+  virtual bool evaluate(Eigen::VectorXd& residual, bool with_tangent, IterationNorms& norms,
                         double& force_scale) = 0;
+  /// The tangent of the last evaluate() with `with_tangent`, owned by the
+  /// problem (so the matrix exists once, not also as the caller's copy).
+  [[nodiscard]] virtual const SparseMatrix& tangent() const = 0;
   /// u_free += alpha * correction.
   virtual void apply_correction(const Eigen::VectorXd& correction, double alpha) = 0;
   /// Largest |correction| over displacement equations.

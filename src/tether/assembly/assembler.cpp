@@ -22,20 +22,6 @@ constexpr int kParallelThreshold = 2048;
 
 }  // namespace
 
-bool SparsityPattern::matches(const SparseMatrix& m) const {
-  if (m.rows() != n || m.cols() != n || m.nonZeros() != nonZeros() || !m.isCompressed()) return false;
-  return std::equal(outer.begin(), outer.end(), m.outerIndexPtr()) &&
-         std::equal(inner.begin(), inner.end(), m.innerIndexPtr());
-}
-
-void SparsityPattern::assign_to(SparseMatrix& m) const {
-  m.resize(n, n);  // compressed, no entries; keeps the storage
-  m.resizeNonZeros(nonZeros());
-  std::copy(outer.begin(), outer.end(), m.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), m.innerIndexPtr());
-  std::fill_n(m.valuePtr(), inner.size(), 0.0);
-}
-
 Assembler::Assembler(std::vector<Contribution*> contributions, EquationMap equations,
                      std::vector<int> reserved_block)
     : contributions_(std::move(contributions)), equations_(std::move(equations)),
@@ -59,9 +45,9 @@ bool Assembler::update_connectivity(const EvaluationState& state) {
 }
 
 int Assembler::find_position(int row, int col) const {
-  const int* inner = pattern_.inner.data();
-  const int* begin = inner + pattern_.outer[static_cast<std::size_t>(col)];
-  const int* end = inner + pattern_.outer[static_cast<std::size_t>(col) + 1];
+  const int* inner = tangent_.innerIndexPtr();
+  const int* begin = inner + tangent_.outerIndexPtr()[col];
+  const int* end = inner + tangent_.outerIndexPtr()[col + 1];
   const int* it = std::lower_bound(begin, end, row);
   return it != end && *it == row ? static_cast<int>(it - inner) : -1;
 }
@@ -169,12 +155,11 @@ void Assembler::build_pattern() {
   }
   for (int ej : reserved_block_)
     for (int ei : reserved_block_) rows[fill[ej]++] = ei;
-  // Built in place in pattern_ (the previous structure is dropped first).
-  pattern_ = SparsityPattern{};
-  pattern_.n = n;
-  std::vector<int>& outer = pattern_.outer;
-  std::vector<int>& inner = pattern_.inner;
-  outer.assign(static_cast<std::size_t>(n) + 1, 0);
+  // The previous tangent is dropped first; the new one gets the structure
+  // with zero values.
+  SparseMatrix().swap(tangent_);
+  std::vector<int> outer(static_cast<std::size_t>(n) + 1, 0);
+  std::vector<int> inner;
   inner.reserve(rows.size() / 2);
   for (int j = 0; j < n; ++j) {
     auto b = rows.begin() + count[j], e = rows.begin() + count[j + 1];
@@ -185,7 +170,6 @@ void Assembler::build_pattern() {
   }
   rows.clear();
   rows.shrink_to_fit();
-  inner.shrink_to_fit();
 
   auto position = [&](int row, int col) {
     return static_cast<int>(std::lower_bound(inner.data() + outer[col], inner.data() + outer[col + 1], row) -
@@ -261,6 +245,14 @@ void Assembler::build_pattern() {
     }
   }
 
+  tangent_.resize(n, n);
+  tangent_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), tangent_.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), tangent_.innerIndexPtr());
+  std::fill_n(tangent_.valuePtr(), inner.size(), 0.0);
+  inner.clear();
+  inner.shrink_to_fit();
+
   // 3. Greedy colouring: no two contributions of a colour share a global dof
   //    or (through T) a free equation, so their scatters never collide.
   std::vector<std::uint64_t> used(equations_.n_dofs(), 0);
@@ -291,16 +283,16 @@ void Assembler::build_pattern() {
 }
 
 void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, SparseMatrix* tangent) {
+  assemble(state, residual, tangent != nullptr);
+  if (tangent) *tangent = tangent_;
+}
+
+void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent) {
   const auto t0 = std::chrono::steady_clock::now();
   residual.setZero(equations_.n_dofs());
-  if (tangent) {
-    // A re-paired contact node can move entries without changing their
-    // number: compare the structure, not only its size.
-    if (!pattern_.matches(*tangent)) pattern_.assign_to(*tangent);
-    std::fill_n(tangent->valuePtr(), tangent->nonZeros(), 0.0);
-  }
-  double* values = tangent ? tangent->valuePtr() : nullptr;
-  const int* outer = pattern_.outer.data();
+  if (with_tangent) std::fill_n(tangent_.valuePtr(), tangent_.nonZeros(), 0.0);
+  double* values = with_tangent ? tangent_.valuePtr() : nullptr;
+  const int* outer = tangent_.outerIndexPtr();
   std::exception_ptr failure;
   std::atomic<bool> failed{false};
 

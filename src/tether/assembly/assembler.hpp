@@ -25,24 +25,6 @@
 
 namespace tether {
 
-/// Compressed-column structure of the tangent over the free equations, without
-/// values: the tangent itself is the caller's matrix (assemble()), so the
-/// assembler does not keep a second, zero-valued copy of its values.
-struct SparsityPattern {
-  int n = 0;               ///< rows = columns (free equations)
-  std::vector<int> outer;  ///< n + 1 column starts
-  std::vector<int> inner;  ///< row indices, sorted and unique within each column
-
-  [[nodiscard]] Eigen::Index rows() const { return n; }
-  [[nodiscard]] Eigen::Index cols() const { return n; }
-  [[nodiscard]] Eigen::Index nonZeros() const { return static_cast<Eigen::Index>(inner.size()); }
-  /// True when `m` is compressed and has exactly this structure.
-  [[nodiscard]] bool matches(const SparseMatrix& m) const;
-  /// Makes `m` a compressed matrix with this structure and zero values
-  /// (reusing its storage when large enough).
-  void assign_to(SparseMatrix& m) const;
-};
-
 /// Wall-clock seconds spent in the parts of one assembly (for benchmarks).
 struct AssemblyTiming {
   double pattern = 0;   ///< last pattern build
@@ -66,13 +48,26 @@ class Assembler {
   bool update_connectivity(const EvaluationState& state);
 
   /// Residual over all global dofs (prescribed ones included: that is where
-  /// reactions are read) and, when `tangent` is not null, the tangent over the
-  /// free equations. `residual` is resized to the number of global dofs.
-  /// Exceptions thrown by a contribution (e.g. an inverted element) propagate.
+  /// reactions are read) and, when `with_tangent`, the tangent over the free
+  /// equations into tangent() (left unchanged otherwise). `residual` is
+  /// resized to the number of global dofs. Exceptions thrown by a contribution
+  /// (e.g. an inverted element) propagate.
+  void assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent);
+
+  /// As above; when `tangent` is not null it receives a copy of tangent()
+  /// (for callers that want their own matrix: tests, benchmarks).
   void assemble(const EvaluationState& state, Eigen::VectorXd& residual, SparseMatrix* tangent);
 
+  /// The tangent over the free equations, owned by the assembler: its
+  /// structure is the pattern (built by the constructor, set_equations() and
+  /// update_connectivity() on a rebuild), its values those of the last
+  /// assemble() with the tangent (zero before). The assembler keeps no other
+  /// copy of the structure.
+  [[nodiscard]] const SparseMatrix& tangent() const { return tangent_; }
+
   [[nodiscard]] const EquationMap& equations() const { return equations_; }
-  [[nodiscard]] const SparsityPattern& pattern() const { return pattern_; }
+  /// The tangent's structure (tangent()).
+  [[nodiscard]] const SparseMatrix& pattern() const { return tangent_; }
   [[nodiscard]] int n_colours() const { return static_cast<int>(colours_.size()); }
   [[nodiscard]] const AssemblyTiming& timing() const { return timing_; }
   /// Pattern builds so far (the first included) and connectivity changes
@@ -97,7 +92,7 @@ class Assembler {
 
   std::vector<Contribution*> contributions_;
   EquationMap equations_;
-  SparsityPattern pattern_;              ///< the tangent's structure; assemble() gives it to a tangent that lacks it
+  SparseMatrix tangent_;                 ///< the pattern, with the last assembled values
   /// Value-array index of local entry (a, b) of contribution c, column-major:
   /// positions_[offsets_[c] + b * n + a]; -1 where a row or column is prescribed.
   /// A blocked contribution (blocked_[c], dofs in node pairs) stores one index
