@@ -1,7 +1,9 @@
 // tether command-line program: parse arguments -> read deck -> run -> write -> exit code.
 //
 // Exit codes: 0 success, 1 bad input (deck or arguments), 2 the analysis did
-// not complete (non-convergence, singular model), 3 I/O or internal error.
+// not complete (non-convergence, singular model, a step the chosen solver
+// cannot factorize, an unusable scratch directory for out-of-core factors),
+// 3 I/O or internal error.
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>

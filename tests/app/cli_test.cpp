@@ -376,3 +376,21 @@ TEST(Cli, MemoryBudgetRefusesAnUnusableTemporaryDirectoryByName) {
   const auto r = tether("run " + deck + " --solver mumps -o " + (dir / "out").string(), "TMPDIR=" + missing);
   EXPECT_EQ(r.code, 0) << r.out;
 }
+
+// MUMPS (LDLT) and CHOLMOD read one triangle only: asked for on a step whose
+// tangent is unsymmetric (friction), the run is refused with the reason and
+// the way out, not factorized as if the matrix were symmetric.
+TEST(Cli, ASymmetricOnlySolverIsRefusedForAnUnsymmetricStep) {
+  const fs::path dir = scratch("unsymmetric_solver");
+  write(dir / "friction.inp", slurp(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/restart_friction.inp"));
+  for (const char* solver : {"mumps", "cholmod"}) {
+    const auto r = tether("run " + (dir / "friction.inp").string() + " --solver " + solver + " -o " +
+                          (dir / solver).string());
+    EXPECT_EQ(r.code, 2) << solver << ": " << r.out;  // the step cannot be solved as asked
+    EXPECT_NE(r.out.find(std::string("--solver ") + solver), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("factorizes symmetric matrices only"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("use --solver auto or umfpack"), std::string::npos) << r.out;
+  }
+  EXPECT_EQ(tether("run " + (dir / "friction.inp").string() + " --solver umfpack -q -o " + (dir / "lu").string()).code,
+            0);
+}

@@ -24,7 +24,8 @@ using testing::tangent_error;
 /// / SmoothStraight: two faces with a kink at node 2 and SMOOTH=0.2, slave over
 /// the rounded corner (3 real master nodes) or over a shortened straight piece.
 /// QuadraticPair: two curved 3-node faces meeting at node 2 (x = 0).
-enum class Master { Linear, Quadratic, QuadraticPair, SmoothCorner, SmoothStraight };
+/// Kink: the SmoothCorner geometry without SMOOTH (a convex kink at node 2).
+enum class Master { Linear, Quadratic, QuadraticPair, SmoothCorner, SmoothStraight, Kink };
 enum class Friction { None, Exact, Slope, ElasticSlip };
 
 /// A slave node (node 0) over a master surface: two straight segments
@@ -45,11 +46,11 @@ struct Fixture {
       reference = {{0.3, 0.2}, {2.0, 0.0}, {0.0, 0.0}, {-2.0, 0.0}};
       setup.master_faces = {{1, 2}, {2, 3}};
       setup.master_face_labels = {{1, 3}, {2, 3}};
-    } else if (master == Master::SmoothCorner || master == Master::SmoothStraight) {
+    } else if (master == Master::SmoothCorner || master == Master::SmoothStraight || master == Master::Kink) {
       reference = {{0.3, 0.2}, {2.0, 0.0}, {0.0, 0.05}, {-2.0, -0.02}};
       setup.master_faces = {{1, 2}, {2, 3}};
       setup.master_face_labels = {{1, 3}, {2, 3}};
-      setup.smoothing = 0.2;
+      setup.smoothing = master == Master::Kink ? 0.0 : 0.2;
       x0 = master == Master::SmoothCorner ? 0.1 : 1.0;
     } else if (master == Master::QuadraticPair) {
       reference = {{0.3, 0.2}, {2.0, 0.0}, {0.0, 0.0}, {1.0, 0.08}, {-2.0, 0.0}, {-1.0, 0.05}};
@@ -519,6 +520,59 @@ TEST(ContactNode, AGapWithinRoundOffTouchesAndAClearanceDoesNot) {
   f.u_start = f.u;
   f.pair->update_connectivity(f.state());
   EXPECT_EQ(f.node().branch(f.state()).status, ContactStatus::Open);
+}
+
+// Penalty friction (stick slope) at rest: committed force 0 and Δs = 0, so
+// T = 0, but the stick stiffness F ⊗ k∇Δs is there (it was skipped with
+// T = 0, which let such a node slide freely in its first iteration).
+TEST(ContactNode, PenaltyFrictionAtRestHasItsStickStiffness) {
+  Fixture f(Master::Linear, hard(), Friction::Slope);
+  f.u.setZero();
+  f.u[1] = -f.reference[0].y();  // on the master face y = 0
+  f.u[f.n_disp] = 0.8;           // λn: closed, N = 0.8
+  f.u_start = f.u;               // no motion in the increment: Δs = 0
+  f.pair->update_connectivity(f.state());
+  EXPECT_EQ(f.node().status(f.state()), ContactStatus::Stick);
+  EXPECT_EQ(f.node().values(f.state()).tangential_force, 0.0);
+  const double err = tangent_error(f.node(), f.state(), 1e-7);
+  std::printf("[ contact ] penalty stick at rest: tangent error %.2e\n", err);
+  EXPECT_LT(err, 2e-6);
+}
+
+// A slave in the shadow of a convex kink is in node-to-node contact with the
+// kink node (normal e along y_s - y_kink). Its friction force acts there too,
+// along e turned by 90°, on the slave and the kink node only, at right
+// angles to the normal force (it was spread over the segment with ξ* past
+// its end: weights -0.15 and 1.15 at ξ* = 1.3).
+TEST(ContactNode, FrictionAtAConvexCornerActsAtTheCornerNodeAtRightAnglesToTheNormal) {
+  for (const double lambda_t : {0.1, -0.2}) {
+    Fixture f(Master::Kink, hard(), Friction::Exact);
+    f.place(0.05, 0.08, 0.0, 0.065);
+    // Right above the (slightly moved) kink node: outside both faces.
+    const Eigen::Vector2d kink = f.reference[2] + f.u.segment<2>(4);
+    f.u[0] = kink.x() - f.reference[0].x(), f.u[1] = kink.y() + 0.012 - f.reference[0].y();
+    f.pair->update_connectivity(f.state());
+    ASSERT_TRUE(f.pair->slave(0).pairing.at_corner);
+    f.u[f.n_disp] = 0.8, f.u[f.n_disp + 1] = lambda_t;
+    f.pair->update_connectivity(f.state());
+    LocalSystem out;
+    out.reset(static_cast<Eigen::Index>(f.node().dofs().size()));
+    f.node().evaluate(f.state(), out, true);
+    // Slave force: the normal part along e, the rest (friction) at right angles to it.
+    const Eigen::Vector2d ys = f.reference[0] + f.u.segment<2>(0), yk = f.reference[2] + f.u.segment<2>(4);
+    const Eigen::Vector2d e = (ys - yk).normalized();
+    const Eigen::Vector2d r_s = out.residual.segment<2>(0);
+    EXPECT_NEAR(std::abs(r_s.dot(Eigen::Vector2d(-e.y(), e.x()))), std::abs(lambda_t), 1e-12);
+    EXPECT_NEAR(std::abs(r_s.dot(e)), 0.8, 1e-12);
+    // Nothing on the far ends of the two faces (nodes 1 and 3).
+    const auto& dofs = f.node().dofs();
+    for (std::size_t k = 0; k < dofs.size(); ++k)
+      if (dofs[k] < f.n_disp && (dofs[k] / 2 == 1 || dofs[k] / 2 == 3))
+        EXPECT_EQ(out.residual[static_cast<Eigen::Index>(k)], 0.0) << "dof " << dofs[k];
+    const double err = tangent_error(f.node(), f.state(), 1e-7);
+    std::printf("[ contact ] friction at a convex corner, lambda_t %.1f: tangent error %.2e\n", lambda_t, err);
+    EXPECT_LT(err, 2e-6);
+  }
 }
 
 TEST(ContactNode, ForceOnTheSlaveIsNormalForceAlongTheOutwardNormal) {

@@ -35,12 +35,17 @@ inline std::filesystem::path generated_deck(const std::string& tool, const std::
   const fs::path written_by = dir / (name + ".command");
   const std::string command = "python3 \"" + std::string(TETHER_SOURCE_DIR) + "/tools/" + tool + "\" " + options +
                               " \"" + deck.string() + "\" > /dev/null";
+  // ... and the generator's modification time: an edited generator writes the deck again.
+  const fs::path script = fs::path(TETHER_SOURCE_DIR) / "tools" / tool;
+  std::error_code ec;
+  const auto stamp = fs::last_write_time(script, ec).time_since_epoch().count();
+  const std::string key = command + " # " + std::to_string(ec ? 0 : stamp);
   std::string cached;
   if (std::ifstream in(written_by); in) std::getline(in, cached);
-  if (!fs::exists(deck) || cached != command) {
+  if (!fs::exists(deck) || cached != key) {
     fs::remove(written_by);
     if (std::system(command.c_str()) != 0) throw std::runtime_error("generator failed: " + command);
-    std::ofstream(written_by) << command << "\n";
+    std::ofstream(written_by) << key << "\n";
   }
   return deck;
 }

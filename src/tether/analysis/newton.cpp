@@ -99,7 +99,8 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
       double trial_q = 0;
       for (int k = 0; k < 5; ++k) {
         try {
-          problem.evaluate(trial, false, trial_norms, trial_q);
+          // A re-pairing here may have rebuilt the pattern: the next factorization must analyse it.
+          if (problem.evaluate(trial, false, trial_norms, trial_q)) analysed_ = false;
           problem.add_evaluation_time(timing_);
         } catch (const ModelError&) {
           trial_norms.force_residual = INFINITY;

@@ -294,6 +294,12 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   unsymmetric = unsymmetric || !disc.user_constraints().empty();
   for (const ConstraintData& c : model_.constraints) unsymmetric = unsymmetric || c.kind == ConstraintData::Kind::UserMpc;
   const bool symmetric = !unsymmetric;
+  // MUMPS here is LDLT and CHOLMOD Cholesky: both read one triangle only.
+  if (unsymmetric && (options_.solver == SolverKind::Mumps || options_.solver == SolverKind::Cholmod))
+    throw ModelError(std::string("--solver ") +
+                     (options_.solver == SolverKind::Mumps ? "mumps (LDLT)" : "cholmod (Cholesky)") +
+                     " factorizes symmetric matrices only, and this step's tangent is unsymmetric (friction, "
+                     "follower pressure under NLGEOM, or a user constraint); use --solver auto or umfpack");
 
   const double period = step.period > 0 ? step.period : 1.0;
   const double max_dt = step.max_increment > 0 ? step.max_increment : period;

@@ -281,10 +281,29 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
   // last converged increment, and move it to ξ* when the next increment
   // commits: a jump of the residual between increments, and answers that
   // depend on the increment size.)
+  // At a convex corner (node-to-node contact with the end node, normal
+  // e = ∇_s g) the contact point is the end node itself: T acts between the
+  // slave and that node along t_e = e rotated by +90° (t_e = t where e = n),
+  // at right angles to the normal force, and ∂t_e/∂y_s = R ∂e/∂y_s = R ∇²_ss g.
   const SegmentGeometry& geo = gap.geometry;
-  const ContactVector force_direction = geo.metric * geo.xi_gradient;
+  const bool corner = s.pairing.at_corner;
+  const Eigen::Matrix2d rot90{{0, -1}, {1, 0}};
+  const int end = s.pairing.xi < 0 ? 1 : 2;  // local point of the end node at a corner
+  ContactVector force_direction = geo.metric * geo.xi_gradient;
+  if (corner) {
+    const Eigen::Vector2d t_e = rot90 * gap.gradient.segment<2>(0);
+    force_direction.setZero(nu);
+    force_direction.segment<2>(0) = t_e;
+    force_direction.segment<2>(2 * end) = -t_e;
+  }
   const auto force_jacobian = [&] {
-    return ContactMatrix(geo.xi_gradient * geo.metric_gradient.transpose() + geo.metric * geo.xi_hessian);
+    if (!corner)
+      return ContactMatrix(geo.xi_gradient * geo.metric_gradient.transpose() + geo.metric * geo.xi_hessian);
+    ContactMatrix j = ContactMatrix::Zero(nu, nu);
+    const Eigen::Matrix2d d = rot90 * gap.hessian.block<2, 2>(0, 0);  // ∂t_e/∂y_s; ∂t_e/∂y_end = -d
+    j.block<2, 2>(0, 0) = d, j.block<2, 2>(0, 2 * end) = -d;
+    j.block<2, 2>(2 * end, 0) = -d, j.block<2, 2>(2 * end, 2 * end) = d;
+    return j;
   };
   double T = 0;
   if (exact_stick) {
@@ -356,9 +375,11 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     }
     if (out) {
       out->residual.head(nu) += T * force_direction;
-      if (need_tangent && T != 0) {
+      if (need_tangent) {
+        // Also at T = 0: a node at rest in stick (T_c = 0, Δs = 0) has the
+        // stiffness F ⊗ k ∇Δs, without which its first iteration slides freely.
         out->tangent.topRows(nu) += force_direction * dT.transpose();
-        out->tangent.topLeftCorner(nu, nu) += T * force_jacobian();
+        if (T != 0) out->tangent.topLeftCorner(nu, nu) += T * force_jacobian();
       }
     }
   }

@@ -105,6 +105,10 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
     }
     analysed_ = true;
   }
+  struct Detach {  // solves read neither the matrix nor the Schur array: no dangling pointer, whatever happens
+    DMUMPS_STRUC_C* id;
+    ~Detach() { id->irn = id->jcn = nullptr, id->a = nullptr, id->schur = nullptr; }
+  } detach{id};
   id->irn = rows.data();  // this call's arrays: MUMPS reads them again
   id->jcn = cols.data();
   id->a = values.data();
@@ -113,10 +117,6 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   id->schur_lld = static_cast<int>(m);
   reduced_ready_ = false;
   factorized_ = false;
-  struct Detach {  // solves do not read the matrix: leave no dangling pointer, whatever happens
-    DMUMPS_STRUC_C* id;
-    ~Detach() { id->irn = id->jcn = nullptr, id->a = nullptr; }
-  } detach{id};
   mumps_->plan_memory(memory_budget_mb_);
   mumps_->run(2);
   mumps_->throw_if_null_pivots();
