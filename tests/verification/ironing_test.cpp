@@ -245,7 +245,7 @@ TEST(Ironing, DISABLED_Cpe4FrictionRatioIsMuLongSlide) {
 // same die stops in the slide (INC=100 reached at 0.32 of a 1 mm slide: one
 // die node closed per straight master segment, the closed set changing every
 // iteration; finding 2 of docs/verification_contact.md). Measured: 24
-// increments, 106 (two threads) or 110 (one) iterations, at most 6 per
+// increments, 106-113 iterations (thread count; corner friction), at most 6 per
 // increment, no cut-back; Fx/|Fy| within 1.9 % of mu over 13 steady
 // increments (the track's slave nodes, 0.1 mm apart, pass under a contact a
 // few of them wide: the ratio swings ±1.5 % around 0.297). The last
