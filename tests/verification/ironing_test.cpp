@@ -212,13 +212,15 @@ void check(const std::string& name, const std::string& options, double mu, doubl
 // last iteration - the step after the settle - has order 2.08-3.04 there
 // and r_n / r_{n-1}^2 = 1.2e-5 - 1.3e-4 1/N, the constant of the slide
 // step's settled increments (up to 3.1e-4; order >= 1.85). Both are checked in every
-// increment (order >= 1.5, constant <= 1e-3 1/N): without the gap Hessian
+// increment (order >= 1.5, constant <= 2e-3 1/N; the 15 mm variant reaches
+// 1.4e-3 in one of its 124 increments since the friction force acts at the
+// contact point, 3.1e-4 at most on the 3 mm deck): without the gap Hessian
 // -λn ∇²g indentation increments 3 and 4 fail them (order 0.90, constants
 // 0.05 and 0.09), without the friction force's Jacobian λt ∂F/∂x the slide
 // increments do (order 0.87; docs/theory/contact.md). The reduction of the
 // last iteration is checked everywhere (>= 20x; measured >= 150x).
 constexpr LastIterations kFrictionLast{
-    .max_reduction = 0.05, .min_order = 1.5, .order_step = 2, .min_whole_order = 1.5, .max_whole_constant = 1e-3};
+    .max_reduction = 0.05, .min_order = 1.5, .order_step = 2, .min_whole_order = 1.5, .max_whole_constant = 2e-3};
 
 // 3 mm slide, 24 increments: 17 increments of steady sliding (slide >= 1 mm),
 // every slave node crosses 30 master segments. 4 580 dofs, 28 increments, 153
@@ -231,10 +233,11 @@ TEST(Ironing, Cpe4FrictionRatioIsMu) {
 
 // The long variant: 15 mm (150 segments, 120 increments, 7 564 dofs), the same
 // physics as the 3 mm run over five times the distance. Disabled for its run
-// time (124 increments, 701 iterations, 91 s wall on a loaded 2-core
-// machine); it passes with at most 8 iterations per increment, Fx/|Fy| within
-// 0.93 % of mu and a slide-step order >= 1.79. Run with
-// --gtest_also_run_disabled_tests.
+// time (124 increments, 722 iterations, 23 s wall on the idle 2-core
+// machine, 91 s loaded); it passes with at most 7 iterations per increment,
+// Fx/|Fy| within 1.0 % of mu and a slide-step order >= 1.65 (since the
+// friction force acts at the contact point; before: 701 iterations, at most
+// 8, 0.93 %, 1.79). Run with --gtest_also_run_disabled_tests.
 TEST(Ironing, DISABLED_Cpe4FrictionRatioIsMuLongSlide) {
   check("ironing_cpe4_mu03", "--mu 0.3", 0.3, 15, 0.02, kFrictionLast);
 }
