@@ -76,10 +76,12 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   const fs::path dir = output_dir.empty() ? fs::path(deck).parent_path() / fs::path(deck).stem() : fs::path(output_dir);
   const std::string job = fs::path(deck).stem().string();
 
-  if (memory_mb > 0) check_out_of_core_directory();  // refuse before the run, not when the factors first go to disk
-
   AnalysisOptions options;
   options.solver = parse_solver_kind(solver);
+  // Refuse before the run, not when the factors first go to disk; only the
+  // solvers that can put them there (MUMPS, directly or through auto) need it.
+  if (memory_mb > 0 && (options.solver == SolverKind::Auto || options.solver == SolverKind::Mumps))
+    check_out_of_core_directory();
   options.condense_contact = condense;
   options.memory_budget_mb = memory_mb;
   options.stream_element_results = true;  // the writer does not keep the results

@@ -372,9 +372,17 @@ TEST(Cli, MemoryBudgetRefusesAnUnusableTemporaryDirectoryByName) {
     EXPECT_NE(r.out.find(why), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("set TMPDIR"), std::string::npos) << r.out;
   }
-  // Without a budget nothing goes to disk and the directory does not matter.
+  // Without a budget nothing goes to disk and the directory does not matter;
+  // nor with a solver that never writes its factors out (UMFPACK, CHOLMOD).
   const auto r = tether("run " + deck + " --solver mumps -o " + (dir / "out").string(), "TMPDIR=" + missing);
   EXPECT_EQ(r.code, 0) << r.out;
+  for (const char* in_core_only : {"umfpack", "cholmod"}) {
+    const auto q = tether("run " + deck + " --solver " + in_core_only + " --memory 1 -o " + (dir / "out").string(),
+                          "TMPDIR=" + missing);
+    EXPECT_EQ(q.code, 0) << in_core_only << ": " << q.out;
+  }
+  // Auto may use MUMPS, so it checks.
+  EXPECT_EQ(tether("run " + deck + " --memory 1 -o " + (dir / "out").string(), "TMPDIR=" + missing).code, 2);
 }
 
 // MUMPS (LDLT) and CHOLMOD read one triangle only: asked for on a step whose
