@@ -3,11 +3,14 @@
 #include <chrono>
 #include <cmath>
 
+#include "tether/contact/contact_pair.hpp"
+
 namespace tether {
 
 IncrementProblem::IncrementProblem(Assembler& assembler, const DofMap& dofs, Eigen::VectorXd& u,
                                    const Eigen::VectorXd& u_start, const Eigen::VectorXd& external,
-                                   std::vector<const Contribution*> loads, IncrementTime time, bool symmetric)
+                                   std::vector<const Contribution*> loads, IncrementTime time, bool symmetric,
+                                   const std::vector<std::unique_ptr<ContactPair>>* contact)
     : assembler_(assembler),
       dofs_(dofs),
       u_(u),
@@ -15,7 +18,8 @@ IncrementProblem::IncrementProblem(Assembler& assembler, const DofMap& dofs, Eig
       external_(external),
       loads_(std::move(loads)),
       time_(time),
-      symmetric_(symmetric) {}
+      symmetric_(symmetric),
+      contact_(contact && !contact->empty() ? contact : nullptr) {}
 
 EvaluationState IncrementProblem::state() const {
   return EvaluationState{u_, u_start_, time_.step_time, time_.total_time, time_.dt, time_.nlgeom};
@@ -50,6 +54,16 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, bool with_tangent, It
       norms.force_residual = std::max(norms.force_residual, a);  // forces (and moments at rotations)
   }
   norms.increment = (u_.head(n_disp) - u_start_.head(n_disp)).cwiseAbs().maxCoeff();
+  norms.contact_closed = contact_ ? 0 : -1;
+  norms.contact_changes = norms.contact_repaired = norms.contact_held = 0;
+  if (contact_)
+    for (const auto& pair : *contact_) {
+      const ContactIterationStatistics& c = pair->statistics();
+      norms.contact_closed += c.closed;
+      norms.contact_changes += c.status_changes;
+      norms.contact_repaired += c.repaired;
+      norms.contact_held += c.held_closed;
+    }
 
   // Force scale q: mean magnitude of the nonzero nodal forces (reactions at
   // prescribed dofs, applied forces and pressure resultants elsewhere).

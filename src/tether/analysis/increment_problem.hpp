@@ -1,6 +1,7 @@
 #pragma once
 /// \file The equations of one increment, as Newton sees them.
 
+#include <memory>
 #include <vector>
 
 #include "tether/analysis/newton.hpp"
@@ -17,15 +18,19 @@ struct IncrementTime {
   bool nlgeom = false;
 };
 
+class ContactPair;
+
 class IncrementProblem final : public NewtonProblem {
  public:
   /// `u` holds the current iterate (prescribed values already set) and is
   /// updated in place; `u_start` the converged state; `external` the applied
   /// nodal forces over all dofs; `loads` the load contributions (pressures),
-  /// also assembled by `assembler`, used only to size the force scale.
+  /// also assembled by `assembler`, used only to size the force scale;
+  /// `contact` the contact pairs among the assembler's contributions, whose
+  /// search statistics evaluate() reports in the norms (contact_*).
   IncrementProblem(Assembler& assembler, const DofMap& dofs, Eigen::VectorXd& u, const Eigen::VectorXd& u_start,
                    const Eigen::VectorXd& external, std::vector<const Contribution*> loads, IncrementTime time,
-                   bool symmetric);
+                   bool symmetric, const std::vector<std::unique_ptr<ContactPair>>* contact = nullptr);
 
   bool evaluate(Eigen::VectorXd& residual, bool with_tangent, IterationNorms& norms, double& force_scale) override;
   [[nodiscard]] const SparseMatrix& tangent() const override { return assembler_.tangent(); }
@@ -52,6 +57,7 @@ class IncrementProblem final : public NewtonProblem {
   std::vector<const Contribution*> loads_;
   IncrementTime time_;
   bool symmetric_;
+  const std::vector<std::unique_ptr<ContactPair>>* contact_;
   Eigen::VectorXd full_;
   double search_seconds_ = 0, assembly_seconds_ = 0;  ///< of the last evaluate()
 };

@@ -427,24 +427,12 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     }
 
     IncrementProblem problem(assembler, dofs, u_, u_start, external, load_contributions,
-                             IncrementTime{t_new, total_new, dt, step.nlgeom}, symmetric);
+                             IncrementTime{t_new, total_new, dt, step.nlgeom}, symmetric, &disc.contact_pairs());
     NewtonOutcome outcome;
     int iterations = 0;
     for (int pass = 0; pass < kMaxAcceptancePasses; ++pass) {
       outcome = newton.solve(problem, averaged_force, n_averaged,
-                             [&](int it, const IterationNorms& n) {
-                               if (disc.contact_pairs().empty()) return observer_.on_iteration(it, n);
-                               IterationNorms with_contact = n;
-                               with_contact.contact_closed = 0;
-                               for (const auto& pair : disc.contact_pairs()) {
-                                 const ContactIterationStatistics& c = pair->statistics();
-                                 with_contact.contact_closed += c.closed;
-                                 with_contact.contact_changes += c.status_changes;
-                                 with_contact.contact_repaired += c.repaired;
-                                 with_contact.contact_held += c.held_closed;
-                               }
-                               observer_.on_iteration(it, with_contact);
-                             });
+                             [&](int it, const IterationNorms& n) { observer_.on_iteration(it, n); });
       iterations += outcome.iterations;
       if (outcome.status != NewtonOutcome::Status::Converged) break;
       bool again = false;
