@@ -183,3 +183,46 @@ TEST(FacetedMaster, FrictionalSlidingOverTheSmoothedFoundationCompletesAtEveryOf
   }
   EXPECT_LE(most_cutbacks, 2);
 }
+
+TEST(FacetedMaster, FrictionalSlidingWithMatchingFacesCompletesAtEveryOffset) {
+  // The block's bottom in 40 faces, as long as the foundation's (0.025),
+  // μ = 0.3, no SMOOTH, the push in 8 fixed increments (DIRECT), from eight
+  // offsets. Before residual growths in iterations whose contact active set
+  // changed were left out of the divergence check (docs/theory/newton.md),
+  // x0 = 0.48 and 0.52 stopped; measured since: all complete, 57-74
+  // iterations, at most 13 per increment (acceptance passes included).
+  for (const double x0 : {0.45, 0.48, 0.5, 0.51, 0.52, 0.53, 0.55, 0.6}) {
+    const auto run = run_deck_text(block_on_foundation(x0, "*FRICTION\n0.3\n", "", 0.05, 40));
+    ASSERT_TRUE(run.summary.completed) << x0 << ": " << run.summary.message;
+    const auto [most, attempts] = iterations(run);
+    const auto [fx, fy] = forces(run, run.recorder.results.size() - 1);
+    std::printf("[ faceted ] frictional push, matching faces, x0 = %.2f: %d iterations, at most %d per increment, "
+                "Fx/Fy %.4f\n", x0, run.summary.iterations, most, fx / fy);
+    EXPECT_EQ(attempts, 10) << x0;  // 2 + 8, no cut-back
+    EXPECT_LE(most, 16) << x0;
+    // Sliding at the end: the push carries μ times the load, less the part
+    // of the friction the tilted contact normal takes up (measured 0.2946-0.2994).
+    EXPECT_NEAR(fx / fy, 0.3, 0.015) << x0;
+  }
+}
+
+TEST(FacetedMaster, FrictionalPressingOfAFineSlaveConvergesWithTheStickSlipGuard) {
+  // Step 1 of the frictional deck with the block's bottom in 160 faces (four
+  // slave nodes per master face): nodes near the stick-slip boundaries switched
+  // between stick and slip at every iteration (4-16 switches per iteration,
+  // residual 1e-5 to 4e-4 for 16 iterations, at every increment size: the
+  // step stopped). A node that switches 4 times in an attempt is now held in
+  // stick until Newton converges and released if it then lies outside the
+  // friction cone (docs/theory/contact.md, "Friction guard").
+  std::string deck = block_on_foundation(0.5, "*FRICTION\n0.3\n", "", 0.05, 160);
+  deck = deck.substr(0, deck.find("*STEP, INC=100"));
+  const auto run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const auto [most, attempts] = iterations(run);
+  std::printf("[ faceted ] frictional pressing, 160 slave faces: %d increments, %d iterations, at most %d per "
+              "increment\n", run.summary.increments, run.summary.iterations, most);
+  EXPECT_EQ(attempts, 2);  // 0.5 + 0.5, no cut-back
+  EXPECT_NEAR(forces(run, 1).second, 10.0, 1e-6);
+  for (const ContactNodeValues& v : run.recorder.results.back().contact.at(0).nodes)
+    EXPECT_LE(std::abs(v.tangential_force), 0.3 * v.normal_force * (1 + 1e-9) + 1e-12) << "node " << v.node;
+}

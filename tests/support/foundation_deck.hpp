@@ -9,15 +9,15 @@
 
 namespace tether::testing {
 
-/// A 1 x 0.5 block (8 x 2 CPE4, slave: its bottom, nodes 0.125 apart) with its
+/// A 1 x 0.5 block (`block_faces` x 2 CPE4, slave: its bottom, nodes 1/block_faces apart, 0.125 by default) with its
 /// left edge at `x0`, pressed by p = 10 (step 1, 2 increments) onto an
 /// elastic foundation 2 x 1 (80 x 30 CPE4, master: its top, faces 0.025 long,
 /// base clamped), then its top edge pushed in x by 0.05 in 8 increments
 /// (step 2) by `slide`. `pair_options` go on the *CONTACT PAIR line (", SMOOTH=0.2").
 /// x0 = 0.5: every slave node starts exactly above a master node.
 inline std::string block_on_foundation(double x0, const std::string& interaction, const std::string& pair_options = "",
-                                       double slide = 0.05) {
-  const Block top{x0, x0 + 1, 1, 1.5, 8, 2, false, 1, 1, "TOP"};
+                                       double slide = 0.05, int block_faces = 8) {
+  const Block top{x0, x0 + 1, 1, 1.5, block_faces, 2, false, 1, 1, "TOP"};
   const Block bottom{0, 2, 0, 1, 80, 30, false, 1001, 1001, "BOTTOM"};
   std::ostringstream d;
   d.precision(17);

@@ -167,7 +167,7 @@ void ContactPair::start_attempt(const EvaluationState& state) {
   uzawa_updates_ = 0;
   for (ContactSlave& s : slaves_)
     s.status_changes = 0, s.held_closed = false, s.slip_direction = 0, s.friction_active = false,
-    s.direction_flips = 0, s.held_stick = false,
+    s.direction_flips = 0, s.stick_slip_switches = 0, s.held_stick = false,
     s.left_segment = -1, s.held_segment = false, s.returns = 0;
 }
 
@@ -298,6 +298,11 @@ bool ContactPair::update_connectivity(const EvaluationState& state) {
       if (flipped && hard && ++s.status_changes >= setup_.max_status_changes && !s.held_closed) {
         s.held_closed = true;
       }
+      // Friction guard, second form: a closed node switching between stick
+      // and slip on the same segment, again and again.
+      if (!flipped && !repaired[i] && s.status != ContactStatus::Open &&
+          ++s.stick_slip_switches >= setup_.max_stick_slip_switches)
+        s.held_stick = true;
     }
     s.status = s.held_closed ? (status == ContactStatus::Open ? ContactStatus::Slip : status) : status;
     if (s.status != ContactStatus::Open) ++statistics_.closed;
@@ -341,6 +346,7 @@ Acceptance ContactPair::on_converged(const EvaluationState& state) {
       if (std::abs(v.tangential_force) > mu() * v.normal_force * (1 + 1e-9) + 1e-12 * std::abs(v.normal_force)) {
         s.held_stick = false;
         s.direction_flips = 0;
+        s.stick_slip_switches = 0;
         released = true;
       }
     }

@@ -59,6 +59,9 @@ struct ContactPairSetup {
   /// Reversals of the slip direction of one node within an attempt after
   /// which it is held in stick until Newton converges (friction guard).
   int max_direction_flips = 3;
+  /// Switches of one closed node between stick and slip on the same segment
+  /// within an attempt after which it is held in stick until Newton converges.
+  int max_stick_slip_switches = 4;
 };
 
 /// Per-slave record: pairing, dofs, committed history.
@@ -89,6 +92,7 @@ struct ContactSlave {
   int slip_direction = 0;          ///< friction force direction at the last update_connectivity (slip only)
   bool friction_active = false;    ///< friction row stick or slip (N > 0) at the last update_connectivity
   int direction_flips = 0;         ///< reversals of the slip direction in this attempt
+  int stick_slip_switches = 0;     ///< switches between stick and slip in this attempt
   bool held_stick = false;         ///< friction guard engaged: held in stick until Newton converges
   int left_segment = -1;           ///< segment left by a re-pairing at the previous iteration (-1: none)
   int returns = 0;                 ///< returns across a concave kink to left_segment in this attempt
