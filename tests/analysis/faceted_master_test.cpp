@@ -166,7 +166,7 @@ TEST(FacetedMaster, FrictionalSlidingOverTheSmoothedFoundationCompletesAtEveryOf
   // The block (μ = 0.3, exact stick) pressed onto the smoothed foundation and
   // pushed 0.05 along it, with automatic increments in the push, from eight
   // offsets x0 that put its nodes at different places over the master's.
-  // Measured: all complete in 8-15 increments, 35-68 iterations, at most one
+  // Measured: all complete in 8-14 increments, 35-79 iterations, at most one
   // cut-back. Without SMOOTH five of the eight complete (23-45 increments,
   // 3-6 cut-backs) and x0 = 0.45, 0.48, 0.55 stop (docs/theory/contact.md).
   int most_cutbacks = 0;

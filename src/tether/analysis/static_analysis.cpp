@@ -50,7 +50,8 @@ std::string non_convergence_hint(const Discretization& disc) {
                                     [](const std::vector<int>& f) { return f.size() == 2; });
     if (linear)
       return "; " + p.name + " has friction over a faceted master surface, where Newton can stop as loaded slave "
-             "nodes cross the master's nodes: SMOOTH=0.2 on *CONTACT PAIR (ABAQUS's default) rounds its corners";
+             "nodes cross the master's nodes: SMOOTH=0.2 on *CONTACT PAIR (ABAQUS's default) rounds its corners, "
+             "and the finer of the two surfaces should be the slave";
   }
   return "";
 }
