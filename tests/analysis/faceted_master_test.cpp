@@ -137,6 +137,8 @@ TEST(FacetedMaster, FrictionalSlidingWithoutSmoothStopsAndTheMessageNamesSmooth)
         << faceted.summary.message;
     EXPECT_NE(faceted.summary.message.find("SMOOTH=0.2 on *CONTACT PAIR"), std::string::npos)
         << faceted.summary.message;
+    EXPECT_NE(faceted.summary.message.find("the finer of the two surfaces should be the slave"), std::string::npos)
+        << faceted.summary.message;
   }
   const auto smoothed = run_deck_text(block_on_foundation(0.5, "*FRICTION\n0.3\n", ", SMOOTH=0.2"));
   EXPECT_TRUE(smoothed.summary.completed) << smoothed.summary.message;
