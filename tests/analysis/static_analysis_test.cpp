@@ -218,3 +218,64 @@ TEST(StaticAnalysis, NodesOutsideEveryElementGetNoDofs) {
   EXPECT_EQ(run.last().reaction[run.node(100)].norm(), 0.0);
   EXPECT_GT(run.last().displacement[run.node(3)].x(), 0.0);
 }
+
+// A step without NLGEOM after one with it stays geometrically nonlinear, as in
+// ABAQUS and CalculiX. One CPE4 pulled along x under NLGEOM, then loaded in y
+// in a second step that omits the parameter: the end state must equal the run
+// with NLGEOM written on both steps, (0.1593, 0.0680) at node 2 as CalculiX
+// gives; a small-strain second step gave (0.2128, 0.1040).
+TEST(StaticAnalysis, NlgeomStaysOnInALaterStepThatOmitsIt) {
+  const auto deck = [](const std::string& second_step) {
+    return "*NODE, NSET=ALL\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n*ELEMENT, TYPE=CPE4, ELSET=EALL\n1, 1, 2, 3, 4\n"
+           "*MATERIAL, NAME=M\n*ELASTIC\n1000, 0.3\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n1.\n"
+           "*BOUNDARY\n1, 1, 2\n4, 1, 1\n"
+           "*STEP, NLGEOM\n*STATIC\n0.1, 1.\n*CLOAD\n2, 1, 100.\n3, 1, 100.\n*END STEP\n" +
+           second_step + "\n*STATIC\n0.1, 1.\n*CLOAD\n2, 2, 10.\n3, 2, 10.\n*END STEP\n";
+  };
+  const auto carried = run_deck_text(deck("*STEP"));
+  const auto written = run_deck_text(deck("*STEP, NLGEOM"));
+  ASSERT_TRUE(carried.summary.completed) << carried.summary.message;
+  ASSERT_TRUE(written.summary.completed) << written.summary.message;
+  const Eigen::Vector2d u = carried.last().displacement[carried.node(2)];
+  const Eigen::Vector2d expected = written.last().displacement[written.node(2)];
+  EXPECT_NEAR(u.x(), expected.x(), 1e-12);
+  EXPECT_NEAR(u.y(), expected.y(), 1e-12);
+  EXPECT_NEAR(u.x(), 0.1593, 5e-4);  // CalculiX 2.20 on the same deck
+  EXPECT_NEAR(u.y(), 0.0680, 5e-4);
+}
+
+// A pressure under NLGEOM acts on the current area of the face in every
+// family: the current thickness of plane stress (h0 F33), the constant one of
+// plane strain, the current radius of axisymmetry. One element pulled by a
+// pressure of -10 on one face, free across the pull, is in homogeneous
+// uniaxial stress, so the Cauchy stress along the pull is exactly 10
+// (CalculiX 10.0001 for the CPS4); plane stress read 10.28 with the reference
+// thickness. Plane elements are pulled along x (face S2, rollers on S4),
+// axisymmetric ones along z (face S3, rollers on S1) so that the stress stays
+// homogeneous.
+TEST(StaticAnalysis, FollowerPressureEqualsTheCauchyStressInEveryFamily) {
+  for (const std::string type : {"CPS4", "CPE4", "CAX4", "CPS8", "CAX8", "CPS3"}) {
+    const bool quad8 = type.back() == '8', tri = type.back() == '3', axi = type.rfind("CAX", 0) == 0;
+    std::ostringstream deck;
+    deck << "*NODE, NSET=ALL\n1, 1, 0\n2, 2, 0\n3, 2, 1\n4, 1, 1\n";
+    if (quad8) deck << "5, 1.5, 0\n6, 2, 0.5\n7, 1.5, 1\n8, 1, 0.5\n";
+    deck << "*ELEMENT, TYPE=" << type << ", ELSET=EALL\n";
+    if (tri)
+      deck << "1, 1, 2, 3\n2, 1, 3, 4\n";
+    else
+      deck << "1, 1, 2, 3, 4" << (quad8 ? ", 5, 6, 7, 8" : "") << "\n";
+    deck << "*MATERIAL, NAME=M\n*ELASTIC\n100, 0.3\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n0.1\n";
+    if (axi)
+      deck << "*BOUNDARY\n1, 2, 2\n2, 2, 2\n" << (quad8 ? "5, 2, 2\n" : "");
+    else
+      deck << "*BOUNDARY\n1, 1, 2\n4, 1, 1\n" << (quad8 ? "8, 1, 1\n" : "");
+    deck << "*STEP, NLGEOM\n*STATIC\n0.25, 1.\n*DLOAD\n1, " << (axi ? "P3" : "P2") << ", -10.\n*END STEP\n";
+    const auto run = run_deck_text(deck.str());
+    ASSERT_TRUE(run.summary.completed) << type << ": " << run.summary.message;
+    const int along = axi ? 1 : 0;
+    const double stretch = 1 + run.last().displacement[run.node(3)][along] - run.last().displacement[run.node(1)][along];
+    EXPECT_GT(stretch, 1.05) << type;  // finite strain indeed
+    for (const auto& element : run.last().points)
+      for (const auto& point : element) EXPECT_NEAR(point.stress[along], 10.0, 1e-5) << type;  // Newton tolerance
+  }
+}

@@ -129,3 +129,52 @@ TEST(StepHistory, SetsMayBeDefinedInsideAStepAsCalculixAllows) {
   EXPECT_EQ(m.node_sets.at("TIP"), (std::vector<int>{5}));
   EXPECT_EQ(m.steps.at(0).cloads.size(), 3u);
 }
+
+// NLGEOM, as in ABAQUS and CalculiX, stays on once a step sets it: a later
+// step without the parameter keeps it, and ABAQUS never turns it off again.
+TEST(StepHistory, NlgeomCarriesToLaterStepsAndStaysOn) {
+  const std::string deck = kMesh + R"(*STEP
+*STATIC
+*END STEP
+*STEP, NLGEOM
+*STATIC
+*END STEP
+*STEP
+*STATIC
+*END STEP
+*STEP, NLGEOM=NO
+*STATIC
+*END STEP
+*STEP, NLGEOM=YES
+*STATIC
+*END STEP
+)";
+  std::vector<DeckWarning> warnings;
+  const Model m = read_deck_string(deck, "h.inp", &warnings);
+  ASSERT_EQ(m.steps.size(), 5u);
+  EXPECT_FALSE(m.steps[0].nlgeom);
+  EXPECT_TRUE(m.steps[1].nlgeom);
+  EXPECT_TRUE(m.steps[2].nlgeom);  // omitted: carried
+  EXPECT_TRUE(m.steps[3].nlgeom);  // NLGEOM=NO after NLGEOM: stays on
+  EXPECT_TRUE(m.steps[4].nlgeom);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].where.line, line_of(deck, "*STEP, NLGEOM=NO"));
+  EXPECT_NE(warnings[0].message.find("stays on"), std::string::npos) << warnings[0].message;
+  EXPECT_NE(warnings[0].message.find("CalculiX"), std::string::npos) << warnings[0].message;
+}
+
+TEST(StepHistory, NlgeomNoBeforeAnyNlgeomStepIsLinearWithoutWarning) {
+  const std::string deck = kMesh + R"(*STEP, NLGEOM=NO
+*STATIC
+*END STEP
+*STEP
+*STATIC
+*END STEP
+)";
+  std::vector<DeckWarning> warnings;
+  const Model m = read_deck_string(deck, "h.inp", &warnings);
+  ASSERT_EQ(m.steps.size(), 2u);
+  EXPECT_FALSE(m.steps[0].nlgeom);
+  EXPECT_FALSE(m.steps[1].nlgeom);
+  EXPECT_TRUE(warnings.empty());
+}

@@ -8,6 +8,7 @@
 
 #include "tether/assembly/contribution.hpp"
 #include "tether/dofs/dof_map.hpp"
+#include "tether/materials/constitutive_model.hpp"
 #include "tether/model/element_type.hpp"
 
 namespace tether {
@@ -18,24 +19,33 @@ namespace tether {
 /// deformed face (follower load) and the tangent holds the load stiffness
 /// -d f_ext/du (unsymmetric in general); otherwise the load acts on the
 /// reference face and the tangent is zero. Plane elements multiply by the
-/// thickness; axisymmetric ones by 2 pi r (totals over 2 pi, as in ABAQUS),
-/// with the current radius under NLGEOM. Faces are integrated exactly (2
-/// Gauss points on 2-node faces, 3 on 3-node faces).
+/// thickness; axisymmetric ones by 2 pi r (totals over 2 pi, as in ABAQUS).
+/// Under NLGEOM both are current: the radius of the deformed face, and for
+/// plane stress the thickness h0 F33, F33 the element's thickness stretch at
+/// the face point (from its material with S_33 = 0), so that the load acts on
+/// the current area as on a 3D face; a plane-stress load then depends on all
+/// the element's nodes. Plane strain keeps its thickness. Faces are integrated
+/// exactly in the reference length (2 Gauss points on 2-node faces, 3 on
+/// 3-node faces).
 class FacePressure final : public Contribution {
  public:
   /// element_label/type: of the loaded element (for messages and the family);
   /// element_node_indices/element_ref_coords: all of its nodes, ABAQUS order;
   /// face: 0-based (S1 = 0); thickness [length] for plane elements (ignored
-  /// for axisymmetric ones). Throws ModelError when the face does not exist,
-  /// the node count does not match, or the face has zero length.
+  /// for axisymmetric ones); material: the element's (used for the thickness
+  /// of plane-stress faces under NLGEOM; must outlive the load). Throws
+  /// ModelError when the face does not exist, the node count does not match,
+  /// or the face has zero length.
   FacePressure(int element_label, const ElementType& type, std::vector<int> element_node_indices,
                std::vector<Eigen::Vector2d> element_ref_coords, int face, double thickness,
-               const DofMap& dofs);
+               const ConstitutiveModel& material, const DofMap& dofs);
 
   /// Sets the current pressure magnitude p [force/area].
   void set_pressure(double p) { pressure_ = p; }
   [[nodiscard]] double pressure() const { return pressure_; }
 
+  /// The face nodes' dofs (x, y per node, in face order); for plane stress
+  /// then those of the element's other nodes.
   [[nodiscard]] std::span<const int> dofs() const override { return dofs_; }
   void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override;
   /// "pressure on element 12 (CPE4) face S2".
@@ -45,6 +55,14 @@ class FacePressure final : public Contribution {
   [[nodiscard]] const std::vector<int>& nodes() const { return nodes_; }
 
  private:
+  /// Plane stress: appends the element's other nodes to dofs() and stores
+  /// the element's shape gradients at the face Gauss points.
+  void prepare_thickness_stretch(const std::vector<int>& element_nodes,
+                                 const std::vector<Eigen::Vector2d>& element_coords, const DofMap& dofs);
+  /// Plane stress under NLGEOM: the thickness stretch F33 at face Gauss point
+  /// `point` and its derivative over dofs() (into dF33_du, resized).
+  [[nodiscard]] double thickness_stretch(const EvaluationState& s, std::size_t point, Eigen::VectorXd& dF33_du) const;
+
   int element_label_;
   ElementType type_;
   int face_;
@@ -52,6 +70,10 @@ class FacePressure final : public Contribution {
   std::vector<int> nodes_;
   std::vector<int> dofs_;
   std::vector<Eigen::Vector2d> ref_coords_;  ///< of the face nodes
+  const ConstitutiveModel* material_;
+  /// Plane stress: element shape gradients dN_a/dX at each face Gauss point
+  /// (rows in the order of dofs(), node by node).
+  std::vector<Eigen::MatrixX2d> element_gradients_;
   double pressure_ = 0;
 };
 

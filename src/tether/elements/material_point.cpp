@@ -39,6 +39,27 @@ void finite_strain_point(const ConstitutiveModel& material, Family family, const
   mp.strain << 0.5 * (mp.C(0, 0) - 1), 0.5 * (mp.C(1, 1) - 1), 0.5 * (mp.C(2, 2) - 1), mp.C(0, 1), 0, 0;
 }
 
+double plane_stress_thickness_stretch(const ConstitutiveModel& material, const Eigen::Matrix2d& H,
+                                      Eigen::Matrix2d& dF33_dH) {
+  MaterialPoint mp;
+  finite_strain_point(material, Family::PlaneStress, H, 0, mp);
+  // S_33(E) = 0 holds for every in-plane E: dE33 = -(D_3k / D_33) dE_k over
+  // k = 11, 22, 12 (engineering shear), with the uncondensed tangent.
+  Vec6 S;
+  Mat6 D;
+  material.finite_strain(mp.C, S, D);
+  const double dE33_dE11 = -D(2, 0) / D(2, 2), dE33_dE22 = -D(2, 1) / D(2, 2), dE33_dG12 = -D(2, 3) / D(2, 2);
+  // E11 = (F_i1 F_i1 - 1)/2, E22 = (F_i2 F_i2 - 1)/2, G12 = F_i1 F_i2, F = I + H;
+  // E33 = (F33^2 - 1)/2, so dF33 = dE33 / F33.
+  const Eigen::Matrix2d& F = mp.F;
+  for (int i = 0; i < 2; ++i) {
+    dF33_dH(i, 0) = dE33_dE11 * F(i, 0) + dE33_dG12 * F(i, 1);
+    dF33_dH(i, 1) = dE33_dE22 * F(i, 1) + dE33_dG12 * F(i, 0);
+  }
+  dF33_dH /= mp.F33;
+  return mp.F33;
+}
+
 double strain_energy_density(const ConstitutiveModel& material, bool nlgeom, const MaterialPoint& mp) {
   return nlgeom ? material.finite_strain_energy(mp.C) : material.small_strain_energy(mp.strain);
 }

@@ -35,6 +35,15 @@ void small_strain_point(const ConstitutiveModel& material, Family family, const 
 void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
                          double hoop_strain, MaterialPoint& mp);
 
+/// Plane stress under finite strain: the thickness stretch F33 = h/h0 at the
+/// in-plane displacement gradient H = dU/dX (S_33 = 0 solved as in
+/// finite_strain_point), and its derivative dF33/dH (2x2, entry (i,j) =
+/// dF33/dH_ij), from the implicit function S_33(C) = 0. Used by loads that act
+/// on the current area of a plane-stress face. Throws ModelError as
+/// finite_strain_point does.
+double plane_stress_thickness_stretch(const ConstitutiveModel& material, const Eigen::Matrix2d& H,
+                                      Eigen::Matrix2d& dF33_dH);
+
 /// Strain energy density [energy / reference volume] of an evaluated point.
 double strain_energy_density(const ConstitutiveModel& material, bool nlgeom, const MaterialPoint& mp);
 

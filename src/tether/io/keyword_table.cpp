@@ -136,7 +136,7 @@ std::vector<KeywordSpec> build_table() {
        "`surface, P, magnitude`", {amplitude_param(), op_param()}, handle_dsload, ""},
       // --- steps ---
       {"STEP", kModelData | kBetweenSteps, "Starts a step; ends with *END STEP.", "",
-       {choice("NLGEOM", "NO", {"YES", "NO"}, "Geometric nonlinearity (bare NLGEOM means YES).", "YES"),
+       {choice("NLGEOM", "NO", {"YES", "NO"}, "Geometric nonlinearity (bare NLGEOM means YES). Omitted: as in the previous step (NO in the first); once on, it stays on in every later step, as in ABAQUS (NLGEOM=NO after it is ignored with a warning).", "YES"),
         integer("INC", "100", "Maximum number of increments."), name("NAME", "Name of the step.")},
        handle_step, ""},
       {"STATIC", kAnyStep, "Static procedure with automatic (or fixed, DIRECT) incrementation.",

@@ -81,12 +81,26 @@ void read_time_controls(DeckState& state, const KeywordBlock& block, Controls& c
   warn_unused(state, f2, {0, 6}, {"Df", "DC", "DB", "DA", "DS", "DH", "DD", "WG"}, at);
 }
 
+/// NLGEOM of a new step. As in ABAQUS and CalculiX, a step without the
+/// parameter keeps the previous step's setting: once geometric nonlinearity is
+/// on it stays on. ABAQUS does not turn it off again, so NLGEOM=NO after a step
+/// with NLGEOM keeps it on with a warning (CalculiX would turn it off there).
+bool step_nlgeom(const DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  const bool before = !state.model.steps.empty() && state.model.steps.back().nlgeom;
+  if (!params.given("NLGEOM")) return before;
+  const bool asked = params.name("NLGEOM") == "YES";
+  if (before && !asked)
+    state.warn(block.where, "NLGEOM=NO after a step with NLGEOM: geometric nonlinearity stays on, as in ABAQUS, "
+                            "which never turns it off again (CalculiX would turn it off here)");
+  return before || asked;
+}
+
 }  // namespace
 
 void handle_step(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   Step s;
   s.name = params.given("NAME") ? params.text("NAME") : "Step-" + std::to_string(state.model.steps.size() + 1);
-  s.nlgeom = params.name("NLGEOM") == "YES";
+  s.nlgeom = step_nlgeom(state, block, params);
   s.max_increments = params.integer("INC");
   if (s.max_increments <= 0)
     throw InputError(block.where, "INC=" + params.text("INC") + ": expected a positive number of increments");
