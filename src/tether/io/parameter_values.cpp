@@ -31,7 +31,10 @@ const ParameterSpec* find_parameter(const KeywordSpec& spec, std::string_view na
 
 ParameterValues::ParameterValues(const KeywordSpec& spec, const KeywordBlock& block)
     : spec_(&spec), where_(block.where) {
-  const std::string kw = "*" + std::string(spec.name);
+  // Appended, not "*" + std::string(...): GCC 12 -O2 reports a false -Wrestrict
+  // on operator+(const char*, std::string&&) (it inlines to an insert at 0).
+  std::string kw = "*";
+  kw += spec.name;
   for (const Parameter& given : block.parameters) {
     const ParameterSpec* p = find_parameter(spec, given.name);
     if (!p)
