@@ -93,8 +93,12 @@ void handle_equation(DeckState& state, const KeywordBlock& block, const Paramete
       c.kind = ConstraintData::Kind::Equation;
       c.where = count_line.where();
       c.enforcement = enforcement;
-      c.name = params.given("NAME") ? params.name("NAME") + (members > 1 ? "-" + std::to_string(m + 1) : "")
-                                    : default_name(state, "EQUATION");
+      if (params.given("NAME")) {
+        c.name = params.name("NAME");
+        if (members > 1) c.name.append("-").append(std::to_string(m + 1));  // not "-" + ...: GCC 12 -Wrestrict
+      } else {
+        c.name = default_name(state, "EQUATION");
+      }
       for (const auto& t : raw) c.terms.push_back({t.nodes.size() == 1 ? t.nodes[0] : t.nodes[m], t.dof, t.coefficient});
       state.model.constraints.push_back(std::move(c));
     }
@@ -136,7 +140,8 @@ void read_user_mpc(DeckState& state, const KeywordBlock& block, const ParameterV
     }
     if (c.nodes.empty()) throw InputError(c.where, "*MPC, USER line needs 'JTYPE, node1, node2, ...'");
     c.name = params.given("NAME") ? params.name("NAME") : default_name(state, "MPC") + " USER " + std::to_string(c.flag);
-    if (params.given("NAME") && block.data.size() > 1) c.name += "-" + std::to_string(state.model.constraints.size() + 1);
+    if (params.given("NAME") && block.data.size() > 1)
+      c.name.append("-").append(std::to_string(state.model.constraints.size() + 1));
     state.model.constraints.push_back(std::move(c));
   }
 }
