@@ -29,15 +29,12 @@ namespace {
 
 enum ExitCode { kOk = 0, kInput = 1, kNotCompleted = 2, kInternal = 3 };
 
-Model read_with_warnings(const std::string& deck) {
-  std::vector<DeckWarning> warnings;
-  Model model = read_deck(deck, &warnings);
-  for (const auto& w : warnings) fmt::print(stderr, "{}: warning: {}\n", w.where.str(), w.message);
-  return model;
-}
+std::string warning_text(const DeckWarning& w) { return fmt::format("{}: warning: {}", w.where.str(), w.message); }
 
 int check(const std::string& deck) {
-  const Model model = read_with_warnings(deck);
+  std::vector<DeckWarning> warnings;
+  const Model model = read_deck(deck, &warnings);
+  for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
   Discretization discretization(model);  // materials and elements can be built
   fmt::print("{}: OK: {} nodes, {} elements, {} step(s), {} dofs\n", deck, model.n_nodes(), model.n_elements(),
              model.steps.size(), discretization.dofs().n_dofs());
@@ -69,11 +66,37 @@ std::string restart_source(const Model& model, const std::string& deck, const st
   return (file.is_absolute() ? file : fs::path(deck).parent_path() / file).string();
 }
 
+/// Where a run writes. A run from the beginning: -o, else DECKDIR/JOB. A
+/// restart never writes over another run's results: -o must not hold results
+/// of JOB already (InputError otherwise), and without -o it gets the first
+/// free DECKDIR/JOB-restart, JOB-restart-2, ...
+fs::path output_directory(const std::string& deck, const std::string& output_dir, const std::string& restart_file) {
+  const fs::path deck_dir = fs::path(deck).parent_path();
+  const std::string job = fs::path(deck).stem().string();
+  if (restart_file.empty()) return output_dir.empty() ? deck_dir / job : fs::path(output_dir);
+  if (output_dir.empty()) {
+    for (int k = 1;; ++k) {
+      const fs::path candidate = deck_dir / (job + "-restart" + (k > 1 ? "-" + std::to_string(k) : std::string()));
+      if (!fs::exists(candidate)) return candidate;
+    }
+  }
+  const fs::path dir(output_dir);
+  for (const char* extension : {".sta", ".dat", ".rst", ".pvd"})
+    if (fs::exists(dir / (job + extension)))
+      throw InputError(SourceLocation{restart_file, 0},
+                       "-o " + output_dir + " holds the results of a run of " + job + " (" + job + extension +
+                           "), which this restart would overwrite; give a new directory with -o, or leave -o out "
+                           "to write to " + (deck_dir / (job + "-restart")).string() + " (or the next free -restart-N)");
+  return dir;
+}
+
 int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
         bool quiet, const std::string& restart, double memory_mb) {
   const auto t0 = std::chrono::steady_clock::now();
-  const Model model = read_with_warnings(deck);
-  const fs::path dir = output_dir.empty() ? fs::path(deck).parent_path() / fs::path(deck).stem() : fs::path(output_dir);
+  std::vector<DeckWarning> warnings;
+  const Model model = read_deck(deck, &warnings);
+  if (!quiet)
+    for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
   const std::string job = fs::path(deck).stem().string();
 
   AnalysisOptions options;
@@ -88,6 +111,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   Relay relay;
   std::unique_ptr<StaticAnalysis> analysis;
   const std::string restart_file = restart_source(model, deck, restart);
+  const fs::path dir = output_directory(deck, output_dir, restart_file);
   RestartState state;
   if (!restart_file.empty()) {
     // Read and check the state before any output file is touched: a refused
@@ -95,6 +119,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
     state = read_restart_file(restart_file);
     analysis = std::make_unique<StaticAnalysis>(model, relay, options);
     analysis->resume(state, restart_file);
+    if (!quiet) fmt::print("{}: restarting from {}; the results go to {}\n", job, restart_file, dir.string());
   }
 
   ResultWriterOptions writer_options;
@@ -110,6 +135,8 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   }
   ProgressObserver observer(writer, progress);
   relay.to = &observer;
+  for (const auto& w : warnings) observer.log(warning_text(w));
+  if (!restart_file.empty()) observer.log("restart from " + restart_file + " into " + dir.string());
 
   AnalysisSummary summary;
   try {
@@ -132,14 +159,18 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
                       ? fmt::format(", {} of the bulk, the rest of the contact equations only", t.sparse_factorizations)
                       : std::string(),
                   t.solve, t.output);
-  observer.on_message(timing);
+  observer.log(summary.message);
+  observer.log(timing);
   writer.finish(summary.completed, summary.message);
   if (!quiet) {
     fmt::print("{}: {} ({} increments, {} iterations, {} cut-backs, {:.2f} s)\n", job, summary.message,
                summary.increments, summary.iterations, summary.cutbacks, seconds);
     fmt::print("{}\n", timing);
-    fmt::print("results: {}  {}  {}\n", writer.pvd_path().string(), writer.dat_path().string(),
-               writer.sta_path().string());
+    std::string written;  // only the files this run wrote
+    for (const fs::path& f : {writer.pvd_path(), writer.dat_path(), writer.sta_path(), observer.msg_path(),
+                              writer.restart_path()})
+      if (fs::exists(f)) written += (written.empty() ? "" : "  ") + f.string();
+    fmt::print("results: {}\n", written);
   }
   if (!summary.completed) {
     fmt::print(stderr, "{}: error: {}\n", deck, summary.message);
@@ -165,7 +196,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "umfpack", "cholmod", "mumps", "sparselu"}, CLI::ignore_case));
   run_cmd->add_option("--restart", restart,
                       "Continue from this restart file (JOB.rst written by *RESTART, WRITE) instead of the "
-                      "beginning; the results go to a fresh output directory (use -o)");
+                      "beginning; the results go to a new directory, DECKDIR/JOB-restart (or -restart-2, ...) "
+                      "unless -o names one that holds no results of JOB");
   run_cmd->add_flag("--no-condense", no_condense,
                     "With contact: factorize the whole matrix at every iteration instead of condensing it onto "
                     "the contact equations (for comparison; same answer)");

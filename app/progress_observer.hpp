@@ -20,7 +20,8 @@ class ProgressObserver final : public AnalysisObserver {
   ProgressObserver(ResultWriter& writer, bool progress)
       : writer_(writer),
         progress_(progress),
-        msg_(fmt::output_file(std::filesystem::path(writer.sta_path()).replace_extension(".msg").string())) {
+        msg_path_(std::filesystem::path(writer.sta_path()).replace_extension(".msg")),
+        msg_(fmt::output_file(msg_path_.string())) {
     msg_.print("tether {} message log\n", TETHER_VERSION);
   }
 
@@ -49,14 +50,16 @@ class ProgressObserver final : public AnalysisObserver {
     s.increment_size = r.increment_size;
     s.residual_norm = r.residual;
     writer_.write_status(s);
+    // A failed attempt's reason follows once, in the message that cuts back
+    // or in the verdict that stops the step.
     msg_.print("  step {} increment {} attempt {}: time {:.6g}, increment {:.6g}, {} iterations, {}\n", r.step,
                r.increment, r.attempt, r.total_time, r.increment_size, r.iterations,
-               r.converged ? std::string("converged") : "cut back: " + r.note);
+               r.converged ? "converged" : "not converged");
     msg_.flush();
     if (progress_)
       fmt::print("step {} inc {:4d} att {} time {:.6g} dt {:.3g} iter {:2d} residual {:.3e} {}\n", r.step,
                  r.increment, r.attempt, r.total_time, r.increment_size, r.iterations, r.residual,
-                 r.converged ? "" : "cut back: " + r.note);
+                 r.converged ? "" : "not converged");
   }
 
   void on_results(const IncrementResults& results, const Step& step, bool last_in_step) override {
@@ -74,9 +77,19 @@ class ProgressObserver final : public AnalysisObserver {
     if (progress_) fmt::print("  {}\n", message);
   }
 
+  /// Writes `message` to the `.msg` only (what the caller prints itself, or
+  /// keeps off the terminal).
+  void log(const std::string& message) {
+    msg_.print("  {}\n", message);
+    msg_.flush();
+  }
+
+  [[nodiscard]] const std::filesystem::path& msg_path() const { return msg_path_; }
+
  private:
   ResultWriter& writer_;
   bool progress_;
+  std::filesystem::path msg_path_;
   fmt::ostream msg_;
   int iterations_this_increment_ = 0;
 };

@@ -402,3 +402,116 @@ TEST(Cli, ASymmetricOnlySolverIsRefusedForAnUnsymmetricStep) {
   EXPECT_EQ(tether("run " + (dir / "friction.inp").string() + " --solver umfpack -q -o " + (dir / "lu").string()).code,
             0);
 }
+
+// A restart never writes over the run it continues: `--restart JOB/JOB.rst`
+// without -o used to truncate JOB/JOB.dat and rewrite its .sta.
+TEST(Cli, RestartWritesToANewDirectoryAndNeverOverTheFirstRun) {
+  const fs::path dir = scratch("restart_directory");
+  write(dir / "job.inp", slurp(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/restart_friction.inp"));
+  const auto path = [&](const std::string& name) { return (dir / name).string(); };
+  ASSERT_EQ(tether("run " + path("job.inp")).code, 0);
+  const std::string dat = slurp(dir / "job" / "job.dat"), sta = slurp(dir / "job" / "job.sta");
+  ASSERT_FALSE(dat.empty());
+
+  const auto first = tether("run " + path("job.inp") + " --restart " + path("job/job.rst"));
+  EXPECT_EQ(first.code, 0) << first.out;
+  EXPECT_NE(first.out.find("the results go to " + path("job-restart")), std::string::npos) << first.out;
+  EXPECT_TRUE(fs::exists(dir / "job-restart" / "job.sta"));
+  const auto second = tether("run -q " + path("job.inp") + " --restart " + path("job/job.rst"));
+  EXPECT_EQ(second.code, 0) << second.out;
+  EXPECT_TRUE(fs::exists(dir / "job-restart-2" / "job.sta"));
+  // Into the first run's directory, or any holding results of the job: refused.
+  for (const std::string& target : {std::string("job"), std::string("job-restart")}) {
+    const auto refused = tether("run " + path("job.inp") + " --restart " + path("job/job.rst") + " -o " + path(target));
+    EXPECT_EQ(refused.code, 1) << refused.out;
+    EXPECT_NE(refused.out.find("holds the results of a run of job"), std::string::npos) << refused.out;
+  }
+  EXPECT_EQ(slurp(dir / "job" / "job.dat"), dat);
+  EXPECT_EQ(slurp(dir / "job" / "job.sta"), sta);
+  EXPECT_TRUE(fs::exists(dir / "job" / "job.rst"));
+}
+
+// A run replaces everything an earlier run of the same job left in its
+// directory: no .vtu of more increments, no .pvd of a run that converged
+// when this one did not; other jobs' files stay.
+TEST(Cli, ARunLeavesNoResultFilesOfAnEarlierRunOfTheJob) {
+  const fs::path dir = scratch("rerun");
+  const auto path = [&](const std::string& name) { return (dir / name).string(); };
+  std::string deck = kGoodDeck;
+  write(dir / "plate.inp", deck);
+  ASSERT_EQ(tether("run " + path("plate.inp") + " -o " + path("out")).code, 0);
+  ASSERT_TRUE(fs::exists(dir / "out" / "plate_1_2.vtu"));
+  write(dir / "out" / "other_1_1.vtu", "another job's file");
+  write(dir / "out" / "plate_notes.vtu", "not an increment file");
+  deck.replace(deck.find("0.5, 1."), 7, "1., 1.");  // one increment
+  write(dir / "plate.inp", deck);
+  const auto one = tether("run " + path("plate.inp") + " -o " + path("out"));
+  ASSERT_EQ(one.code, 0) << one.out;
+  EXPECT_TRUE(fs::exists(dir / "out" / "plate_1_1.vtu"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "plate_1_2.vtu"));
+  EXPECT_EQ(slurp(dir / "out" / "plate.pvd").find("plate_1_2.vtu"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "out" / "other_1_1.vtu"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "plate_notes.vtu"));
+  // A run with no converged increment leaves no .pvd or .vtu at all.
+  deck.replace(deck.find("LEFT, 1\n1, 2"), 12, "LEFT, 1");  // free in y: singular
+  write(dir / "plate.inp", deck);
+  const auto bad = tether("run " + path("plate.inp") + " -o " + path("out"));
+  EXPECT_EQ(bad.code, 2) << bad.out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "plate.pvd"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "plate_1_1.vtu"));
+}
+
+// What the program prints, it prints once: the timing line, each cut-back
+// reason (the attempt line says "not converged", the cut-back message why);
+// deck warnings go to the .msg too and -q keeps them off the terminal; the
+// results line names only files that exist.
+TEST(Cli, TerminalAndMessageLogSayEachThingOnce) {
+  const fs::path dir = scratch("once");
+  const auto path = [&](const std::string& name) { return (dir / name).string(); };
+  std::string deck = kGoodDeck;
+  const std::string step = "*STEP\n*STATIC\n0.5, 1.\n*CLOAD\n2, 1, 1.\n3, 1, 1.";
+  deck.replace(deck.find(step), step.size(),
+               "*STEP, NLGEOM\n*CONTROLS, PARAMETERS=TIME INCREMENTATION\n,,,2\n*STATIC, SOLVER=SPOOLES\n1., 1.\n"
+               "*CLOAD\n2, 1, 300.\n3, 1, 300.");
+  write(dir / "cut.inp", deck);
+  const auto r = tether("run " + path("cut.inp") + " -o " + path("out"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto count = [](const std::string& text, const std::string& what) {
+    int n = 0;
+    for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count(r.out, "s: contact search"), 1) << r.out;  // the timing line
+  EXPECT_EQ(count(r.out, "warning: SOLVER=SPOOLES ignored"), 1) << r.out;
+  const std::string msg = slurp(dir / "out" / "cut.msg");
+  EXPECT_EQ(count(msg, "warning: SOLVER=SPOOLES ignored"), 1) << msg;
+  EXPECT_EQ(count(msg, "s: contact search"), 1) << msg;
+  const int cutbacks = count(msg, "cut back to increment");
+  EXPECT_GE(cutbacks, 1) << msg;
+  EXPECT_EQ(count(msg, "no convergence in 2 iterations"), cutbacks) << msg;
+  EXPECT_EQ(count(msg, "not converged"), cutbacks) << msg;
+  // The results line: these files, and no .rst (no *RESTART).
+  const auto results = r.out.substr(r.out.find("results: "));
+  for (const char* f : {"cut.pvd", "cut.dat", "cut.sta", "cut.msg"})
+    EXPECT_NE(results.find(f), std::string::npos) << results;
+  EXPECT_EQ(results.find(".rst"), std::string::npos) << results;
+
+  const auto quiet = tether("run -q " + path("cut.inp") + " -o " + path("quiet"));
+  EXPECT_EQ(quiet.code, 0);
+  EXPECT_TRUE(quiet.out.empty()) << quiet.out;
+  EXPECT_EQ(count(slurp(dir / "quiet" / "cut.msg"), "warning: SOLVER=SPOOLES ignored"), 1);
+
+  // On a terminal (script(1) from util-linux gives the program a pty): the
+  // progress lines and messages, still each reason and the timing once.
+  Result tty;
+  const std::string command = "script -qec \"" + std::string(TETHER_CLI) + " run " + path("cut.inp") + " -o " +
+                              path("tty") + "\" /dev/null 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_TRUE(pipe);
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) tty.out += buffer.data();
+  pclose(pipe);
+  ASSERT_NE(tty.out.find("step 1 inc"), std::string::npos) << "no progress lines: " << tty.out;
+  EXPECT_EQ(count(tty.out, "s: contact search"), 1) << tty.out;
+  EXPECT_EQ(count(tty.out, "no convergence in 2 iterations"), cutbacks) << tty.out;
+}

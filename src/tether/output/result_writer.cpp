@@ -11,8 +11,32 @@ namespace tether {
 
 namespace {
 
-std::filesystem::path prepared(const std::filesystem::path& directory) {
+/// True for "JOB_<step>_<increment>.vtu".
+bool is_increment_vtu(const std::string& name, const std::string& job) {
+  if (name.size() <= job.size() + 5 || name.compare(0, job.size() + 1, job + "_") != 0 || !name.ends_with(".vtu"))
+    return false;
+  const std::string middle = name.substr(job.size() + 1, name.size() - job.size() - 5);
+  const auto sep = middle.find('_');
+  const auto digits = [](std::string_view t) {
+    return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  return sep != std::string::npos && digits(std::string_view(middle).substr(0, sep)) &&
+         digits(std::string_view(middle).substr(sep + 1));
+}
+
+/// Removes what an earlier run of `job` left in `directory` and this run would
+/// not replace: its .vtu files, .pvd and restart file.
+void remove_earlier_results(const std::filesystem::path& directory, const std::string& job) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(directory.empty() ? fs::path(".") : directory, ec))
+    if (entry.is_regular_file() && is_increment_vtu(entry.path().filename().string(), job)) fs::remove(entry.path());
+  for (const char* extension : {".pvd", ".rst"}) fs::remove(directory / (job + extension));
+}
+
+std::filesystem::path prepared(const std::filesystem::path& directory, const std::string& job) {
   if (!directory.empty()) std::filesystem::create_directories(directory);
+  remove_earlier_results(directory, job);
   return directory;
 }
 
@@ -31,7 +55,7 @@ bool vtu_due(const std::vector<OutputRequest>& requests, int increment, bool las
 
 ResultWriter::ResultWriter(const Model& model, const std::filesystem::path& directory, const std::string& job,
                            ResultWriterOptions options)
-    : directory_(prepared(directory)),
+    : directory_(prepared(directory, job)),
       job_(job),
       options_(options),
       vtu_(model, options.encoding),

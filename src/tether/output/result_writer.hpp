@@ -40,7 +40,11 @@ struct ResultWriterOptions {
 /// has contact pairs); the variables listed under these keywords do not
 /// select fields.
 ///
-/// The constructor creates DIR when needed and truncates JOB.dat and JOB.sta.
+/// The constructor creates DIR when needed, truncates JOB.dat and JOB.sta and
+/// removes what an earlier run of JOB left there (JOB_<s>_<i>.vtu, JOB.pvd,
+/// JOB.rst), so that the directory holds this run's results only; files of
+/// other jobs are left alone. A restart therefore needs a directory of its own
+/// (`tether run --restart` picks one).
 /// The Model must outlive the writer and not change. Errors: std::runtime_error
 /// (I/O), InputError (bad print request), std::invalid_argument (results
 /// sized wrongly for the mesh).
