@@ -427,3 +427,61 @@ TEST(ContactAnalysis, SmallSlidingKeepsTheFirstPairingFiniteSlidingFollows) {
 }
 
 }  // namespace
+
+// A node-based slave surface has no faces to give its nodes an area: each
+// node's area is the second field of its *SURFACE, TYPE=NODE line (default 1,
+// as in ABAQUS), and the pressure output is the normal force over it. The
+// area used to be read and ignored. Two blocks, the upper pressed down by
+// 1 + 1: each of its two bottom nodes carries N = 1.
+TEST(ContactAnalysis, NodeBasedSlavePressureIsTheForceOverTheNodeArea) {
+  const auto deck = [](const std::string& slave_lines) {
+    return R"(*NODE
+1, 0, 0
+2, 1, 0
+3, 1, 1
+4, 0, 1
+5, 0, 1
+6, 1, 1
+7, 1, 2
+8, 0, 2
+*ELEMENT, TYPE=CPE4, ELSET=E
+1, 1, 2, 3, 4
+2, 5, 6, 7, 8
+*SURFACE, NAME=S, TYPE=NODE
+)" + slave_lines + R"(
+*SURFACE, NAME=M
+1, S3
+*SURFACE INTERACTION, NAME=I
+*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE
+S, M
+*MATERIAL, NAME=M
+*ELASTIC
+1000, 0.3
+*SOLID SECTION, ELSET=E, MATERIAL=M
+*BOUNDARY
+1, 1, 2
+2, 2
+5, 1
+*STEP
+*STATIC
+*CLOAD
+7, 2, -1.
+8, 2, -1.
+*END STEP
+)";
+  };
+  const auto unit = run_deck_text(deck("5\n6"));
+  const auto given = run_deck_text(deck("5, 0.25\n6, 0.5"));
+  ASSERT_TRUE(unit.summary.completed) << unit.summary.message;
+  ASSERT_TRUE(given.summary.completed) << given.summary.message;
+  for (const auto* run : {&unit, &given}) {
+    const ContactPairValues& pair = run->last().contact.at(0);
+    EXPECT_TRUE(pair.node_based);
+    ASSERT_EQ(pair.nodes.size(), 2u);
+    for (const ContactNodeValues& v : pair.nodes) {
+      EXPECT_NEAR(v.normal_force, 1.0, 1e-9);
+      const double area = run == &unit ? 1.0 : (v.node == run->node(5) ? 0.25 : 0.5);
+      EXPECT_NEAR(v.pressure, v.normal_force / area, 1e-12);
+    }
+  }
+}

@@ -195,3 +195,20 @@ TEST(ContactKeywords, AStiffSlaveBodyIsWarnedAboutWithTheSwap) {
   EXPECT_EQ(warnings_of(deck("1e4", "UPBOTTOM, LOWTOP")).size(), 1u);  // 10 times
   EXPECT_TRUE(warnings_of(deck("1e5", "UPNODES, LOWTOP")).empty());  // node surface: no body to compare
 }
+
+TEST(ContactKeywords, NodeSurfaceReadsOneAreaPerNodeAndRefusesBadOnes) {
+  const std::string head = "*NODE\n1, 0, 0\n2, 1, 0\n3, 2, 0\n*NSET, NSET=TWO\n2, 3\n";
+  const Model m = read_deck_string(head + "*SURFACE, NAME=S, TYPE=NODE\n1\nTWO, 2.5\n", "n.inp");
+  const Surface& s = m.surfaces.at("S");
+  ASSERT_EQ(s.nodes.size(), 3u);
+  ASSERT_EQ(s.node_areas.size(), 3u);
+  EXPECT_EQ(s.node_areas[0], 1.0);  // default, as in ABAQUS
+  EXPECT_EQ(s.node_areas[1], 2.5);
+  EXPECT_EQ(s.node_areas[2], 2.5);
+  const std::string zero = head + "*SURFACE, NAME=S, TYPE=NODE\n1, 0.\n";
+  expect_deck_error_at(zero, "1, 0.", {"node area 0.", "expected an area > 0"});
+  const std::string twice = head + "*SURFACE, NAME=S, TYPE=NODE\nTWO, 2.\n3, 3.\n";
+  expect_deck_error_at(twice, "3, 3.", {"node 3 is given the area 3.", "another at bad.inp:8"});
+  const std::string same = head + "*SURFACE, NAME=S, TYPE=NODE\nTWO, 2.\n3, 2.\n";
+  EXPECT_EQ(read_deck_string(same, "n.inp").surfaces.at("S").nodes.size(), 2u);
+}

@@ -69,8 +69,9 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
 
   // Slave nodes and tributary areas ∫ N_a ds × thickness (2πr for CAX) in the reference configuration.
   std::map<int, double> area;
+  setup.node_based_slave = slave.kind == Surface::Kind::Nodes;
   if (slave.kind == Surface::Kind::Nodes) {
-    for (int n : slave.nodes) area[n] = 1.0;
+    for (std::size_t i = 0; i < slave.nodes.size(); ++i) area[slave.nodes[i]] = slave.node_areas.at(i);
     for (const Element& e : model.elements) stiffness = std::max(stiffness, modulus(model, e) * measure(model, e, {1, 0}));
   } else {
     for (const ElementFace& f : slave.faces) {

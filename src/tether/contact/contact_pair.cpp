@@ -432,6 +432,7 @@ void ContactPair::load_state(std::span<const double>& in) {
 ContactPairValues ContactPair::values(const EvaluationState& state) const {
   ContactPairValues out;
   out.name = setup_.name;
+  out.node_based = setup_.node_based_slave;
   out.nodes.reserve(nodes_.size());
   for (const auto& n : nodes_) {
     ContactNodeValues v = n->values(state);

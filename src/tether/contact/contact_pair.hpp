@@ -39,6 +39,9 @@ struct ContactPairSetup {
   /// Tributary area of each slave node [length × thickness] (1 per node for a
   /// node-based slave surface, as in ABAQUS); pressure = normal force / area.
   std::vector<double> slave_area;
+  /// The slave surface is node-based (*SURFACE, TYPE=NODE): its areas are the
+  /// ones given per node (default 1), so "pressure" is force / that area.
+  bool node_based_slave = false;
   PressureOverclosure law;               ///< HARD: exact (multipliers); else a soft law
   std::optional<FrictionData> friction;  ///< none or mu = 0: frictionless
   bool small_sliding = false;

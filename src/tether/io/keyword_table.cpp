@@ -91,7 +91,7 @@ std::vector<KeywordSpec> build_table() {
         flag("GENERATE", "Data lines are `first, last[, increment]`.")},
        handle_elset, ""},
       {"SURFACE", kModelData, "Defines a surface from element faces or from nodes.",
-       "TYPE=ELEMENT: `element_or_elset, S1..S4`; TYPE=NODE: `node_or_nset`",
+       "TYPE=ELEMENT: `element_or_elset, S1..S4`; TYPE=NODE: `node_or_nset[, area]` (the area of each node, default 1: a node-based contact slave's pressure is its force / area)",
        {name("NAME", "Name of the surface.", true),
         choice("TYPE", "ELEMENT", {"ELEMENT", "NODE"}, "Element-face surface or node surface.")},
        handle_surface, ""},

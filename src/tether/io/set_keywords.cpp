@@ -1,4 +1,5 @@
 // *NSET, *ELSET, *SURFACE.
+#include <map>
 #include <set>
 
 #include "tether/io/deck_state.hpp"
@@ -88,12 +89,20 @@ void handle_surface(DeckState& state, const KeywordBlock& block, const Parameter
   require_data(block, params.name("TYPE") == "NODE" ? "`node_or_nset`" : "`element_or_elset, S1..S4`");
   if (params.name("TYPE") == "NODE") {
     s.kind = Surface::Kind::Nodes;
+    std::map<int, std::pair<double, SourceLocation>> area;  // node -> area, the line giving it
     for (const DataLine& line : block.data) {
-      const auto f = data_fields(line, 1, 2, "`node_or_nset[, weight]`");
-      const auto nodes = state.nodes_of(f[0], line.where());
-      s.nodes.insert(s.nodes.end(), nodes.begin(), nodes.end());
+      const SourceLocation at = line.where();
+      const auto f = data_fields(line, 1, 2, "`node_or_nset[, area]`");
+      const double a = f.size() > 1 && !f[1].empty() ? parse_real(f[1], at, "node area") : 1.0;
+      if (!(a > 0)) throw InputError(at, "node area " + f[1] + ": expected an area > 0 (default 1)");
+      for (int n : state.nodes_of(f[0], at)) {
+        const auto [it, added] = area.try_emplace(n, a, at);
+        if (!added && it->second.first != a)
+          throw InputError(at, "node " + std::to_string(state.model.node_ids[static_cast<std::size_t>(n)]) +
+                                   " is given the area " + f[1] + " here and another at " + it->second.second.str());
+      }
     }
-    sort_unique(s.nodes);
+    for (const auto& [n, a] : area) s.nodes.push_back(n), s.node_areas.push_back(a.first);
   } else {
     s.kind = Surface::Kind::ElementFaces;
     std::set<long long> seen;  // element * 4 + face

@@ -42,7 +42,11 @@ struct Surface {
   std::string name;
   Kind kind = Kind::ElementFaces;
   std::vector<ElementFace> faces;  ///< for ElementFaces
-  std::vector<int> nodes;          ///< node indices, for Nodes
+  std::vector<int> nodes;          ///< node indices, for Nodes (sorted, unique)
+  /// For Nodes: the area of each node [length^2] (parallel to `nodes`), the
+  /// second field of its data line as in ABAQUS, 1 when omitted. A node-based
+  /// slave surface's contact pressure is its force divided by this area.
+  std::vector<double> node_areas;
   SourceLocation where;
 };
 

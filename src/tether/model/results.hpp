@@ -70,6 +70,10 @@ struct ContactPairValues {
   std::vector<ContactNodeValues> nodes;
   Eigen::Vector2d total_force{0, 0};  ///< Σ force over the slave nodes (on the slave body)
   double dissipation = 0;             ///< Σ dissipation
+  /// Node-based slave surface: each node's area is the one its *SURFACE data
+  /// line gives (default 1), so pressure and shear are force / that area --
+  /// with the default, numerically the force on the node.
+  bool node_based = false;
 };
 
 /// Computes the integration-point values of one element on demand (streamed

@@ -282,7 +282,9 @@ void write_contact_state_blocks(std::string& text, const Model& model, const std
                                 double time) {
   const auto out = std::back_inserter(text);
   for (std::size_t p = 0; p < contact.size(); ++p) {
-    fmt::format_to(out, "\n {} for pair {}{}\n\n", kContactStateTitle, contact_pair_set_name(model, contact, p),
+    fmt::format_to(out, "\n {} for pair {}{}\n\n",
+                   contact[p].node_based ? kNodeBasedContactStateTitle : kContactStateTitle,
+                   contact_pair_set_name(model, contact, p),
                    time_suffix(time));
     for (const ContactNodeValues& v : contact[p].nodes) {
       const std::size_t node = checked_node(model, contact[p], v.node);

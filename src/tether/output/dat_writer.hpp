@@ -133,7 +133,10 @@ namespace tether {
 ///   this increment along t), total slip (sum of |Δs| over slipping
 ///   increments), each 1X,E13.6, master element label I10 (0: not paired),
 ///   master face number I5 (S1 = 1), ξ* (1X,E13.6, face_nodes() order). All
-///   numeric, so .dat parsers read it.
+///   numeric, so .dat parsers read it. A node-based slave surface has no
+///   tributary area: its block is titled kNodeBasedContactStateTitle, and
+///   pressure and shear are the node's forces divided by its area from
+///   *SURFACE, TYPE=NODE (default 1, as in ABAQUS: then the forces).
 ///   The pair's name (contact_pair_set_name()) is `SLAVE-MASTER` from the
 ///   k-th *CONTACT PAIR of the model (its slave and master surface names), so
 ///   tools/datfile.py's `last_block(blocks, "contact state", "SLAVE-MASTER")`
@@ -160,6 +163,11 @@ void write_multiplier_blocks(std::string& text, const std::vector<MultiplierValu
 /// Title of tether's contact-state blocks (see DatWriter).
 inline constexpr std::string_view kContactStateTitle =
     "contact state (slave node,status,gap,pressure,shear,slip,total slip,master elem,master face,xi)";
+/// The same for a node-based slave surface, whose pressure and shear are
+/// force / node area (the area its *SURFACE line gives, default 1).
+inline constexpr std::string_view kNodeBasedContactStateTitle =
+    "contact state (slave node,status,gap,force/node area,shear force/node area,slip,total slip,master elem,"
+    "master face,xi)";
 
 /// The name printed for the k-th entry (0-based) of IncrementResults::contact:
 /// `SLAVE-MASTER` from model.contact_pairs[k] when the model has that pair,
