@@ -21,13 +21,13 @@ int DofMap::add_rotation(int node) {
   if (const int existing = rotation(node); existing >= 0) return existing;
   const int dof = n_dofs();
   extra_node_.push_back(node);
+  rotations_.emplace_back(node, dof);
   return dof;
 }
 
 int DofMap::rotation(int node) const {
-  if (node < 0) return -1;  // -1 marks the multipliers in extra_node_
-  for (std::size_t k = 0; k < extra_node_.size(); ++k)
-    if (extra_node_[k] == node) return n_displacement_dofs() + static_cast<int>(k);
+  for (const auto& [n, dof] : rotations_)
+    if (n == node) return dof;
   return -1;
 }
 

@@ -12,6 +12,7 @@
 /// `dof / 2` elsewhere gives its node.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tether {
@@ -93,6 +94,7 @@ class DofMap {
   std::vector<Block> blocks_;
   /// Per unknown after the displacements: the node index of a rotation, -1 for a multiplier.
   std::vector<int> extra_node_;
+  std::vector<std::pair<int, int>> rotations_;  ///< (node, dof), for rotation(): searches the rotations only
   int n_multiplier_total_ = 0;
 };
 
