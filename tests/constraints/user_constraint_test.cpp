@@ -93,7 +93,7 @@ TEST(UserConstraint, ExampleEqualsBuiltInConstraintElement) {
         EXPECT_LE((k_user - k_builtin).cwiseAbs().maxCoeff(), 1e-14) << "component " << component << " eps " << eps;
         EXPECT_GT(r_user.cwiseAbs().maxCoeff(), 0.1);
 
-        const MultiplierValues vu = user.values(state), vb = builtin.values(state);
+        const MultiplierValues vu = user.values(state), vb = builtin.values(state, fx.dofs);
         EXPECT_EQ(vu.owner, "U");
         EXPECT_EQ(vu.nodes, (std::vector<int>{1, 3}));
         ASSERT_EQ(vu.value.size(), 1u);

@@ -303,7 +303,7 @@ TEST(UserMpc, LinkWithinAConstraintElementReportsTheDependentForce) {
   const ConstraintElement element(fx.link(1, 2), {Enforcement::Method::Lagrange, 0.0}, first, "LINK-MPC", {1, 2});
   Eigen::VectorXd u = Eigen::VectorXd::Zero(fx.dofs.n_dofs());
   u[first] = -3.0;
-  const MultiplierValues v = element.values(EvaluationState{u, u});
+  const MultiplierValues v = element.values(EvaluationState{u, u}, fx.dofs);
   ASSERT_EQ(v.nodal_force.size(), 2u);
   EXPECT_EQ(v.nodal_force[0].node, 1);
   EXPECT_DOUBLE_EQ(v.nodal_force[0].force.y(), 3.0);

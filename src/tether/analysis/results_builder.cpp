@@ -108,7 +108,7 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   for (int i = 0; i < n_nodes; ++i)
     if (count[i] > 1)
       for (int k = 0; k < 4; ++k) r.nodal_stress[i][k] /= count[i], r.nodal_strain[i][k] /= count[i];
-  for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state));
+  for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state, dofs));
   for (const auto& c : discretization.user_constraints()) r.multipliers.push_back(c->values(state));
   for (const auto& pair : discretization.contact_pairs()) r.contact.push_back(pair->values(state));
   std::size_t k = 0;
@@ -122,13 +122,14 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
       v.constraint.push_back(f);
       const double l = lambda[static_cast<Eigen::Index>(k++)];
       v.value.push_back(l);
-      // Force on dof i: -lambda * df/du_i, accumulated per node.
+      // Force on dof i: -lambda * df/du_i, accumulated per node (a rotation's
+      // moment is no part of the nodal force: its node is listed, its value left out).
       for (const auto& [dof, c] : row.terms) {
-        const int node = discretization.dofs().node_of(dof);
+        const int node = dofs.node_of(dof), component = dofs.component_of(dof);
         auto it = std::find_if(v.nodal_force.begin(), v.nodal_force.end(),
                                [&](const NodalConstraintForce& n) { return n.node == node; });
         if (it == v.nodal_force.end()) it = v.nodal_force.insert(v.nodal_force.end(), {node, Eigen::Vector2d::Zero()});
-        it->force[dof % kDofsPerNode] -= l * c;
+        if (component < kDofsPerNode) it->force[component] -= l * c;
       }
     }
     r.multipliers.push_back(std::move(v));

@@ -131,7 +131,7 @@ void ConstraintElement::load_state(std::span<const double>& in) {
   lambda_bar_ = lambda_bar;
 }
 
-MultiplierValues ConstraintElement::values(const EvaluationState& state) const {
+MultiplierValues ConstraintElement::values(const EvaluationState& state, const DofMap& dofs) const {
   ConstraintOutput c;
   c.reset(m_, n_, false);
   function_->evaluate(gather(state), c, false);
@@ -148,14 +148,16 @@ MultiplierValues ConstraintElement::values(const EvaluationState& state) const {
       case Enforcement::Method::Elimination: v.value[k] = 0; break;
     }
   }
-  // Force on dof i: -sum_k lambda_k df_k/du_i, gathered per node (dof = 2 node + component).
+  // Force on dof i: -sum_k lambda_k df_k/du_i, gathered per node. A rotation
+  // (BEAM reference node) carries a moment, which is no part of the nodal
+  // force: its node is listed, its value is left out.
   const Eigen::VectorXd force = -(c.gradient.transpose() * Eigen::Map<const Eigen::VectorXd>(v.value.data(), m_));
   for (int i = 0; i < n_; ++i) {
-    const int node = dofs_[i] / kDofsPerNode, component = dofs_[i] % kDofsPerNode;
+    const int node = dofs.node_of(dofs_[i]), component = dofs.component_of(dofs_[i]);
     std::size_t a = 0;
     while (a < v.nodal_force.size() && v.nodal_force[a].node != node) ++a;
     if (a == v.nodal_force.size()) v.nodal_force.push_back({node, Eigen::Vector2d::Zero()});
-    v.nodal_force[a].force[component] += force[i];
+    if (component < kDofsPerNode) v.nodal_force[a].force[component] += force[i];
   }
   return v;
 }

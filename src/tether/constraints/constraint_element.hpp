@@ -24,6 +24,8 @@
 
 namespace tether {
 
+class DofMap;
+
 class ConstraintElement final : public Contribution {
  public:
   /// `first_multiplier` is the global index of the first of the function's m
@@ -40,8 +42,10 @@ class ConstraintElement final : public Contribution {
   void save_state(std::vector<double>& out) const override;
   void load_state(std::span<const double>& in) override;
 
-  /// Multiplier (constraint force) values and f at the state, for output.
-  [[nodiscard]] MultiplierValues values(const EvaluationState& state) const;
+  /// Multiplier (constraint force) values and f at the state, for output;
+  /// `dofs` (the map the function's dofs were numbered by) names the node of
+  /// each dof for the nodal forces.
+  [[nodiscard]] MultiplierValues values(const EvaluationState& state, const DofMap& dofs) const;
 
   [[nodiscard]] const ConstraintFunction& function() const { return *function_; }
   [[nodiscard]] const Enforcement& enforcement() const { return enforcement_; }

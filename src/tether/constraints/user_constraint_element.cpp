@@ -9,6 +9,22 @@
 
 namespace tether {
 
+namespace {
+
+/// The routine's arrays hold node a's components at [kAbiDofs * a + c], in the
+/// order of its node list (user_constraint.h); the global numbering is DofMap's.
+constexpr int kAbiDofs = TETHER_USER_CONSTRAINT_DOFS_PER_NODE;
+static_assert(kAbiDofs == kDofsPerNode, "user constraint dofs per node must match the DofMap");
+
+/// Position of component `c` of the constraint's node `a` in the routine's arrays.
+constexpr int abi_index(int a, int c) { return kAbiDofs * a + c; }
+/// The constraint's node (0-based position in its list) of displacement row `i` of the routine's arrays.
+constexpr int abi_node(int i) { return i / kAbiDofs; }
+/// The component (0: x, 1: y) of displacement row `i` of the routine's arrays.
+constexpr int abi_component(int i) { return i % kAbiDofs; }
+
+}  // namespace
+
 UserConstraintElement::UserConstraintElement(std::string library_path, std::string symbol, int number,
                                              std::vector<int> node_indices, std::vector<int> node_labels,
                                              std::vector<Eigen::Vector2d> reference, std::vector<double> properties,
@@ -35,7 +51,7 @@ UserConstraintElement::UserConstraintElement(std::string library_path, std::stri
       throw std::invalid_argument(name_ + ": node index " + std::to_string(node) + " out of range");
     coordinates_.push_back(reference[a].x());
     coordinates_.push_back(reference[a].y());
-    for (int c = 0; c < kDofsPerNode; ++c) dofs_.push_back(dofs.displacement(node, c));
+    for (int c = 0; c < kAbiDofs; ++c) dofs_.push_back(dofs.displacement(node, c));
   }
   for (int k = 0; k < m_; ++k) dofs_.push_back(first_multiplier + k);
 
@@ -59,7 +75,7 @@ std::string UserConstraintElement::who() const {
 
 void UserConstraintElement::call(const EvaluationState& state, Eigen::VectorXd& residual,
                                  Eigen::MatrixXd* tangent) const {
-  const int nu = kDofsPerNode * n_nodes();
+  const int nu = abi_index(n_nodes(), 0);
   const int n = nu + m_;
   std::vector<double> total(nu), increment(nu), lambda(m_);
   for (int i = 0; i < nu; ++i) {
@@ -105,7 +121,8 @@ void UserConstraintElement::call(const EvaluationState& state, Eigen::VectorXd& 
 
   auto describe_row = [&](int i) {
     if (i < nu)
-      return "node " + std::to_string(node_labels_[i / kDofsPerNode]) + " dof " + std::to_string(i % kDofsPerNode + 1);
+      return "node " + std::to_string(node_labels_[static_cast<std::size_t>(abi_node(i))]) + " dof " +
+             std::to_string(abi_component(i) + 1);
     return "multiplier " + std::to_string(i - nu + 1);
   };
   for (int i = 0; i < n; ++i)
@@ -128,7 +145,7 @@ void UserConstraintElement::evaluate(const EvaluationState& state, LocalSystem& 
 MultiplierValues UserConstraintElement::values(const EvaluationState& state) const {
   Eigen::VectorXd residual;
   call(state, residual, nullptr);
-  const int nu = kDofsPerNode * n_nodes();
+  const int nu = abi_index(n_nodes(), 0);
   MultiplierValues v;
   v.owner = name_;
   v.nodes = node_indices_;
@@ -140,7 +157,7 @@ MultiplierValues UserConstraintElement::values(const EvaluationState& state) con
   }
   // The force the constraint exerts on a displacement dof is -residual (user_constraint.h).
   for (int a = 0; a < n_nodes(); ++a)
-    v.nodal_force.push_back({node_indices_[a], -Eigen::Vector2d(residual[kDofsPerNode * a], residual[kDofsPerNode * a + 1])});
+    v.nodal_force.push_back({node_indices_[a], -Eigen::Vector2d(residual[abi_index(a, 0)], residual[abi_index(a, 1)])});
   return v;
 }
 

@@ -20,9 +20,9 @@ std::vector<Eigen::Vector2d> local_positions(const ContactPair& pair, const Cont
                                              int n_points) {
   std::vector<Eigen::Vector2d> y(static_cast<std::size_t>(n_points));
   for (int a = 0; a < n_points; ++a) {
-    const int dx = s.dofs[static_cast<std::size_t>(2 * a)];
-    y[static_cast<std::size_t>(a)] = pair.reference()[static_cast<std::size_t>(dx / kDofsPerNode)] +
-                                     Eigen::Vector2d(u[dx], u[dx + 1]);
+    const int node = s.nodes[static_cast<std::size_t>(a)];
+    y[static_cast<std::size_t>(a)] = pair.reference()[static_cast<std::size_t>(node)] +
+                                     Eigen::Vector2d(u[DofMap::displacement(node, 0)], u[DofMap::displacement(node, 1)]);
   }
   if (s.pairing.found() && !pair.segments().segment(s.pairing.segment).identity) {
     const std::vector<Eigen::Vector2d> real(y.begin() + 1, y.end());
@@ -128,8 +128,8 @@ Eigen::MatrixXd virtual_to_real(const ContactPair& pair, const ContactSlave& s, 
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(n_virtual, n_real);
   T.topLeftCorner<2, 2>().setIdentity();
   auto slot_of = [&s](int node) {  // local node slot of a real node in s.dofs
-    for (std::size_t k = 0; k < s.dofs.size(); k += 2)
-      if (s.dofs[k] == kDofsPerNode * node) return static_cast<int>(k / 2);
+    for (std::size_t a = 0; a < s.nodes.size(); ++a)
+      if (s.nodes[a] == node) return static_cast<int>(a);
     return -1;
   };
   int row = 2;

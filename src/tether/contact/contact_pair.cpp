@@ -1,5 +1,6 @@
 #include "tether/contact/contact_pair.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -30,7 +31,8 @@ constexpr double kKinkSine = 1e-8;
 constexpr double kStateTag = 2001;
 
 Eigen::Vector2d position(const std::vector<Eigen::Vector2d>& reference, const Eigen::VectorXd& u, int node) {
-  return reference[static_cast<std::size_t>(node)] + Eigen::Vector2d(u[kDofsPerNode * node], u[kDofsPerNode * node + 1]);
+  return reference[static_cast<std::size_t>(node)] +
+         Eigen::Vector2d(u[DofMap::displacement(node, 0)], u[DofMap::displacement(node, 1)]);
 }
 
 /// Geometry of a slave point on segment `segment` of `surface` (points by
@@ -134,20 +136,18 @@ std::vector<Eigen::Vector2d> ContactPair::segment_points(int k, const Eigen::Vec
 void ContactPair::set_pairing(ContactSlave& s, const ContactPairing& p) {
   s.pairing = p;
   s.dofs.clear();
-  s.dofs.push_back(kDofsPerNode * s.node);
-  s.dofs.push_back(kDofsPerNode * s.node + 1);
-  auto add_node = [&s](int node) {
-    for (std::size_t k = 0; k < s.dofs.size(); k += 2)
-      if (s.dofs[k] == kDofsPerNode * node) return;
-    s.dofs.push_back(kDofsPerNode * node);
-    s.dofs.push_back(kDofsPerNode * node + 1);
+  s.nodes.clear();
+  auto push_node = [&s](int node) {
+    s.nodes.push_back(node);
+    for (int c = 0; c < kDofsPerNode; ++c) s.dofs.push_back(DofMap::displacement(node, c));
   };
+  auto add_node = [&s, &push_node](int node) {
+    if (std::find(s.nodes.begin(), s.nodes.end(), node) == s.nodes.end()) push_node(node);
+  };
+  push_node(s.node);
   if (p.found()) {
     const MasterSegment& m = segments_.segment(p.segment);
-    for (int a = 0; a < m.n_nodes; ++a) {
-      s.dofs.push_back(kDofsPerNode * m.nodes[static_cast<std::size_t>(a)]);
-      s.dofs.push_back(kDofsPerNode * m.nodes[static_cast<std::size_t>(a)] + 1);
-    }
+    for (int a = 0; a < m.n_nodes; ++a) push_node(m.nodes[static_cast<std::size_t>(a)]);
   }
   // After a hand-over the slip is measured from a point of the committed
   // segment, whose nodes then enter the tangent too.

@@ -77,6 +77,9 @@ struct ContactSlave {
   /// [slave x, y, segment nodes x, y ..., committed segment's other nodes x, y ..., λn?, λt?]
   /// (the committed segment's nodes not already listed, with friction after a hand-over only).
   std::vector<int> dofs;
+  /// The real nodes whose displacements head `dofs`: node a owns its x, y at
+  /// dofs[2a], dofs[2a + 1] (slave, segment nodes, committed segment's others).
+  std::vector<int> nodes;
   /// With friction: paired with another segment than at the last converged
   /// increment when the dofs were built, so the slip increment depends on the
   /// committed segment's nodes too (they are in `dofs`).

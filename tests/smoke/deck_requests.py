@@ -1,0 +1,121 @@
+"""What a deck asks the `.dat` to contain, read from the deck's keywords (smoke tier).
+
+read(path) follows *INCLUDE (relative to the including file) and returns
+  {"steps": [[(title, set), ...] per step: the blocks its print requests
+             write at the step's last increment],
+   "contact_pairs": ["SLAVE-MASTER", ...],
+   "constraints": True when the deck has *EQUATION, *MPC, *CONSTRAINT, *TIE or *PERIODIC}.
+
+Titles are the leading words of tether's block headers (tools/datfile.py
+splits them from the set and the time), as DatWriter documents them:
+*NODE PRINT U -> displacements, RF -> forces (and total force with
+TOTALS=YES; only total force with TOTALS=ONLY); *EL PRINT S -> stresses,
+E -> strains; *CONTACT PRINT CSTR/CSTRESS -> contact stress, CDIS/CDISP ->
+relative contact displacement (one block for all pairs, set ""), CFN/CFS ->
+total normal/shear contact force per pair (no variables: CSTR, CDIS), and
+the contact state block of every pair; *OUTPUT, HISTORY with *NODE OUTPUT / *ELEMENT OUTPUT (or
+VARIABLE=PRESELECT) like the print requests. A request with FREQUENCY=0
+writes nothing; file requests (*NODE FILE, *OUTPUT, FIELD, ...) write no
+.dat blocks. Variables tether does not print are left out (the reader warns).
+"""
+import os
+import re
+
+_NODE_TITLES = {"U": ["displacements"], "RF": ["forces"]}
+_ELEMENT_TITLES = {"S": ["stresses"], "E": ["strains"]}
+_CONTACT_TITLES = {"CSTR": "contact stress", "CSTRESS": "contact stress", "CDIS": "relative contact displacement",
+                   "CDISP": "relative contact displacement"}
+_CONTACT_PAIR_TITLES = {"CFN": "total normal contact force", "CFS": "total shear contact force"}
+_CONSTRAINT_KEYWORDS = {"*EQUATION", "*MPC", "*CONSTRAINT", "*TIE", "*PERIODIC"}
+
+
+def _blocks(path):
+    """[(keyword upper, {PARAM: value upper}, [data lines])], *INCLUDE expanded."""
+    out = []
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    i = 0
+    while i < len(lines):
+        line = lines[i].strip()
+        i += 1
+        if not line.startswith("*") or line.startswith("**"):
+            continue
+        while line.endswith(",") and i < len(lines):  # keyword line continued
+            line += lines[i].strip()
+            i += 1
+        fields = [f.strip() for f in line.split(",")]
+        keyword = re.sub(r"\s+", " ", fields[0].upper())
+        params = {}
+        for f in fields[1:]:
+            if not f:
+                continue
+            name, _, value = f.partition("=")
+            params[re.sub(r"\s+", " ", name.strip().upper())] = value.strip()
+        data = []
+        while i < len(lines):
+            text = lines[i].strip()
+            if text.startswith("*") and not text.startswith("**"):
+                break
+            if text and not text.startswith("**"):
+                data.append(text)
+            i += 1
+        if keyword == "*INCLUDE":
+            out.extend(_blocks(os.path.join(os.path.dirname(path), params["INPUT"])))
+        else:
+            out.append((keyword, params, data))
+    return out
+
+
+def _variables(data):
+    return [v.strip().upper() for line in data for v in line.split(",") if v.strip()]
+
+
+def _frequency(params, default=1):
+    return int(params.get("FREQUENCY", default))
+
+
+def read(path):
+    steps, pairs, constraints = [], [], False
+    current = None
+    history = None  # (frequency) of the current *OUTPUT, HISTORY block, or "field"
+    for keyword, params, data in _blocks(path):
+        if keyword in _CONSTRAINT_KEYWORDS:
+            constraints = True
+        elif keyword == "*CONTACT PAIR":
+            pairs.extend("-".join(s.strip().upper() for s in line.split(",")[:2]) for line in data)
+        elif keyword == "*STEP":
+            current, history = [], None
+            steps.append(current)
+        elif current is None:
+            continue
+        elif keyword == "*OUTPUT":
+            history = _frequency(params) if "HISTORY" in params else "field"
+            if history != "field" and history > 0 and "VARIABLE" in params:
+                current += [("displacements", "NALL"), ("forces", "NALL"), ("stresses", "EALL"), ("strains", "EALL")]
+        elif keyword in ("*NODE PRINT", "*NODE OUTPUT"):
+            frequency = _frequency(params) if keyword == "*NODE PRINT" else history
+            if frequency == "field" or frequency == 0:
+                continue
+            nset = params.get("NSET", "NALL").upper()
+            totals = params.get("TOTALS", "NO").upper()
+            for v in _variables(data):
+                titles = _NODE_TITLES.get(v, [])
+                if v == "RF" and totals == "ONLY":
+                    titles = ["total force"]
+                elif v == "RF" and totals == "YES":
+                    titles = ["forces", "total force"]
+                current += [(t, nset) for t in titles]
+        elif keyword in ("*EL PRINT", "*ELEMENT OUTPUT"):
+            frequency = _frequency(params) if keyword == "*EL PRINT" else history
+            if frequency == "field" or frequency == 0:
+                continue
+            elset = params.get("ELSET", "EALL").upper()
+            current += [(t, elset) for v in _variables(data) for t in _ELEMENT_TITLES.get(v, [])]
+        elif keyword == "*CONTACT PRINT" and _frequency(params) > 0:
+            for v in _variables(data) or ["CSTR", "CDIS"]:  # the reader's default
+                if v in _CONTACT_TITLES:
+                    current.append((_CONTACT_TITLES[v], ""))
+                elif v in _CONTACT_PAIR_TITLES:
+                    current += [(_CONTACT_PAIR_TITLES[v], p) for p in pairs]
+            current += [("contact state", p) for p in pairs]
+    return {"steps": steps, "contact_pairs": pairs, "constraints": constraints}
