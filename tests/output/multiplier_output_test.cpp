@@ -149,5 +149,39 @@ TEST(MultiplierOutput, RigidLinkRunConstraintForceIsMinusTheReaction) {
             0);
 }
 
+// Constraints of two or three equations (*TIE slave nodes, *PERIODIC pairs,
+// *MPC TIE/PIN/BEAM) put their multipliers at their first node in the vector
+// LAGRANGE_MULTIPLIERS; the scalar LAGRANGE_MULTIPLIER is written only when a
+// one-equation constraint exists (it was written as zeros for *TIE/*PERIODIC).
+TEST(MultiplierOutput, TieAndPeriodicMultipliersAreInTheVtu) {
+  for (const std::string deck : {"tie_surface_to_surface", "periodic"}) {
+    const Model model = read_deck(kSource + "/tests/smoke/decks/" + deck + ".inp");
+    const auto dir = fresh_directory("multiplier_" + deck);
+    ResultWriter writer(model, dir, "job", {VtuEncoding::Ascii, true});
+    WritingObserver observer(writer);
+    const AnalysisSummary summary = StaticAnalysis(model, observer).run();
+    ASSERT_TRUE(summary.completed) << summary.message;
+    const IncrementResults& last = observer.results.back();
+    std::vector<Eigen::Vector3d> expected(model.coords.size(), Eigen::Vector3d::Zero());
+    double largest = 0;
+    for (const MultiplierValues& m : last.multipliers) {
+      ASSERT_EQ(m.value.size(), 2u) << m.owner;
+      expected[static_cast<std::size_t>(m.nodes.front())] += Eigen::Vector3d(m.value[0], m.value[1], 0);
+      largest = std::max({largest, std::abs(m.value[0]), std::abs(m.value[1])});
+    }
+    EXPECT_GT(largest, 0) << deck;
+    const std::string text = read_text(dir / ("job_1_" + std::to_string(last.increment) + ".vtu"));
+    EXPECT_EQ(text.find("Name=\"LAGRANGE_MULTIPLIER\""), std::string::npos) << deck;
+    const auto at = text.find("Name=\"LAGRANGE_MULTIPLIERS\"");
+    ASSERT_NE(at, std::string::npos) << deck;
+    std::istringstream values(text.substr(text.find('>', at) + 1));
+    for (const Eigen::Vector3d& e : expected) {
+      Eigen::Vector3d v;
+      values >> v.x() >> v.y() >> v.z();
+      EXPECT_LT((v - e).norm(), 1e-6 * largest) << deck;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tether

@@ -303,6 +303,8 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (!r.nodal_strain.empty()) write_tensors6(sink, enc, kIndent, "E", r.nodal_strain);
   if (!r.multipliers.empty()) {
     SparseNodal<double> lambda;
+    SparseNodal<Eigen::Vector3d> lambdas;  // constraints of 2 or 3 equations, at their first node
+    bool scalar = false;
     SparseNodal<Eigen::Vector2d> force;
     const auto checked = [&](const MultiplierValues& m, int node) {
       if (node < 0 || static_cast<std::size_t>(node) >= n_nodes)
@@ -311,6 +313,12 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
       return static_cast<std::size_t>(node);
     };
     for (const auto& m : r.multipliers) {
+      if ((m.value.size() == 2 || m.value.size() == 3) && !m.nodes.empty()) {
+        Eigen::Vector3d l = Eigen::Vector3d::Zero();
+        for (std::size_t k = 0; k < m.value.size(); ++k) l[static_cast<Eigen::Index>(k)] = m.value[k];
+        lambdas.try_emplace(checked(m, m.nodes.front()), Eigen::Vector3d::Zero()).first->second += l;
+      }
+      scalar = scalar || m.value.size() == 1;
       std::vector<std::size_t> seen;  // a node listed twice gets the owner's lambda once
       for (const int node : m.nodes) {
         const std::size_t i = checked(m, node);
@@ -321,8 +329,18 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
       for (const auto& f : m.nodal_force)
         force.try_emplace(checked(m, f.node), Eigen::Vector2d::Zero()).first->second += f.force;
     }
-    write_data_array<double>(sink, enc, kIndent, "LAGRANGE_MULTIPLIER", 1, n_nodes,
-                             indexed(sparse_nodal(lambda, 0.0, [](double v) { return v; })));
+    if (scalar)
+      write_data_array<double>(sink, enc, kIndent, "LAGRANGE_MULTIPLIER", 1, n_nodes,
+                               indexed(sparse_nodal(lambda, 0.0, [](double v) { return v; })));
+    if (!lambdas.empty()) {
+      auto nodal = sparse_nodal(lambdas, Eigen::Vector3d(Eigen::Vector3d::Zero()),
+                                [](const Eigen::Vector3d& v) { return v; });
+      write_data_array<double>(sink, enc, kIndent, "LAGRANGE_MULTIPLIERS", 3, 3 * n_nodes,
+                               tuples(3, [&](std::size_t i, double* t) {
+                                 const Eigen::Vector3d v = nodal(i);
+                                 t[0] = v.x(), t[1] = v.y(), t[2] = v.z();
+                               }));
+    }
     auto nodal_force =
         sparse_nodal(force, Eigen::Vector2d(Eigen::Vector2d::Zero()), [](const Eigen::Vector2d& v) { return v; });
     write_data_array<double>(sink, enc, kIndent, "CONSTRAINT_FORCE", 3, 3 * n_nodes,

@@ -32,8 +32,9 @@ std::uint8_t vtk_cell_type(Shape shape);
 /// - FieldData `TIME` (total time), `STEP`, `INCREMENT`;
 /// - PointData `NodeId` (node labels), `U`, `RF` (3 components, z = 0),
 ///   `S`, `E` (6 components in VTK's symmetric-tensor order XX, YY, ZZ, XY,
-///   YZ, XZ; tensor shear strains), `S_Mises`, and `LAGRANGE_MULTIPLIER`
-///   and `CONSTRAINT_FORCE` when the increment has multipliers (see below),
+///   YZ, XZ; tensor shear strains), `S_Mises`, and `CONSTRAINT_FORCE`,
+///   `LAGRANGE_MULTIPLIER` and `LAGRANGE_MULTIPLIERS` when the increment has
+///   multipliers of their kind (see below),
 ///   and the `CONTACT_*` arrays when it has contact pairs (see below);
 /// - CellData `ElementId` (element labels), `S` and `S_Mises`: the arithmetic
 ///   mean of the integration-point stresses and its von Mises value.
@@ -51,11 +52,18 @@ std::uint8_t vtk_cell_type(Shape shape);
 /// (RF = internal force + constraint residual), and with Warp By Vector /
 /// Glyph it shows where and in which direction constraints push.
 ///
-/// `LAGRANGE_MULTIPLIER` (scalar): the multiplier of every single-equation
-/// constraint (LINK, SLIDER, one-row *EQUATION, EXPRESSION or USER) put on
-/// each node it lists, summed where such constraints meet; 0 elsewhere.
-/// Constraints with several equations (MPC TIE/PIN, multi-row formulas) are
-/// left out: their multipliers belong to equations, not nodes — they are in
+/// `LAGRANGE_MULTIPLIER` (scalar; written when some constraint has exactly
+/// one equation): the multiplier of every single-equation constraint (LINK,
+/// SLIDER, one-row *EQUATION, EXPRESSION or USER) put on each node it lists,
+/// summed where such constraints meet; 0 elsewhere.
+///
+/// `LAGRANGE_MULTIPLIERS` (3 components; written when some constraint has two
+/// or three equations): (lambda_1, lambda_2, lambda_3) of each such constraint
+/// (0 for a missing third) at the first node it lists — the slave node of a
+/// *TIE, the first node of a *PERIODIC pair, the dependent node of an *MPC
+/// TIE or PIN (then lambda_1, lambda_2 are its x and y equations), the body
+/// node of an *MPC BEAM — summed where several constraints start at one node;
+/// 0 elsewhere. Multipliers of constraints with more equations are only in
 /// CONSTRAINT_FORCE and, per equation, in the `.dat` multiplier blocks.
 ///
 /// Contact (IncrementResults::contact not empty, i.e. the model has
