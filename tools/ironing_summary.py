@@ -93,7 +93,7 @@ def plot(results, path):
         for k, r in enumerate(frictional):
             x, y = sliding(r, "iterations")
             ax.plot(x, y, ".", ms=3, color=f"C{k}", label=r["label"])
-        ax.axhline(8, color="k", lw=0.8, ls="--", label="8 (issue)")
+        ax.axhline(8, color="k", lw=0.8, ls="--", label="8 (bound)")
         most = max([8] + [h["iterations"] or 0 for r in frictional for h in r["history"]])
         ax.set_ylim(0, 1.45 * most)  # room for the legend above the points
         ax.set_ylabel("iterations / increment")

@@ -619,7 +619,7 @@ def bench_mindlin(rn, images, quick):
                 "same runs: c = a√(1 − Q/(μP)) with the exact a; measured from the slave nodes' stick/slip status "
                 "(ccx prints none: there a node sticks when |τ| < (1 − 10⁻³) μp): on each side the midpoint between "
                 "the last node of the stick run through x = 0 and the next node, both sides averaged, so it resolves "
-                f"c to ±h/2 = ±{50 * info.number('h') / ex['c']:.1f} %; tolerance 5 % (issue). The figure shows q(x) "
+                f"c to ±h/2 = ±{50 * info.number('h') / ex['c']:.1f} %; tolerance 5 %. The figure shows q(x) "
                 "over Mindlin's q = μp0(√(1 − x²/a²) − (c/a)√(1 − x²/c²)) in the stick zone, μp outside",
                 ccx=value(sc, "c"), ccx_err=value(sc, "c_error"), ccx_tol=ccx_tol["c"], ccx_note=note),
             row(case, "c at each of the 5 increments of Q (worst error)", None, None, tet(worst_c(st)), 0.05,
@@ -668,7 +668,7 @@ def bench_ironing(rn, images, quick):
            f"{info.number('master_size'):g} mm in 24 increments, CPE4, NLGEOM, HARD, *FRICTION μ = {mu:g} (tether: "
            "exact stick). Exact: every contact node slips and the pressure is symmetric about the die axis "
            "(identical materials), so Fx/|Fy| = μ for the reaction totals of the driven top nodes (TOPN). Steady "
-           f"sliding: slide ≥ {steady:g} mm ({window or 'no run'}); tolerance 2 % (issue). ccx: the same deck "
+           f"sliding: slide ≥ {steady:g} mm ({window or 'no run'}); tolerance 2 %. ccx: the same deck "
            f"written with `--stick-slope {STICK_SLOPE}` (`*FRICTION` {mu:g}, {STICK_SLOPE}: penalty stick, it has "
            "no exact one), HARD → penalty 50 E. The frictionless case (Fx → 0) is "
            "tests/verification/ironing_test.cpp `Ironing.Cpe4FrictionlessHasNoDrag`")
