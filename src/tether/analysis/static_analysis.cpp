@@ -14,6 +14,7 @@
 #include "tether/analysis/restart.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/analysis/step_loads.hpp"
+#include "tether/analysis/step_system.hpp"
 #include "tether/assembly/assembler.hpp"
 #include "tether/core/error.hpp"
 #include "tether/solvers/condensed_solver.hpp"
@@ -23,11 +24,6 @@ namespace tether {
 namespace {
 
 constexpr int kMaxAcceptancePasses = 50;
-/// Condensation onto the contact equations (CondensedSolver) only while the
-/// dense interface system stays small (its LU costs (2/3)|I|³ per iteration)
-/// and a small part of the whole.
-constexpr int kMaxCondensedEquations = 3000;
-constexpr int kMinCondensationRatio = 20;
 
 std::string format_time(double t) {
   std::ostringstream s;
@@ -227,80 +223,19 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   resume_.reset();
   const Eigen::VectorXd u_step_start =
       resumed ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(resumed->u_step_start.data(), u_.size())) : u_;
-  const StepLoads loads = make_step_loads(step, dofs, u_step_start, cload_end_, pressure_end_);
-
-  // Contributions of this step: every element, then the pressure loads.
-  auto pressures = disc.make_pressures(loads.pressures);
-  std::vector<Contribution*> contributions;
-  contributions.reserve(disc.elements().size() + disc.constraints().size() + disc.user_constraints().size() +
-                        pressures.size());
-  for (const auto& e : disc.elements()) contributions.push_back(e.get());
-  for (const auto& c : disc.constraints()) contributions.push_back(c.get());
-  for (const auto& c : disc.user_constraints()) contributions.push_back(c.get());
-  for (const auto& pair : disc.contact_pairs()) {
-    contributions.push_back(pair.get());  // searches before its nodes are evaluated
-    for (Contribution* node : pair->nodes()) contributions.push_back(node);
-  }
-  std::vector<const Contribution*> load_contributions;
-  for (const auto& p : pressures) contributions.push_back(p.get()), load_contributions.push_back(p.get());
-
-  std::vector<bool> prescribed(dofs.n_dofs(), false);
-  for (const auto& [dof, value] : loads.prescribed) prescribed[dof] = true;
-  // Nodes no element or constraint uses have no dofs (as in ABAQUS): their
-  // displacements are held at zero instead of making the matrix singular.
-  std::vector<bool> used(dofs.n_dofs(), false);
-  for (const Contribution* c : contributions)
-    for (int d : c->dofs()) used[d] = true;
-  for (const auto& row : disc.elimination_rows())
-    for (const auto& term : row.terms) used[term.first] = true;
-  int unused_nodes = 0;
-  for (int node = 0; node < dofs.n_nodes(); ++node) {
-    bool any = false;
-    for (int c = 0; c < kDofsPerNode; ++c) any = any || used[dofs.displacement(node, c)];
-    if (any) continue;
-    ++unused_nodes;
-    for (int c = 0; c < kDofsPerNode; ++c) prescribed[dofs.displacement(node, c)] = true;
-  }
-  if (unused_nodes > 0 && index == 0)
-    observer_.on_message(std::to_string(unused_nodes) +
-                         " node(s) belong to no element; they get no degrees of freedom");
-  EquationMap equations(prescribed, disc.elimination_rows());
-  // With contact, the Auto solver condenses onto the contact equations
-  // (CondensedSolver) while they are few; the pattern then holds them all
-  // to all, so that re-pairing never rebuilds it.
-  std::vector<int> interface;
-  // Not under NLGEOM: the bulk changes at every iteration there, and the
-  // reserved block would only add fill to the ordinary factorization.
-  if (options_.solver == SolverKind::Auto && options_.condense_contact && !step.nlgeom &&
-      !disc.contact_pairs().empty()) {
-    interface = contact_equations(disc.contact_pairs(), dofs, equations);
-    const auto m = static_cast<int>(interface.size());
-    if (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()) interface.clear();
-  }
-  Assembler assembler(contributions, std::move(equations), interface);
-  check_constraints(disc, assembler.equations(), EvaluationState{u_, u_, 0, total_time_, 0, step.nlgeom});
-  std::unique_ptr<LinearSolver> solver = make_linear_solver(options_.solver, options_.memory_budget_mb);
-  const CondensedSolver* condensed = nullptr;
-  if (!interface.empty()) {
-    auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver), options_.memory_budget_mb);
-    condensed = c.get();
-    solver = std::move(c);
-  }
-  NewtonSolver newton(*solver, step.controls, disc.length_scale());
-  // The tangent is symmetric unless follower pressure, friction or a user
-  // routine (its Hessian comes from finite differences) makes it otherwise;
-  // the solver then picks Cholesky (positive definite) or LDLT (multipliers).
-  bool unsymmetric = step.nlgeom && !pressures.empty();
-  for (const auto& pair : disc.contact_pairs()) unsymmetric = unsymmetric || pair->mu() > 0;
-  unsymmetric = unsymmetric || !disc.user_constraints().empty();
-  for (const ConstraintData& c : model_.constraints) unsymmetric = unsymmetric || c.kind == ConstraintData::Kind::UserMpc;
-  const bool symmetric = !unsymmetric;
-  // MUMPS here is LDLT and CHOLMOD Cholesky: both read one triangle only.
-  if (unsymmetric && (options_.solver == SolverKind::Mumps || options_.solver == SolverKind::Cholmod))
-    throw ModelError(std::string("--solver ") +
-                     (options_.solver == SolverKind::Mumps ? "mumps (LDLT)" : "cholmod (Cholesky)") +
-                     " factorizes symmetric matrices only, and this step's tangent is unsymmetric (friction, "
-                     "follower pressure under NLGEOM, or a user constraint); use --solver auto or umfpack");
+  StepSystem system(disc, step, make_step_loads(step, dofs, u_step_start, cload_end_, pressure_end_), u_, total_time_,
+                    SolverSettings{options_.solver, options_.condense_contact, options_.memory_budget_mb},
+                    [&](const std::string& m) {
+                      if (index == 0) observer_.on_message(m);
+                    });
+  const StepLoads& loads = system.loads();
+  const auto& pressures = system.pressures();
+  const std::vector<Contribution*>& contributions = system.contributions();
+  Assembler& assembler = system.assembler();
+  const CondensedSolver* condensed = system.condensed();
+  LinearSolver& solver = system.solver();
+  NewtonSolver newton(solver, step.controls, disc.length_scale());
+  const bool symmetric = system.symmetric();
 
   const double period = step.period > 0 ? step.period : 1.0;
   const double max_dt = step.max_increment > 0 ? step.max_increment : period;
@@ -395,7 +330,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                           (c.gave_up ? " (stopped condensing: the matrix outside the contact equations changed twice in a row or is singular)"
                                      : ""));
     }
-  } timing_guard{summary, newton, output_seconds, condensed, *solver, options_.memory_budget_mb, observer_, index + 1};
+  } timing_guard{summary, newton, output_seconds, condensed, solver, options_.memory_budget_mb, observer_, index + 1};
 
   auto stop = [&](const std::string& why) {
     summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(step_time) +
@@ -427,7 +362,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       pressures[k]->set_pressure(step_magnitude(model_, v.amplitude, v.start, v.target, t_new, period, total_new));
     }
 
-    IncrementProblem problem(assembler, dofs, u_, u_start, external, load_contributions,
+    IncrementProblem problem(assembler, dofs, u_, u_start, external, system.load_contributions(),
                              IncrementTime{t_new, total_new, dt, step.nlgeom}, symmetric, &disc.contact_pairs());
     NewtonOutcome outcome;
     int iterations = 0;
