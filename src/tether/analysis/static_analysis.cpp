@@ -9,6 +9,7 @@
 #include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/constraint_checks.hpp"
 #include "tether/analysis/contact_builder.hpp"
+#include "tether/analysis/increment_controller.hpp"
 #include "tether/analysis/increment_problem.hpp"
 #include "tether/analysis/newton.hpp"
 #include "tether/analysis/restart.hpp"
@@ -24,13 +25,6 @@ namespace tether {
 namespace {
 
 constexpr int kMaxAcceptancePasses = 50;
-
-std::string format_time(double t) {
-  std::ostringstream s;
-  s.precision(6);
-  s << t;
-  return s.str();
-}
 
 /// For a step that stopped without convergence: a known cause worth naming.
 /// Coulomb friction over a faceted (unsmoothed, linear, several faces)
@@ -237,24 +231,14 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   NewtonSolver newton(solver, step.controls, disc.length_scale());
   const bool symmetric = system.symmetric();
 
-  const double period = step.period > 0 ? step.period : 1.0;
-  const double max_dt = step.max_increment > 0 ? step.max_increment : period;
-  double dt = std::min(step.initial_increment > 0 ? step.initial_increment : period, max_dt);
-  const double min_dt = step.min_increment > 0 ? step.min_increment : std::min(1e-5 * period, dt);
-  const Controls& controls = step.controls;
+  IncrementController clock(step, total_time_);
+  const double period = clock.period();
 
   Eigen::VectorXd external = Eigen::VectorXd::Zero(dofs.n_dofs());
-  double step_time = 0;
-  int increment = 0, attempt = 1, easy_in_row = 0;
   double averaged_force = 0;
   int n_averaged = 0;
-  double step_start_time = total_time_;
   if (resumed) {
-    step_time = resumed->step_time;
-    step_start_time = resumed->step_start_time;
-    increment = resumed->increment;
-    dt = resumed->dt;
-    easy_in_row = resumed->easy_in_row;
+    clock.restore(*resumed);
     averaged_force = resumed->averaged_force;
     n_averaged = resumed->n_averaged;
   }
@@ -267,13 +251,9 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     const std::vector<Contribution*> order = stateful_order();
     r.fingerprint = restart_fingerprint(model_, disc, static_cast<int>(order.size()), index + 1);
     r.step = index + 1;
-    r.increment = increment;
+    clock.save(r);
     r.step_completed = completed;
-    r.step_time = step_time;
-    r.step_start_time = step_start_time;
     r.total_time = total_time_;
-    r.dt = dt;
-    r.easy_in_row = easy_in_row;
     r.averaged_force = averaged_force;
     r.n_averaged = n_averaged;
     r.steps_completed = summary.steps + (completed ? 1 : 0);
@@ -333,21 +313,19 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   } timing_guard{summary, newton, output_seconds, condensed, solver, options_.memory_budget_mb, observer_, index + 1};
 
   auto stop = [&](const std::string& why) {
-    summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(step_time) +
+    summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(clock.step_time()) +
                       ": " + why +
                       (summary.increments > 0 ? "; the last converged increment has been written"
                                               : "; no increment converged, so there are no results");
     return false;
   };
 
-  while (step_time < period * (1 - 1e-12)) {
-    if (increment >= step.max_increments)
-      return stop("the maximum number of increments (INC=" + std::to_string(step.max_increments) + ") was reached" +
+  while (!clock.finished()) {
+    if (clock.out_of_increments())
+      return stop("the maximum number of increments (INC=" + std::to_string(clock.max_increments()) + ") was reached" +
                   non_convergence_hint(disc));
-    dt = std::min(dt, period - step_time);
-    if (period - step_time - dt < 1e-9 * period) dt = period - step_time;
-    const double t_new = step_time + dt;
-    const double total_new = step_start_time + t_new;
+    const IncrementTimes times = clock.next_attempt();
+    const double t_new = times.step_time, total_new = times.total_time, dt = times.dt;
 
     // Apply the state at the end of the increment.
     const Eigen::VectorXd u_start = u_;
@@ -393,8 +371,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
 
     IncrementReport report;
     report.step = index + 1;
-    report.increment = increment + 1;
-    report.attempt = attempt;
+    report.increment = clock.increment() + 1;
+    report.attempt = clock.attempt();
     report.iterations = iterations;
     report.total_iterations = summary.iterations;
     report.step_time = t_new;
@@ -416,33 +394,23 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       IncrementResults results = build_results(disc, s, problem.full_residual(), assembler.equations(),
                                                options_.stream_element_results ? &point_source : nullptr);
       for (Contribution* c : contributions) c->commit(s);
-      step_time = t_new;
+      clock.accept(times, iterations);
       total_time_ = total_new;
-      ++increment;
       ++summary.increments;
       averaged_force = (averaged_force * n_averaged + outcome.force_scale) / (n_averaged + 1);
       ++n_averaged;
-      attempt = 1;
 
       results.step = index + 1;
-      results.increment = increment;
-      results.step_time = step_time;
+      results.increment = clock.increment();
+      results.step_time = t_new;
       results.total_time = total_time_;
       results.iterations = iterations;
-      observer_.on_results(results, step, step_time >= period * (1 - 1e-12));
+      observer_.on_results(results, step, times.ends_step);
       output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
 
-      if (!step.direct) {
-        easy_in_row = iterations <= controls.easy_iterations ? easy_in_row + 1 : 0;
-        if (easy_in_row >= 2) {
-          dt = std::min(dt * controls.growth_factor, max_dt);
-          easy_in_row = 0;
-        }
-      }
       ++run_increments_;
-      const bool last_in_step = step_time >= period * (1 - 1e-12);
-      if (!last_in_step) {  // the end of the step is saved after the loop
-        if (step.restart_frequency > 0 && increment % step.restart_frequency == 0) save_restart(false);
+      if (!times.ends_step) {  // the end of the step is saved after the loop
+        if (step.restart_frequency > 0 && clock.increment() % step.restart_frequency == 0) save_restart(false);
         if (options_.stop_after_increments > 0 && run_increments_ >= options_.stop_after_increments) {
           summary.message = "stopped after " + std::to_string(run_increments_) + " increment(s) as requested";
           return false;
@@ -468,18 +436,10 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                                                 "open: let it start touching (a gap of 0, to within "
                                                 "round-off, counts as closed), close initial gaps with ADJUST= on *CONTACT PAIR, or "
                                                 "move it into contact with a prescribed displacement first"))));
-    if (step.direct)
-      return stop(outcome.message + " with fixed increments (*STATIC, DIRECT)" + non_convergence_hint(disc));
-    if (attempt > controls.max_cutbacks)
-      return stop(outcome.message + " after " + std::to_string(controls.max_cutbacks) + " cut-backs" +
-                  non_convergence_hint(disc));
-    dt *= controls.cutback_factor;
-    easy_in_row = 0;
-    ++attempt;
-    if (dt < min_dt * (1 - 1e-12))
-      return stop(outcome.message + "; the increment would fall below the minimum " + format_time(min_dt) +
-                  non_convergence_hint(disc));
-    observer_.on_message("cut back to increment " + format_time(dt) + ": " + outcome.message);
+    const IncrementController::CutBack cut = clock.cut_back();
+    if (cut != IncrementController::CutBack::Retry)
+      return stop(outcome.message + clock.stop_reason(cut, "*STATIC") + non_convergence_hint(disc));
+    observer_.on_message("cut back to increment " + format_time(clock.dt()) + ": " + outcome.message);
   }
 
   // Remember the load magnitudes at the end of the step.
