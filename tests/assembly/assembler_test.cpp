@@ -19,6 +19,8 @@ class Spring final : public Contribution {
     if (need_tangent) out.tangent << k_, -k_, -k_, k_;
   }
   std::string describe() const override { return "spring"; }
+  bool symmetric_tangent(bool) const override { return true; }
+  bool linear_in_u(bool) const override { return true; }
 
  private:
   std::vector<int> dofs_;
@@ -77,6 +79,8 @@ class DenseBlock final : public Contribution {
     if (need_tangent) out.tangent = k_;
   }
   std::string describe() const override { return "dense block"; }
+  bool symmetric_tangent(bool) const override { return false; }  // k_ is not symmetric
+  bool linear_in_u(bool) const override { return true; }
   const Eigen::MatrixXd& matrix() const { return k_; }
 
  private:
@@ -140,6 +144,8 @@ TEST(Assembler, PropagatesContributionFailure) {
     std::span<const int> dofs() const override { return dofs_; }
     void evaluate(const EvaluationState&, LocalSystem&, bool) const override { throw std::runtime_error("boom"); }
     std::string describe() const override { return "broken"; }
+    bool symmetric_tangent(bool) const override { return false; }
+    bool linear_in_u(bool) const override { return false; }
     std::vector<int> dofs_{0};
   } broken;
   Assembler assembler({&broken}, EquationMap(std::vector<bool>(1, false)));
@@ -167,6 +173,8 @@ class Rewiring final : public Contribution {
     return true;
   }
   std::string describe() const override { return "rewiring spring"; }
+  bool symmetric_tangent(bool) const override { return true; }
+  bool linear_in_u(bool) const override { return false; }  // its connectivity changes
 
  private:
   std::vector<int> dofs_;

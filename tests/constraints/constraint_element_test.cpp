@@ -106,6 +106,37 @@ TEST(ConstraintElement, TangentMatchesFiniteDifferencesForEveryEnforcement) {
   }
 }
 
+TEST(ConstraintElement, DeclaredSymmetryAndLinearityHoldAtRandomStates) {
+  // What the element declares (StepSystem picks the factorization from it)
+  // is checked on its tangent: symmetric where it says so, and the same
+  // matrix at different states where it says it is linear in u.
+  std::mt19937 rng(5);
+  const std::vector<Enforcement> methods = {{Enforcement::Method::Lagrange, 0.0},
+                                            {Enforcement::Method::Lagrange, 0.1},
+                                            {Enforcement::Method::Penalty, 0, 50.0},
+                                            {Enforcement::Method::Augmented, 0, 50.0, 1e-14}};
+  for (int which = 0; which < 3; ++which)
+    for (const auto& e : methods) {
+      auto f = make_function(which);
+      const int m = f->n_equations();
+      const ConstraintElement element(std::move(f), e, kDofs, "c", {});
+      EXPECT_TRUE(element.symmetric_tangent(false));
+      EXPECT_EQ(element.linear_in_u(true), which == 0) << "function " << which;
+      const auto n = static_cast<Eigen::Index>(element.dofs().size());
+      LocalSystem a, b;
+      a.reset(n), b.reset(n);
+      const Eigen::VectorXd ua = random_vector(kDofs + m, rng, 0.3), ub = random_vector(kDofs + m, rng, 0.3);
+      element.evaluate(EvaluationState{ua, ua}, a, true);
+      element.evaluate(EvaluationState{ub, ub}, b, true);
+      EXPECT_LT((a.tangent - a.tangent.transpose()).norm(), 1e-12 * a.tangent.norm()) << "function " << which;
+      const double change = (a.tangent - b.tangent).norm() / a.tangent.norm();
+      if (element.linear_in_u(false))
+        EXPECT_EQ(change, 0.0) << to_string(e.method);
+      else
+        EXPECT_GT(change, 1e-6) << "function " << which << " " << to_string(e.method);
+    }
+}
+
 TEST(ConstraintElement, SeedEqualityExample) {
   // u_a - u_b = 0 with multiplier: r = [lambda, -lambda, u_a - u_b - eps lambda],
   // K = [[0, 0, 1], [0, 0, -1], [1, -1, -eps]] (seed, page 3, with our sign convention r = -seed r).

@@ -212,3 +212,13 @@ TEST(UserConstraint, ExampleRejectsBadProperties) {
   const std::string what = error_of([&] { bad.evaluate(EvaluationState{u, u}, s, true); });
   EXPECT_NE(what.find("must be 1 or 2"), std::string::npos) << what;
 }
+
+TEST(UserConstraint, DeclaresItsTangentNeitherSymmetricNorLinear) {
+  // The routine's tangent is its own: tether vouches for neither.
+  Fixture fx;
+  const UserConstraintElement user = fx.example(1, 0.0);
+  for (bool nlgeom : {false, true}) {
+    EXPECT_FALSE(user.symmetric_tangent(nlgeom));
+    EXPECT_FALSE(user.linear_in_u(nlgeom));
+  }
+}

@@ -381,3 +381,15 @@ TEST(UserMpc, ExampleDeckProblemSolvedByNewtonMatchesTheExactAnswer) {
   EXPECT_NEAR(u[rot_first + 1], -q_load, 1e-10);
   EXPECT_NEAR(u[link_first], -p_load - q_load * c.x() * b.x() / (length * length), 1e-10);
 }
+
+TEST(UserMpc, ElementDeclaresANonlinearTangentThatIsNotVouchedSymmetric) {
+  // The Hessians are symmetrised central differences, but user MPCs are
+  // solved as unsymmetric (LU), as they always were: declared so.
+  Fixture fx;
+  const int first = fx.dofs.add_multipliers(1, "LINK-MPC");
+  const ConstraintElement element(fx.link(1, 2), {Enforcement::Method::Lagrange, 0.0}, first, "LINK-MPC", {1, 2});
+  for (bool nlgeom : {false, true}) {
+    EXPECT_FALSE(element.symmetric_tangent(nlgeom));
+    EXPECT_FALSE(element.linear_in_u(nlgeom));
+  }
+}

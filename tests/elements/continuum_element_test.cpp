@@ -73,6 +73,28 @@ TEST(ContinuumElement, ResidualIsEnergyGradientAndTangentMatchesFiniteDifference
   EXPECT_EQ(checked, 15 * 2 * 2 * 3);
 }
 
+TEST(ContinuumElement, DeclaredSymmetryAndLinearityHoldOnTheTangent) {
+  // What the element declares (StepSystem picks the factorization from it):
+  // a symmetric tangent, the same at every state under small strain only.
+  const auto materials = test_materials();
+  for (const ElementType& type : supported_types())
+    for (const auto& material : materials)
+      for (bool nlgeom : {false, true}) {
+        SingleElement se(type, *material);
+        const ContinuumElement& e = *se.element;
+        const std::string what = e.describe() + " " + material->describe() + (nlgeom ? " NLGEOM" : " small");
+        const LocalSystem a = evaluate_at(e, random_vector(se.dofs.n_dofs(), 0.1, 4), nlgeom);
+        const LocalSystem b = evaluate_at(e, random_vector(se.dofs.n_dofs(), 0.1, 5), nlgeom);
+        EXPECT_TRUE(e.symmetric_tangent(nlgeom)) << what;
+        EXPECT_LT(max_abs(a.tangent - a.tangent.transpose()), 1e-10 * max_abs(a.tangent)) << what;
+        EXPECT_EQ(e.linear_in_u(nlgeom), !nlgeom) << what;
+        if (nlgeom)
+          EXPECT_GT(max_abs(a.tangent - b.tangent), 1e-6 * max_abs(a.tangent)) << what;
+        else
+          EXPECT_EQ(max_abs(a.tangent - b.tangent), 0.0) << what;
+      }
+}
+
 TEST(ContinuumElement, RigidBodyMotionGivesZeroStressAndResidual) {
   const LinearElastic steel(210.0, 0.3);
   const NeoHooke rubber(40.0, 0.02);

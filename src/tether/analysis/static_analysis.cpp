@@ -1,40 +1,17 @@
 #include "tether/analysis/static_analysis.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdint>
-#include <cmath>
-#include <sstream>
 
 #include "tether/analysis/amplitude.hpp"
-#include "tether/analysis/constraint_checks.hpp"
-#include "tether/analysis/contact_builder.hpp"
-#include "tether/analysis/increment_problem.hpp"
-#include "tether/analysis/newton.hpp"
-#include "tether/analysis/restart.hpp"
-#include "tether/analysis/results_builder.hpp"
-#include "tether/analysis/step_loads.hpp"
-#include "tether/assembly/assembler.hpp"
+#include "tether/analysis/increment_controller.hpp"
+#include "tether/analysis/static_procedure.hpp"
+#include "tether/analysis/step_system.hpp"
 #include "tether/core/error.hpp"
 #include "tether/solvers/condensed_solver.hpp"
 
 namespace tether {
 
 namespace {
-
-constexpr int kMaxAcceptancePasses = 50;
-/// Condensation onto the contact equations (CondensedSolver) only while the
-/// dense interface system stays small (its LU costs (2/3)|I|³ per iteration)
-/// and a small part of the whole.
-constexpr int kMaxCondensedEquations = 3000;
-constexpr int kMinCondensationRatio = 20;
-
-std::string format_time(double t) {
-  std::ostringstream s;
-  s.precision(6);
-  s << t;
-  return s.str();
-}
 
 /// For a step that stopped without convergence: a known cause worth naming.
 /// Coulomb friction over a faceted (unsmoothed, linear, several faces)
@@ -55,6 +32,79 @@ std::string non_convergence_hint(const Discretization& disc) {
   }
   return "";
 }
+
+/// Why a matrix singular at the first iteration of an attempt stops the step:
+/// a redundant constraint, or a body the model does not restrain.
+std::string singular_explanation(const IncrementOutcome& outcome, const Discretization& disc) {
+  return outcome.message +
+         (outcome.singular_multiplier
+              ? " — this constraint is redundant or conflicts with others: it repeats other constraints "
+                "or *BOUNDARY conditions, or its gradient vanishes on the free dofs; remove it, or "
+                "regularise it with EPSILON"
+              : " — the model is not restrained there (a rigid-body mode, or a dof that no element "
+                "or constraint stiffens); add *BOUNDARY conditions or check the connectivity" +
+                    (disc.contact_pairs().empty()
+                         ? std::string()
+                         : std::string("; a body held only by contact floats while its contact is "
+                                       "open: let it start touching (a gap of 0, to within "
+                                       "round-off, counts as closed), close initial gaps with ADJUST= on *CONTACT PAIR, or "
+                                       "move it into contact with a prescribed displacement first")));
+}
+
+/// The procedure of a step. Every step is *STATIC so far (the reader refuses
+/// the other procedures); dynamic procedures will be chosen here.
+std::unique_ptr<Procedure> make_procedure(StepSystem& system, AnalysisObserver& observer,
+                                          const AnalysisOptions& options) {
+  return std::make_unique<StaticProcedure>(system, observer, options.stream_element_results);
+}
+
+/// At every exit of a step (completed, stopped, or a thrown error): adds the
+/// step's timing to the summary and says how the linear solver went (factors
+/// kept on disk; the condensed solver's statistics).
+class StepEndReport {
+ public:
+  StepEndReport(AnalysisSummary& summary, const Procedure& procedure, const StepSystem& system,
+                AnalysisObserver& observer, double memory_budget_mb, int step)
+      : summary_(summary), procedure_(procedure), system_(system), observer_(observer),
+        memory_budget_mb_(memory_budget_mb), step_(step) {}
+  StepEndReport(const StepEndReport&) = delete;
+  StepEndReport& operator=(const StepEndReport&) = delete;
+  ~StepEndReport() {
+    const SolveTiming t = procedure_.timing();
+    SolveTiming& s = summary_.timing;
+    s.contact_search += t.contact_search, s.assembly += t.assembly, s.analyse += t.analyse;
+    s.factorize += t.factorize, s.solve += t.solve, s.factorizations += t.factorizations;
+    s.output += t.output;
+    const CondensedSolver* condensed = system_.condensed();
+    const LinearSolver& solver = system_.solver();
+    if (!condensed && solver.out_of_core_factorizations() > 0)
+      observer_.on_message("step " + std::to_string(step_) + ": the factors of " +
+                           std::to_string(solver.out_of_core_factorizations()) + " of " +
+                           std::to_string(t.factorizations) +
+                           " factorization(s) were kept on disk in the temporary directory (memory budget " +
+                           std::to_string(static_cast<long long>(memory_budget_mb_)) + " MB)");
+    if (!condensed || t.factorizations == 0) return;
+    const CondensationStatistics& c = condensed->statistics();
+    s.sparse_factorizations += c.sparse_factorizations;
+    observer_.on_message("step " + std::to_string(step_) + ": linear solver condensed onto " +
+                         std::to_string(c.interface_equations) + " contact equations: " +
+                         std::to_string(c.sparse_factorizations) + " sparse factorization(s), " +
+                         std::to_string(c.reuses) + " reuse(s), " + std::to_string(c.fallbacks) +
+                         " full factorization(s); bulk factors " +
+                         std::to_string(static_cast<long long>(c.factor_entries)) + " entries, " +
+                         std::to_string(c.factor_memory_mb) + " MB" + (c.out_of_core ? " in core, the factors on disk" : "") +
+                         (c.gave_up ? " (stopped condensing: the matrix outside the contact equations changed twice in a row or is singular)"
+                                    : ""));
+  }
+
+ private:
+  AnalysisSummary& summary_;
+  const Procedure& procedure_;
+  const StepSystem& system_;
+  AnalysisObserver& observer_;
+  double memory_budget_mb_;
+  int step_;
+};
 
 }  // namespace
 
@@ -108,118 +158,9 @@ AnalysisSummary StaticAnalysis::run() {
   return summary;
 }
 
-std::vector<Contribution*> StaticAnalysis::stateful_order() const {
-  const Discretization& disc = *discretization_;
-  std::vector<Contribution*> out;
-  for (const auto& e : disc.elements()) out.push_back(e.get());
-  for (const auto& c : disc.constraints()) out.push_back(c.get());
-  for (const auto& c : disc.user_constraints()) out.push_back(c.get());
-  for (const auto& pair : disc.contact_pairs()) out.push_back(pair.get());
-  return out;
-}
-
-void StaticAnalysis::resume(const RestartState& state, const std::string& file) {
-  const SourceLocation where{file, 0};
-  const auto refuse = [&](const std::string& why) {
-    throw InputError(where, "cannot continue this deck from the restart file: " + why);
-  };
-  const int n_steps = static_cast<int>(model_.steps.size());
-  if (state.step < 1 || state.increment < 0) refuse("bad step " + std::to_string(state.step));
-  const std::vector<Contribution*> order = stateful_order();
-  const RestartFingerprint deck =
-      restart_fingerprint(model_, *discretization_, static_cast<int>(order.size()), state.step);
-  if (const std::string diff = fingerprint_differences(deck, state.fingerprint); !diff.empty())
-    refuse("it was written for another model (" + (state.deck.empty() ? std::string("?") : state.deck) + "): " + diff);
-  if (state.step > n_steps || state.fingerprint.history_steps != state.step)
-    refuse("inconsistent step " + std::to_string(state.step) + " (the deck has " + std::to_string(n_steps) + ")");
-  if (model_.restart_read && model_.restart_read->step > 0) {
-    const RestartRead& want = *model_.restart_read;
-    if (want.step != state.step || (want.increment > 0 && want.increment != state.increment))
-      throw InputError(want.where,
-                       "*RESTART, READ asks for step " + std::to_string(want.step) +
-                           (want.increment > 0 ? " increment " + std::to_string(want.increment) : std::string()) +
-                           ", but " + file + " holds step " + std::to_string(state.step) + " increment " +
-                           std::to_string(state.increment) +
-                           " (only the last state written is kept: OVERLAY); restart from that one or rerun");
-  }
-  const auto n = static_cast<std::size_t>(discretization_->dofs().n_dofs());
-  if (state.u.size() != n)
-    refuse("it holds " + std::to_string(state.u.size()) + " unknowns, the model has " + std::to_string(n));
-  if (!state.step_completed) {
-    const Step& step = model_.steps[static_cast<std::size_t>(state.step - 1)];
-    if (state.u_step_start.size() != n) refuse("the unknowns at the start of the step are missing");
-    if (!(state.dt > 0) || !std::isfinite(state.dt) || !(state.step_time >= 0) || state.step_time > step.period ||
-        state.n_averaged < 0 || state.easy_in_row < 0)
-      refuse("bad time-stepping state (step time " + format_time(state.step_time) + ", increment " +
-             format_time(state.dt) + ")");
-  }
-  for (const auto* loads : {&state.cload_end, &state.pressure_end})
-    for (const CarriedLoad& l : *loads)
-      if (l.first < 0 || l.first > INT32_MAX || l.second < 0 || l.second > INT32_MAX) refuse("bad carried load");
-
-  // Contribution states: the file must have one record for each contribution
-  // that has a history in this model, and none for others.
-  std::vector<Contribution*> expected;
-  std::vector<double> probe;
-  for (Contribution* c : order) {
-    probe.clear();
-    c->save_state(probe);
-    expected.push_back(probe.empty() ? nullptr : c);
-  }
-  std::size_t next = 0;
-  for (const ContributionState& record : state.contributions) {
-    if (record.index < 0 || record.index >= static_cast<std::int64_t>(order.size()))
-      refuse("a contribution state refers to #" + std::to_string(record.index));
-    const auto k = static_cast<std::size_t>(record.index);
-    if (k < next) refuse("contribution states out of order");
-    for (; next < k; ++next)
-      if (expected[next]) refuse("no saved state for " + expected[next]->describe());
-    if (!expected[k]) refuse("a saved state for " + order[k]->describe() + ", which has none in this deck");
-    next = k + 1;
-  }
-  for (; next < order.size(); ++next)
-    if (expected[next]) refuse("no saved state for " + expected[next]->describe());
-
-  // Everything checked: load (a contribution may still refuse its record;
-  // the ones loaded before it then get their previous state back).
-  std::vector<std::vector<double>> previous;
-  for (const ContributionState& record : state.contributions) {
-    Contribution* c = order[static_cast<std::size_t>(record.index)];
-    previous.emplace_back();
-    c->save_state(previous.back());
-    std::span<const double> in(record.values);
-    std::string error;
-    try {
-      c->load_state(in);
-      if (!in.empty()) error = std::to_string(in.size()) + " values too many in its saved state";
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-    if (!error.empty()) {
-      for (std::size_t k = 0; k < previous.size(); ++k) {
-        std::span<const double> back(previous[k]);
-        order[static_cast<std::size_t>(state.contributions[k].index)]->load_state(back);
-      }
-      refuse(c->describe() + ": " + error);
-    }
-  }
-  u_ = Eigen::Map<const Eigen::VectorXd>(state.u.data(), static_cast<Eigen::Index>(n));
-  total_time_ = state.total_time;
-  cload_end_.clear();
-  for (const CarriedLoad& l : state.cload_end)
-    cload_end_[{static_cast<int>(l.first), static_cast<int>(l.second)}] = l.value;
-  pressure_end_.clear();
-  for (const CarriedLoad& l : state.pressure_end)
-    pressure_end_[{static_cast<int>(l.first), static_cast<int>(l.second)}] = l.value;
-  resume_ = std::make_unique<RestartState>(state);
-  resume_->u.clear();
-  resume_file_ = file;
-}
-
 bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   const Step& step = model_.steps[index];
   const Discretization& disc = *discretization_;
-  const DofMap& dofs = disc.dofs();
   // A restart within this step continues its time stepping; the loads ramp
   // from the values at the step's start, as in the run that saved the state.
   std::unique_ptr<RestartState> resumed;
@@ -227,327 +168,70 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   resume_.reset();
   const Eigen::VectorXd u_step_start =
       resumed ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(resumed->u_step_start.data(), u_.size())) : u_;
-  const StepLoads loads = make_step_loads(step, dofs, u_step_start, cload_end_, pressure_end_);
-
-  // Contributions of this step: every element, then the pressure loads.
-  auto pressures = disc.make_pressures(loads.pressures);
-  std::vector<Contribution*> contributions;
-  contributions.reserve(disc.elements().size() + disc.constraints().size() + disc.user_constraints().size() +
-                        pressures.size());
-  for (const auto& e : disc.elements()) contributions.push_back(e.get());
-  for (const auto& c : disc.constraints()) contributions.push_back(c.get());
-  for (const auto& c : disc.user_constraints()) contributions.push_back(c.get());
-  for (const auto& pair : disc.contact_pairs()) {
-    contributions.push_back(pair.get());  // searches before its nodes are evaluated
-    for (Contribution* node : pair->nodes()) contributions.push_back(node);
-  }
-  std::vector<const Contribution*> load_contributions;
-  for (const auto& p : pressures) contributions.push_back(p.get()), load_contributions.push_back(p.get());
-
-  std::vector<bool> prescribed(dofs.n_dofs(), false);
-  for (const auto& [dof, value] : loads.prescribed) prescribed[dof] = true;
-  // Nodes no element or constraint uses have no dofs (as in ABAQUS): their
-  // displacements are held at zero instead of making the matrix singular.
-  std::vector<bool> used(dofs.n_dofs(), false);
-  for (const Contribution* c : contributions)
-    for (int d : c->dofs()) used[d] = true;
-  for (const auto& row : disc.elimination_rows())
-    for (const auto& term : row.terms) used[term.first] = true;
-  int unused_nodes = 0;
-  for (int node = 0; node < dofs.n_nodes(); ++node) {
-    bool any = false;
-    for (int c = 0; c < kDofsPerNode; ++c) any = any || used[dofs.displacement(node, c)];
-    if (any) continue;
-    ++unused_nodes;
-    for (int c = 0; c < kDofsPerNode; ++c) prescribed[dofs.displacement(node, c)] = true;
-  }
-  if (unused_nodes > 0 && index == 0)
-    observer_.on_message(std::to_string(unused_nodes) +
-                         " node(s) belong to no element; they get no degrees of freedom");
-  EquationMap equations(prescribed, disc.elimination_rows());
-  // With contact, the Auto solver condenses onto the contact equations
-  // (CondensedSolver) while they are few; the pattern then holds them all
-  // to all, so that re-pairing never rebuilds it.
-  std::vector<int> interface;
-  // Not under NLGEOM: the bulk changes at every iteration there, and the
-  // reserved block would only add fill to the ordinary factorization.
-  if (options_.solver == SolverKind::Auto && options_.condense_contact && !step.nlgeom &&
-      !disc.contact_pairs().empty()) {
-    interface = contact_equations(disc.contact_pairs(), dofs, equations);
-    const auto m = static_cast<int>(interface.size());
-    if (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()) interface.clear();
-  }
-  Assembler assembler(contributions, std::move(equations), interface);
-  check_constraints(disc, assembler.equations(), EvaluationState{u_, u_, 0, total_time_, 0, step.nlgeom});
-  std::unique_ptr<LinearSolver> solver = make_linear_solver(options_.solver, options_.memory_budget_mb);
-  const CondensedSolver* condensed = nullptr;
-  if (!interface.empty()) {
-    auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver), options_.memory_budget_mb);
-    condensed = c.get();
-    solver = std::move(c);
-  }
-  NewtonSolver newton(*solver, step.controls, disc.length_scale());
-  // The tangent is symmetric unless follower pressure, friction or a user
-  // routine (its Hessian comes from finite differences) makes it otherwise;
-  // the solver then picks Cholesky (positive definite) or LDLT (multipliers).
-  bool unsymmetric = step.nlgeom && !pressures.empty();
-  for (const auto& pair : disc.contact_pairs()) unsymmetric = unsymmetric || pair->mu() > 0;
-  unsymmetric = unsymmetric || !disc.user_constraints().empty();
-  for (const ConstraintData& c : model_.constraints) unsymmetric = unsymmetric || c.kind == ConstraintData::Kind::UserMpc;
-  const bool symmetric = !unsymmetric;
-  // MUMPS here is LDLT and CHOLMOD Cholesky: both read one triangle only.
-  if (unsymmetric && (options_.solver == SolverKind::Mumps || options_.solver == SolverKind::Cholmod))
-    throw ModelError(std::string("--solver ") +
-                     (options_.solver == SolverKind::Mumps ? "mumps (LDLT)" : "cholmod (Cholesky)") +
-                     " factorizes symmetric matrices only, and this step's tangent is unsymmetric (friction, "
-                     "follower pressure under NLGEOM, or a user constraint); use --solver auto or umfpack");
-
-  const double period = step.period > 0 ? step.period : 1.0;
-  const double max_dt = step.max_increment > 0 ? step.max_increment : period;
-  double dt = std::min(step.initial_increment > 0 ? step.initial_increment : period, max_dt);
-  const double min_dt = step.min_increment > 0 ? step.min_increment : std::min(1e-5 * period, dt);
-  const Controls& controls = step.controls;
-
-  Eigen::VectorXd external = Eigen::VectorXd::Zero(dofs.n_dofs());
-  double step_time = 0;
-  int increment = 0, attempt = 1, easy_in_row = 0;
-  double averaged_force = 0;
-  int n_averaged = 0;
-  double step_start_time = total_time_;
+  StepSystem system(disc, step, make_step_loads(step, disc.dofs(), u_step_start, cload_end_, pressure_end_), u_,
+                    total_time_, SolverSettings{options_.solver, options_.condense_contact, options_.memory_budget_mb},
+                    [&](const std::string& m) {
+                      if (index == 0) observer_.on_message(m);
+                    });
+  IncrementController clock(step, total_time_);
+  const std::unique_ptr<Procedure> procedure = make_procedure(system, observer_, options_);
   if (resumed) {
-    step_time = resumed->step_time;
-    step_start_time = resumed->step_start_time;
-    increment = resumed->increment;
-    dt = resumed->dt;
-    easy_in_row = resumed->easy_in_row;
-    averaged_force = resumed->averaged_force;
-    n_averaged = resumed->n_averaged;
+    clock.restore(*resumed);
+    procedure->restore(*resumed);
   }
-
-  // The state *RESTART, WRITE saves: this step's progress, or (completed) its end.
-  const auto save_restart = [&](bool completed) {
-    RestartState r;
-    r.written_by = std::string("tether ") + TETHER_VERSION;
-    r.deck = model_.deck_path;
-    const std::vector<Contribution*> order = stateful_order();
-    r.fingerprint = restart_fingerprint(model_, disc, static_cast<int>(order.size()), index + 1);
-    r.step = index + 1;
-    r.increment = increment;
-    r.step_completed = completed;
-    r.step_time = step_time;
-    r.step_start_time = step_start_time;
-    r.total_time = total_time_;
-    r.dt = dt;
-    r.easy_in_row = easy_in_row;
-    r.averaged_force = averaged_force;
-    r.n_averaged = n_averaged;
-    r.steps_completed = summary.steps + (completed ? 1 : 0);
-    r.increments = summary.increments;
-    r.iterations = summary.iterations;
-    r.cutbacks = summary.cutbacks;
-    r.u.assign(u_.data(), u_.data() + u_.size());
-    if (!completed) r.u_step_start.assign(u_step_start.data(), u_step_start.data() + u_step_start.size());
-    for (const auto& [key, value] : cload_end_) r.cload_end.push_back({key.first, key.second, value});
-    for (const auto& [key, value] : pressure_end_) r.pressure_end.push_back({key.first, key.second, value});
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      ContributionState c;
-      c.index = static_cast<std::int64_t>(k);
-      order[k]->save_state(c.values);
-      if (!c.values.empty()) r.contributions.push_back(std::move(c));
-    }
-    observer_.on_restart_state(r);
-  };
-
-  double output_seconds = 0;
-  // Adds this step's timing to the summary (at every exit of the step) and
-  // says how the condensed solver went.
-  struct TimingGuard {
-    AnalysisSummary& summary;
-    const NewtonSolver& newton;
-    const double& output;
-    const CondensedSolver* condensed;
-    const LinearSolver& solver;
-    double memory_budget_mb;
-    AnalysisObserver& observer;
-    int step;
-    ~TimingGuard() {
-      const SolveTiming& t = newton.timing();
-      SolveTiming& s = summary.timing;
-      s.contact_search += t.contact_search, s.assembly += t.assembly, s.analyse += t.analyse;
-      s.factorize += t.factorize, s.solve += t.solve, s.factorizations += t.factorizations;
-      s.output += output;
-      if (!condensed && solver.out_of_core_factorizations() > 0)
-        observer.on_message("step " + std::to_string(step) + ": the factors of " +
-                            std::to_string(solver.out_of_core_factorizations()) + " of " +
-                            std::to_string(t.factorizations) +
-                            " factorization(s) were kept on disk in the temporary directory (memory budget " +
-                            std::to_string(static_cast<long long>(memory_budget_mb)) + " MB)");
-      if (!condensed || t.factorizations == 0) return;
-      const CondensationStatistics& c = condensed->statistics();
-      s.sparse_factorizations += c.sparse_factorizations;
-      observer.on_message("step " + std::to_string(step) + ": linear solver condensed onto " +
-                          std::to_string(c.interface_equations) + " contact equations: " +
-                          std::to_string(c.sparse_factorizations) + " sparse factorization(s), " +
-                          std::to_string(c.reuses) + " reuse(s), " + std::to_string(c.fallbacks) +
-                          " full factorization(s); bulk factors " +
-                          std::to_string(static_cast<long long>(c.factor_entries)) + " entries, " +
-                          std::to_string(c.factor_memory_mb) + " MB" + (c.out_of_core ? " in core, the factors on disk" : "") +
-                          (c.gave_up ? " (stopped condensing: the matrix outside the contact equations changed twice in a row or is singular)"
-                                     : ""));
-    }
-  } timing_guard{summary, newton, output_seconds, condensed, *solver, options_.memory_budget_mb, observer_, index + 1};
-
-  auto stop = [&](const std::string& why) {
-    summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(step_time) +
+  const StepEndReport step_end(summary, *procedure, system, observer_, options_.memory_budget_mb, index + 1);
+  const auto stop = [&](const std::string& why) {
+    summary.message = "step " + std::to_string(index + 1) + " stopped at step time " + format_time(clock.step_time()) +
                       ": " + why +
                       (summary.increments > 0 ? "; the last converged increment has been written"
                                               : "; no increment converged, so there are no results");
     return false;
   };
 
-  while (step_time < period * (1 - 1e-12)) {
-    if (increment >= step.max_increments)
-      return stop("the maximum number of increments (INC=" + std::to_string(step.max_increments) + ") was reached" +
-                  non_convergence_hint(disc));
-    dt = std::min(dt, period - step_time);
-    if (period - step_time - dt < 1e-9 * period) dt = period - step_time;
-    const double t_new = step_time + dt;
-    const double total_new = step_start_time + t_new;
-
-    // Apply the state at the end of the increment.
-    const Eigen::VectorXd u_start = u_;
-    for (const auto& [dof, v] : loads.prescribed)
-      u_[dof] = step_magnitude(model_, v.amplitude, v.start, v.target, t_new, period, total_new);
-    assembler.equations().update_dependents(u_);
-    external.setZero();
-    for (const auto& [dof, v] : loads.forces)
-      external[dof] += step_magnitude(model_, v.amplitude, v.start, v.target, t_new, period, total_new);
-    for (std::size_t k = 0; k < pressures.size(); ++k) {
-      const RampedValue& v = loads.pressure_values[k];
-      pressures[k]->set_pressure(step_magnitude(model_, v.amplitude, v.start, v.target, t_new, period, total_new));
-    }
-
-    IncrementProblem problem(assembler, dofs, u_, u_start, external, load_contributions,
-                             IncrementTime{t_new, total_new, dt, step.nlgeom}, symmetric, &disc.contact_pairs());
-    NewtonOutcome outcome;
-    int iterations = 0;
-    for (int pass = 0; pass < kMaxAcceptancePasses; ++pass) {
-      outcome = newton.solve(problem, averaged_force, n_averaged,
-                             [&](int it, const IterationNorms& n) { observer_.on_iteration(it, n); });
-      iterations += outcome.iterations;
-      if (outcome.status != NewtonOutcome::Status::Converged) break;
-      bool again = false;
-      std::string iterating;
-      const EvaluationState s = problem.state();
-      try {
-        for (Contribution* c : contributions)
-          if (c->on_converged(s) == Acceptance::Iterate) {
-            if (!again) iterating = c->describe();
-            again = true;
-          }
-      } catch (const ModelError& e) {
-        outcome.status = NewtonOutcome::Status::ElementFailure;
-        outcome.message = e.what();
-        break;
-      }
-      if (!again) break;
-      observer_.on_message("converged state not accepted by " + iterating + " (augmented Lagrangian update or "
-                           "contact nodes released by a contact guard): Newton pass " + std::to_string(pass + 2));
-    }
-    summary.iterations += iterations;
-
-    IncrementReport report;
-    report.step = index + 1;
-    report.increment = increment + 1;
-    report.attempt = attempt;
-    report.iterations = iterations;
-    report.total_iterations = summary.iterations;
-    report.step_time = t_new;
-    report.total_time = total_new;
-    report.increment_size = dt;
-    report.residual = outcome.force_residual;
-    report.converged = outcome.status == NewtonOutcome::Status::Converged;
-    report.note = outcome.message;
-    observer_.on_increment(report);
-
-    if (report.converged) {
-      const EvaluationState s = problem.state();
-      const auto output_start = std::chrono::steady_clock::now();
-      // Results first: they describe the increment (contact slip since the
-      // last converged state), which commit() then makes history.
-      // Streamed element values are computed from s.u during on_results,
-      // after commit(): elements keep no history, so they are the same.
-      const DiscretizationPoints point_source(disc, s);
-      IncrementResults results = build_results(disc, s, problem.full_residual(), assembler.equations(),
-                                               options_.stream_element_results ? &point_source : nullptr);
-      for (Contribution* c : contributions) c->commit(s);
-      step_time = t_new;
-      total_time_ = total_new;
-      ++increment;
-      ++summary.increments;
-      averaged_force = (averaged_force * n_averaged + outcome.force_scale) / (n_averaged + 1);
-      ++n_averaged;
-      attempt = 1;
-
-      results.step = index + 1;
-      results.increment = increment;
-      results.step_time = step_time;
-      results.total_time = total_time_;
-      results.iterations = iterations;
-      observer_.on_results(results, step, step_time >= period * (1 - 1e-12));
-      output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
-
-      if (!step.direct) {
-        easy_in_row = iterations <= controls.easy_iterations ? easy_in_row + 1 : 0;
-        if (easy_in_row >= 2) {
-          dt = std::min(dt * controls.growth_factor, max_dt);
-          easy_in_row = 0;
-        }
-      }
-      ++run_increments_;
-      const bool last_in_step = step_time >= period * (1 - 1e-12);
-      if (!last_in_step) {  // the end of the step is saved after the loop
-        if (step.restart_frequency > 0 && increment % step.restart_frequency == 0) save_restart(false);
-        if (options_.stop_after_increments > 0 && run_increments_ >= options_.stop_after_increments) {
-          summary.message = "stopped after " + std::to_string(run_increments_) + " increment(s) as requested";
-          return false;
-        }
-      }
+  while (!clock.finished()) {
+    if (clock.out_of_increments())
+      return stop("the maximum number of increments (INC=" + std::to_string(clock.max_increments()) +
+                  ") was reached" + non_convergence_hint(disc));
+    const IncrementAttempt attempt{index + 1, clock.increment() + 1, clock.attempt(), clock.next_attempt(),
+                                   summary.iterations};
+    const IncrementOutcome outcome = procedure->solve_increment(attempt, u_);
+    summary.iterations += outcome.iterations;
+    if (outcome.converged) {
+      if (!after_converged(index, attempt, outcome, summary, clock, *procedure, u_step_start)) return false;
       continue;
     }
-
-    // Failed attempt: restore the converged state.
-    u_ = u_start;
     ++summary.cutbacks;
-    if (outcome.status == NewtonOutcome::Status::SingularMatrix && outcome.singular_at_start)
-      return stop(outcome.message +
-                  (outcome.singular_multiplier
-                       ? " — this constraint is redundant or conflicts with others: it repeats other constraints "
-                         "or *BOUNDARY conditions, or its gradient vanishes on the free dofs; remove it, or "
-                         "regularise it with EPSILON"
-                       : " — the model is not restrained there (a rigid-body mode, or a dof that no element "
-                         "or constraint stiffens); add *BOUNDARY conditions or check the connectivity" +
-                             (disc.contact_pairs().empty()
-                                  ? std::string()
-                                  : std::string("; a body held only by contact floats while its contact is "
-                                                "open: let it start touching (a gap of 0, to within "
-                                                "round-off, counts as closed), close initial gaps with ADJUST= on *CONTACT PAIR, or "
-                                                "move it into contact with a prescribed displacement first"))));
-    if (step.direct)
-      return stop(outcome.message + " with fixed increments (*STATIC, DIRECT)" + non_convergence_hint(disc));
-    if (attempt > controls.max_cutbacks)
-      return stop(outcome.message + " after " + std::to_string(controls.max_cutbacks) + " cut-backs" +
-                  non_convergence_hint(disc));
-    dt *= controls.cutback_factor;
-    easy_in_row = 0;
-    ++attempt;
-    if (dt < min_dt * (1 - 1e-12))
-      return stop(outcome.message + "; the increment would fall below the minimum " + format_time(min_dt) +
-                  non_convergence_hint(disc));
-    observer_.on_message("cut back to increment " + format_time(dt) + ": " + outcome.message);
+    if (outcome.singular_at_start) return stop(singular_explanation(outcome, disc));
+    const IncrementController::CutBack cut = clock.cut_back();
+    if (cut != IncrementController::CutBack::Retry)
+      return stop(outcome.message + clock.stop_reason(cut, procedure->keyword()) + non_convergence_hint(disc));
+    observer_.on_message("cut back to increment " + format_time(clock.dt()) + ": " + outcome.message);
   }
+  carry_loads(system.loads(), clock.period());
+  if (step.restart_frequency > 0)
+    observer_.on_restart_state(restart_state(index, true, summary, clock, *procedure, u_step_start));
+  return true;
+}
 
-  // Remember the load magnitudes at the end of the step.
+bool StaticAnalysis::after_converged(int index, const IncrementAttempt& attempt, const IncrementOutcome& outcome,
+                                     AnalysisSummary& summary, IncrementController& clock, const Procedure& procedure,
+                                     const Eigen::VectorXd& u_step_start) {
+  clock.accept(attempt.time, outcome.iterations);
+  total_time_ = attempt.time.total_time;
+  ++summary.increments;
+  ++run_increments_;
+  if (attempt.time.ends_step) return true;  // the end of the step is saved after the step
+  const Step& step = model_.steps[index];
+  if (step.restart_frequency > 0 && clock.increment() % step.restart_frequency == 0)
+    observer_.on_restart_state(restart_state(index, false, summary, clock, procedure, u_step_start));
+  if (options_.stop_after_increments > 0 && run_increments_ >= options_.stop_after_increments) {
+    summary.message = "stopped after " + std::to_string(run_increments_) + " increment(s) as requested";
+    return false;
+  }
+  return true;
+}
+
+void StaticAnalysis::carry_loads(const StepLoads& loads, double period) {
   cload_end_.clear();
   for (std::size_t k = 0; k < loads.forces.size(); ++k) {
     const RampedValue& v = loads.forces[k].second;
@@ -559,8 +243,6 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     pressure_end_[{loads.pressures[k].face.element, loads.pressures[k].face.face}] =
         step_magnitude(model_, v.amplitude, v.start, v.target, period, period, total_time_);
   }
-  if (step.restart_frequency > 0) save_restart(true);
-  return true;
 }
 
 }  // namespace tether

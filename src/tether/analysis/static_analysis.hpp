@@ -1,12 +1,15 @@
 #pragma once
-/// \file The step loop of a static analysis: increments with automatic cut-back and growth.
+/// \file The step loop of an analysis: increments with automatic cut-back and growth.
 ///
-/// For every `*STEP` the prescribed displacements and loads are ramped (or
-/// scaled by their amplitudes) over the step period; each increment is solved
-/// by Newton. A failed attempt is cut back by the controls' factor; growth
-/// follows two easy increments. When the increment would fall below the minimum,
-/// or the model is singular, the analysis stops: the last converged increment
-/// has already been reported and the summary says why it stopped.
+/// For every `*STEP` the driver builds the step's StepSystem (contributions,
+/// equations, assembler, solver), its IncrementController (time stepping)
+/// and its Procedure (what an increment does: a `*STATIC` step solves
+/// equilibrium by Newton, with the prescribed displacements and loads ramped
+/// or scaled by their amplitudes over the step period). A failed attempt is
+/// cut back by the controls' factor; growth follows two easy increments. When
+/// the increment would fall below the minimum, or the model is singular, the
+/// analysis stops: the last converged increment has already been reported and
+/// the summary says why it stopped. See docs/theory/procedures.md.
 
 #include <Eigen/Core>
 #include <map>
@@ -52,6 +55,12 @@ struct AnalysisSummary {
   SolveTiming timing;       ///< where the time went (all steps)
 };
 
+class IncrementController;
+class Procedure;
+struct IncrementAttempt;
+struct IncrementOutcome;
+struct StepLoads;
+
 class StaticAnalysis {
  public:
   /// The model must outlive the analysis. Throws ModelError if it cannot be discretized.
@@ -77,9 +86,21 @@ class StaticAnalysis {
   [[nodiscard]] const Discretization& discretization() const { return *discretization_; }
 
  private:
+  /// Runs step `index` (0-based); false when the analysis stops there (summary.message says why).
   bool run_step(int index, AnalysisSummary& summary);
+  /// After a converged increment: the counters, a restart point, a requested
+  /// stop (false).
+  bool after_converged(int index, const IncrementAttempt& attempt, const IncrementOutcome& outcome,
+                       AnalysisSummary& summary, IncrementController& clock, const Procedure& procedure,
+                       const Eigen::VectorXd& u_step_start);
+  /// Remembers the step's load magnitudes at its end (the next step ramps from them).
+  void carry_loads(const StepLoads& loads, double period);
   /// Contributions with a history, in a fixed order (restart records refer to it).
   [[nodiscard]] std::vector<Contribution*> stateful_order() const;
+  /// The state a restart point of step `index` saves: its progress, or (completed) its end.
+  [[nodiscard]] RestartState restart_state(int index, bool completed, const AnalysisSummary& summary,
+                                           const IncrementController& clock, const Procedure& procedure,
+                                           const Eigen::VectorXd& u_step_start) const;
 
   const Model& model_;
   AnalysisObserver& observer_;

@@ -58,6 +58,20 @@ class Contribution {
   /// When `need_tangent` is false the tangent may be left untouched.
   virtual void evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const = 0;
 
+  /// True when the tangent evaluate() returns may be taken as symmetric at
+  /// every state of a step with this NLGEOM setting: the step's solver may
+  /// then factorize it by Cholesky or LDLT, which read one triangle only.
+  /// False when it is unsymmetric or tether cannot vouch for it (a user
+  /// routine's own tangent).
+  [[nodiscard]] virtual bool symmetric_tangent(bool nlgeom) const = 0;
+
+  /// True when, in a step with this NLGEOM setting, the residual is affine in
+  /// u with a tangent that is the same matrix over the same dofs at every
+  /// state of the step (the residual may still change with time, e.g. a ramped
+  /// load, or with history updated between Newton passes, e.g. an Uzawa
+  /// update). Such contributions need to be assembled and factorized only once per step.
+  [[nodiscard]] virtual bool linear_in_u(bool nlgeom) const = 0;
+
   /// Called before each Newton iteration; may change dofs() (contact re-pairing).
   /// Returns true when dofs() changed so the assembler rebuilds its pattern.
   virtual bool update_connectivity(const EvaluationState& /*state*/) { return false; }

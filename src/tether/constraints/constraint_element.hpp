@@ -38,6 +38,12 @@ class ConstraintElement final : public Contribution {
   void evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const override;
   Acceptance on_converged(const EvaluationState& state) override;
   [[nodiscard]] std::string describe() const override { return name_; }
+  /// Symmetric when the function's Hessians are (every enforcement keeps the
+  /// coupling blocks G and G^T, or rho G^T G, symmetric).
+  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return function_->symmetric_hessian(); }
+  /// Linear when the function is (a constant gradient: the tangent of every
+  /// enforcement is then constant; an Uzawa update changes the residual only).
+  [[nodiscard]] bool linear_in_u(bool /*nlgeom*/) const override { return function_->linear(); }
   /// Augmented: the Uzawa multipliers and the update count (nothing otherwise).
   void save_state(std::vector<double>& out) const override;
   void load_state(std::span<const double>& in) override;

@@ -53,6 +53,11 @@ class ConstraintFunction {
   /// True when f is affine in u with a constant gradient (elimination allowed).
   [[nodiscard]] virtual bool linear() const { return false; }
 
+  /// True when the Hessians evaluate() returns may be taken as symmetric
+  /// (exact second derivatives are), so that a constraint element built on
+  /// the function has a symmetric tangent.
+  [[nodiscard]] virtual bool symmetric_hessian() const { return true; }
+
   /// Short description for messages, e.g. "*MPC LINK 3-7".
   [[nodiscard]] virtual std::string describe() const = 0;
 };

@@ -50,6 +50,11 @@ class UserConstraintElement final : public Contribution {
   void evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const override;
 
   [[nodiscard]] std::string describe() const override { return name_; }
+  /// false: the routine's tangent is its own (often finite differences), and
+  /// tether cannot vouch for its symmetry.
+  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return false; }
+  /// false: tether cannot know how the routine's residual depends on u.
+  [[nodiscard]] bool linear_in_u(bool /*nlgeom*/) const override { return false; }
 
   /// For output: value = the multipliers lambda_k from the state; constraint =
   /// the routine's multiplier rows of the residual (f_k - eps*lambda_k in the

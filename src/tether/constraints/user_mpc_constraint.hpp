@@ -93,6 +93,12 @@ class UserMpcConstraint final : public ConstraintFunction {
   /// false: tether cannot know (even with numerical_hessian off, the gradient
   /// may vary), so the constraint is never eliminated as a linear one.
   [[nodiscard]] bool linear() const override { return false; }
+  /// false, conservatively: the Hessians are central differences of the
+  /// routine's A, symmetrised in evaluate(), so the tangent is in fact
+  /// symmetric; but decks with user MPCs have always been solved as
+  /// unsymmetric (LU), and declaring them symmetric would change the
+  /// factorization (and the results in their last digits).
+  [[nodiscard]] bool symmetric_hessian() const override { return false; }
   [[nodiscard]] std::string describe() const override { return name_; }
 
   /// Global dofs of the dependent dof(s), one per equation.

@@ -165,6 +165,8 @@ std::string ContactNode::describe() const {
   return pair_.describe() + ", slave node " + std::to_string(pair_.slave(slave_).node);
 }
 
+bool ContactNode::symmetric_tangent(bool /*nlgeom*/) const { return pair_.mu() <= 0; }
+
 ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSystem* out, bool need_tangent) const {
   const ContactSlave& s = pair_.slave(slave_);
   const ContactPairSetup& setup = pair_.setup();

@@ -57,6 +57,11 @@ class ContactNode final : public Contribution {
   [[nodiscard]] std::span<const int> dofs() const override;
   void evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const override;
   [[nodiscard]] std::string describe() const override;
+  /// Symmetric without friction (the normal part derives from a potential);
+  /// Coulomb friction makes it unsymmetric.
+  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override;
+  /// false: the active set and the pairing change with u.
+  [[nodiscard]] bool linear_in_u(bool /*nlgeom*/) const override { return false; }
 
   /// Status at the state (as the residual sees it).
   [[nodiscard]] ContactStatus status(const EvaluationState& state) const { return branch(state).status; }

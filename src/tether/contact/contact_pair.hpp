@@ -133,6 +133,11 @@ class ContactPair final : public Contribution {
   Acceptance on_converged(const EvaluationState& state) override;
   void commit(const EvaluationState& state) override;
   [[nodiscard]] std::string describe() const override { return setup_.name; }
+  /// The pair assembles nothing itself; it declares what its nodes do
+  /// (unsymmetric with friction).
+  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return mu() <= 0; }
+  /// false: it re-pairs its nodes as u changes.
+  [[nodiscard]] bool linear_in_u(bool /*nlgeom*/) const override { return false; }
   /// Restart: per slave the pairing, status and committed history (segment,
   /// ξ, tangential force, total slip, dissipation, Uzawa λ̄), and whether the
   /// pair has searched yet. Loading re-pairs the slaves (their dof lists).

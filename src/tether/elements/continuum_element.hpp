@@ -45,6 +45,14 @@ class ContinuumElement final : public Contribution {
 
   /// "element 12 (CPE4)".
   [[nodiscard]] std::string describe() const override;
+  /// true: every ConstitutiveModel is hyperelastic (a symmetric material
+  /// tangent D), and the geometric stiffness under NLGEOM is symmetric.
+  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return true; }
+  /// Small strain: every ConstitutiveModel's small-strain law is linear
+  /// (LinearElastic, and NeoHooke's initial elasticity), so the element is
+  /// linear; under NLGEOM it is not. A material with history (plasticity)
+  /// will have to be asked instead.
+  [[nodiscard]] bool linear_in_u(bool nlgeom) const override { return !nlgeom; }
 
   [[nodiscard]] int label() const { return label_; }
   [[nodiscard]] const ElementType& type() const { return type_; }

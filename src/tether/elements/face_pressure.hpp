@@ -50,6 +50,10 @@ class FacePressure final : public Contribution {
   void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override;
   /// "pressure on element 12 (CPE4) face S2".
   [[nodiscard]] std::string describe() const override;
+  /// Under NLGEOM the load stiffness is unsymmetric in general; otherwise the tangent is zero.
+  [[nodiscard]] bool symmetric_tangent(bool nlgeom) const override { return !nlgeom; }
+  /// Without NLGEOM the load acts on the reference face: independent of u.
+  [[nodiscard]] bool linear_in_u(bool nlgeom) const override { return !nlgeom; }
 
   /// Mesh node indices of the face: two corners, then the mid-side node if any.
   [[nodiscard]] const std::vector<int>& nodes() const { return nodes_; }

@@ -1,0 +1,58 @@
+#pragma once
+/// \file The increment of a `*STATIC` step: equilibrium at the end of the
+/// increment by Newton's method.
+///
+/// An attempt sets the prescribed values, nodal forces and pressures to their
+/// magnitudes at the end of the increment, solves the IncrementProblem by
+/// Newton, and asks every contribution whether it accepts the converged state
+/// (augmented-Lagrangian updates and contact guards may ask for another
+/// Newton pass). A converged increment's results are built, then the
+/// contributions commit their history. Newton's convergence test uses the
+/// time average of the force scale over the step's increments, which the
+/// procedure keeps (and saves for a restart).
+
+#include <Eigen/Core>
+
+#include "tether/analysis/analysis_observer.hpp"
+#include "tether/analysis/increment_problem.hpp"
+#include "tether/analysis/procedure.hpp"
+#include "tether/analysis/step_system.hpp"
+
+namespace tether {
+
+class StaticProcedure final : public Procedure {
+ public:
+  /// `system` and `observer` must outlive the procedure. `stream_results`:
+  /// AnalysisOptions::stream_element_results.
+  StaticProcedure(StepSystem& system, AnalysisObserver& observer, bool stream_results);
+
+  [[nodiscard]] std::string keyword() const override { return "*STATIC"; }
+  IncrementOutcome solve_increment(const IncrementAttempt& attempt, Eigen::VectorXd& u) override;
+  [[nodiscard]] SolveTiming timing() const override;
+  /// The time-averaged force scale and the number of increments in it.
+  void save(RestartState& state) const override;
+  void restore(const RestartState& state) override;
+
+ private:
+  /// Sets the prescribed values in `u` (and the dependent dofs), the nodal
+  /// forces and the pressures to their magnitudes at the end of the increment.
+  void apply_loads(const IncrementTimes& t, Eigen::VectorXd& u);
+  /// Newton, then the contributions' acceptance of its solution: another
+  /// pass while one asks for it (at most kMaxAcceptancePasses). Adds the
+  /// iterations of every pass to `iterations`.
+  NewtonOutcome solve_with_acceptance(IncrementProblem& problem, int& iterations);
+  /// A converged attempt: results, commit of the history, the force average, on_results.
+  void complete(const IncrementAttempt& attempt, const IncrementProblem& problem, int iterations,
+                double force_scale);
+
+  StepSystem& system_;
+  AnalysisObserver& observer_;
+  bool stream_results_;
+  NewtonSolver newton_;
+  Eigen::VectorXd external_;  ///< nodal forces at the end of the increment, over all dofs
+  double averaged_force_ = 0;  ///< time average of Newton's force scale q over the step's increments
+  int n_averaged_ = 0;
+  double output_seconds_ = 0;  ///< results and observer (on_results) in this step
+};
+
+}  // namespace tether

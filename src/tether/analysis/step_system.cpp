@@ -1,0 +1,117 @@
+#include "tether/analysis/step_system.hpp"
+
+#include <algorithm>
+
+#include "tether/analysis/constraint_checks.hpp"
+#include "tether/analysis/contact_builder.hpp"
+#include "tether/core/error.hpp"
+#include "tether/solvers/condensed_solver.hpp"
+
+namespace tether {
+
+namespace {
+
+/// Condensation onto the contact equations (CondensedSolver) only while the
+/// dense interface system stays small (its LU costs (2/3)|I|³ per iteration)
+/// and a small part of the whole.
+constexpr int kMaxCondensedEquations = 3000;
+constexpr int kMinCondensationRatio = 20;
+
+}  // namespace
+
+StepSystem::StepSystem(const Discretization& discretization, const Step& step, StepLoads loads,
+                       const Eigen::VectorXd& u, double total_time, const SolverSettings& settings,
+                       const std::function<void(const std::string&)>& message)
+    : discretization_(discretization), step_(step), settings_(settings), loads_(std::move(loads)) {
+  pressures_ = discretization_.make_pressures(loads_.pressures);
+  gather_contributions();
+  const std::vector<bool> prescribed = prescribed_dofs();
+  if (unused_nodes_ > 0 && message)
+    message(std::to_string(unused_nodes_) + " node(s) belong to no element; they get no degrees of freedom");
+  EquationMap equations(prescribed, discretization_.elimination_rows());
+  std::vector<int> interface = condensation_interface(equations);
+  assembler_ = std::make_unique<Assembler>(contributions_, std::move(equations), interface);
+  check_constraints(discretization_, assembler_->equations(), EvaluationState{u, u, 0, total_time, 0, step_.nlgeom});
+  make_solver(std::move(interface));
+
+  // Cholesky (positive definite) or LDLT (multipliers) when every
+  // contribution vouches for a symmetric tangent; LU otherwise.
+  symmetric_ = std::all_of(contributions_.begin(), contributions_.end(),
+                           [&](const Contribution* c) { return c->symmetric_tangent(step_.nlgeom); });
+  // MUMPS here is LDLT and CHOLMOD Cholesky: both read one triangle only.
+  if (!symmetric_ && (settings_.solver == SolverKind::Mumps || settings_.solver == SolverKind::Cholmod))
+    throw ModelError(std::string("--solver ") +
+                     (settings_.solver == SolverKind::Mumps ? "mumps (LDLT)" : "cholmod (Cholesky)") +
+                     " factorizes symmetric matrices only, and this step's tangent is unsymmetric (friction, "
+                     "follower pressure under NLGEOM, or a user constraint); use --solver auto or umfpack");
+}
+
+StepSystem::~StepSystem() = default;
+
+void StepSystem::gather_contributions() {
+  const Discretization& disc = discretization_;
+  contributions_.reserve(disc.elements().size() + disc.constraints().size() + disc.user_constraints().size() +
+                         pressures_.size());
+  for (const auto& e : disc.elements()) contributions_.push_back(e.get());
+  for (const auto& c : disc.constraints()) contributions_.push_back(c.get());
+  for (const auto& c : disc.user_constraints()) contributions_.push_back(c.get());
+  const auto n_bulk = contributions_.size();
+  for (const auto& pair : disc.contact_pairs()) {
+    contributions_.push_back(pair.get());  // searches before its nodes are evaluated
+    for (Contribution* node : pair->nodes()) contributions_.push_back(node);
+  }
+  const auto n_contact = contributions_.size() - n_bulk;
+  for (const auto& p : pressures_) contributions_.push_back(p.get()), load_contributions_.push_back(p.get());
+
+  const auto linear = [&](const Contribution* c) { return c->linear_in_u(step_.nlgeom); };
+  const auto contact_begin = contributions_.begin() + static_cast<std::ptrdiff_t>(n_bulk);
+  const auto contact_end = contact_begin + static_cast<std::ptrdiff_t>(n_contact);
+  bulk_linear_ = std::all_of(contributions_.begin(), contact_begin, linear) &&
+                 std::all_of(contact_end, contributions_.end(), linear);
+}
+
+std::vector<bool> StepSystem::prescribed_dofs() {
+  const DofMap& dofs = discretization_.dofs();
+  std::vector<bool> prescribed(dofs.n_dofs(), false);
+  for (const auto& [dof, value] : loads_.prescribed) prescribed[dof] = true;
+  // Nodes no element or constraint uses have no dofs (as in ABAQUS): their
+  // displacements are held at zero instead of making the matrix singular.
+  std::vector<bool> used(dofs.n_dofs(), false);
+  for (const Contribution* c : contributions_)
+    for (int d : c->dofs()) used[d] = true;
+  for (const auto& row : discretization_.elimination_rows())
+    for (const auto& term : row.terms) used[term.first] = true;
+  unused_nodes_ = 0;
+  for (int node = 0; node < dofs.n_nodes(); ++node) {
+    bool any = false;
+    for (int c = 0; c < kDofsPerNode; ++c) any = any || used[dofs.displacement(node, c)];
+    if (any) continue;
+    ++unused_nodes_;
+    for (int c = 0; c < kDofsPerNode; ++c) prescribed[dofs.displacement(node, c)] = true;
+  }
+  return prescribed;
+}
+
+std::vector<int> StepSystem::condensation_interface(const EquationMap& equations) const {
+  // With contact, the Auto solver condenses onto the contact equations
+  // (CondensedSolver) while they are few; the pattern then holds them all
+  // to all, so that re-pairing never rebuilds it.
+  // Not under NLGEOM: the bulk changes at every iteration there, and the
+  // reserved block would only add fill to the ordinary factorization.
+  const auto& pairs = discretization_.contact_pairs();
+  if (settings_.solver != SolverKind::Auto || !settings_.condense_contact || step_.nlgeom || pairs.empty()) return {};
+  std::vector<int> interface = contact_equations(pairs, discretization_.dofs(), equations);
+  const auto m = static_cast<int>(interface.size());
+  if (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()) interface.clear();
+  return interface;
+}
+
+void StepSystem::make_solver(std::vector<int> interface) {
+  solver_ = make_linear_solver(settings_.solver, settings_.memory_budget_mb);
+  if (interface.empty()) return;
+  auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver_), settings_.memory_budget_mb);
+  condensed_ = c.get();
+  solver_ = std::move(c);
+}
+
+}  // namespace tether

@@ -1,0 +1,105 @@
+#pragma once
+/// \file The equations of one step, as every procedure (static, dynamic) solves them.
+///
+/// A StepSystem gathers what a step sets up before its first increment: the
+/// step's contributions (elements, constraints, user constraints, contact
+/// pairs with their nodes, the step's pressure loads), the prescribed dofs
+/// (the step's boundary conditions and the nodes no contribution uses), the
+/// EquationMap, the Assembler over them and the LinearSolver (condensed onto
+/// the contact equations when that pays). Each contribution declares whether
+/// its tangent is symmetric and whether it is linear in u; the system combines
+/// the declarations. Procedures borrow the system and decide when to assemble
+/// and solve. See docs/theory/procedures.md.
+
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tether/analysis/discretization.hpp"
+#include "tether/analysis/step_loads.hpp"
+#include "tether/assembly/assembler.hpp"
+#include "tether/solvers/linear_solver.hpp"
+
+namespace tether {
+
+class CondensedSolver;
+
+/// How the step's linear systems are solved (AnalysisOptions' solver part).
+struct SolverSettings {
+  SolverKind solver = SolverKind::Auto;
+  /// With the Auto solver and contact (not under NLGEOM): condense onto the
+  /// contact equations while they are few (CondensedSolver).
+  bool condense_contact = true;
+  double memory_budget_mb = 0;  ///< [MB], 0 = no limit (see AnalysisOptions)
+};
+
+class StepSystem {
+ public:
+  /// Builds the system of `step` over `discretization` (both must outlive
+  /// it), with `loads` from make_step_loads. `u` and `total_time` are the
+  /// state at the start of the step (for the constraint checks). `message`
+  /// receives notes while the system is built (nodes without dofs). Throws
+  /// ModelError for a step that cannot be solved: redundant or conflicting
+  /// constraints (EquationMap, check_constraints), or a solver that reads
+  /// one triangle (MUMPS LDLT, CHOLMOD) for an unsymmetric tangent.
+  StepSystem(const Discretization& discretization, const Step& step, StepLoads loads, const Eigen::VectorXd& u,
+             double total_time, const SolverSettings& settings,
+             const std::function<void(const std::string&)>& message = {});
+  ~StepSystem();
+  StepSystem(const StepSystem&) = delete;
+  StepSystem& operator=(const StepSystem&) = delete;
+
+  [[nodiscard]] const Discretization& discretization() const { return discretization_; }
+  [[nodiscard]] const Step& step() const { return step_; }
+  [[nodiscard]] const StepLoads& loads() const { return loads_; }
+  /// One per loads().pressures, in that order (magnitudes set by the procedure).
+  [[nodiscard]] const std::vector<std::unique_ptr<FacePressure>>& pressures() const { return pressures_; }
+  /// Everything assembled, in assembly order: elements, constraints, user
+  /// constraints, each contact pair followed by its nodes, pressures.
+  [[nodiscard]] const std::vector<Contribution*>& contributions() const { return contributions_; }
+  /// The load contributions (the pressures): they size Newton's force scale.
+  [[nodiscard]] const std::vector<const Contribution*>& load_contributions() const { return load_contributions_; }
+
+  [[nodiscard]] Assembler& assembler() { return *assembler_; }
+  [[nodiscard]] const EquationMap& equations() const { return assembler_->equations(); }
+  [[nodiscard]] LinearSolver& solver() { return *solver_; }
+  [[nodiscard]] const LinearSolver& solver() const { return *solver_; }
+  /// The condensed solver when the system condenses onto the contact equations, else null.
+  [[nodiscard]] const CondensedSolver* condensed() const { return condensed_; }
+
+  /// Nodes that no contribution uses: their displacements are prescribed to zero.
+  [[nodiscard]] int n_unused_nodes() const { return unused_nodes_; }
+  /// Every contribution declares a symmetric tangent under the step's NLGEOM.
+  [[nodiscard]] bool symmetric() const { return symmetric_; }
+  /// Every contribution outside contact (elements, constraints, loads) is
+  /// linear in u under the step's NLGEOM: that bulk could be assembled and
+  /// factorized once per step. Declared only; nothing uses it yet.
+  [[nodiscard]] bool bulk_linear() const { return bulk_linear_; }
+
+ private:
+  /// Fills contributions_, load_contributions_ and bulk_linear_.
+  void gather_contributions();
+  /// The step's prescribed dofs, and the dofs of nodes no contribution uses.
+  std::vector<bool> prescribed_dofs();
+  /// The contact equations to condense onto (empty: no condensation).
+  [[nodiscard]] std::vector<int> condensation_interface(const EquationMap& equations) const;
+  void make_solver(std::vector<int> interface);
+
+  const Discretization& discretization_;
+  const Step& step_;
+  SolverSettings settings_;
+  StepLoads loads_;
+  std::vector<std::unique_ptr<FacePressure>> pressures_;
+  std::vector<Contribution*> contributions_;
+  std::vector<const Contribution*> load_contributions_;
+  std::unique_ptr<Assembler> assembler_;
+  std::unique_ptr<LinearSolver> solver_;
+  const CondensedSolver* condensed_ = nullptr;
+  int unused_nodes_ = 0;
+  bool symmetric_ = true;
+  bool bulk_linear_ = true;
+};
+
+}  // namespace tether
