@@ -33,7 +33,8 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
     if (e.section < 0) throw ModelError("element " + std::to_string(e.id) + " has no section");
     const SolidSection& section = model.sections[e.section];
     elements_.push_back(std::make_unique<ContinuumElement>(e.id, e.type, e.nodes, coordinates_of(model, e.nodes),
-                                                           *materials_[section.material], section.thickness, dofs_));
+                                                           *materials_[section.material], section.thickness, dofs_,
+                                                           &model.materials[section.material]));
   }
 
   if (!model.coords.empty()) {

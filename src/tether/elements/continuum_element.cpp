@@ -49,13 +49,14 @@ const RuleShapes& rule_shapes(Shape shape, QuadratureRule rule) {
 ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vector<int> node_indices,
                                    std::vector<Eigen::Vector2d> ref_coords,
                                    const ConstitutiveModel& material, double thickness,
-                                   const DofMap& dofs)
+                                   const DofMap& dofs, const MaterialData* material_data)
     : label_(label),
       type_(type),
       n_nodes_(n_nodes(type.shape)),
       nodes_(std::move(node_indices)),
       ref_coords_(std::move(ref_coords)),
       material_(&material),
+      material_data_(material_data),
       thickness_(thickness),
       rule_(default_rule(type)),
       n_points_(static_cast<int>(quadrature_points(rule_).size())) {
@@ -246,6 +247,19 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
       pv.stress = {sigma(0), sigma(1), sigma(2), sigma(3)};
       pv.strain = {mp.strain(0), mp.strain(1), mp.strain(2), 0.5 * mp.strain(3)};
     }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+}
+
+void ContinuumElement::mass(MassKind kind, Eigen::MatrixXd& out) const {
+  if (material_data_ == nullptr)
+    throw ModelError(describe() + ": *DENSITY missing: no material data was given to the element");
+  if (!material_data_->density)
+    throw ModelError(fmt::format("{}: *DENSITY missing for material {} ({})", describe(), material_data_->name,
+                                 material_data_->where.str()));
+  try {
+    expand_to_components(scalar_mass(kind, type_, ref_coords_, *material_data_->density, thickness_), 2, out);
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
   }

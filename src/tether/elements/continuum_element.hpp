@@ -11,6 +11,7 @@
 #include "tether/dofs/dof_map.hpp"
 #include "tether/fem/quadrature.hpp"
 #include "tether/fem/shape_functions.hpp"
+#include "tether/elements/mass_matrix.hpp"
 #include "tether/elements/material_point.hpp"
 #include "tether/materials/constitutive_model.hpp"
 #include "tether/model/element_type.hpp"
@@ -32,10 +33,13 @@ class ContinuumElement final : public Contribution {
   /// not match the type, the type is unsupported, the reference Jacobian is not
   /// positive at an integration point (inverted or degenerate element, or
   /// clockwise node order), an axisymmetric point lies at r <= 0, or the
-  /// thickness is not positive.
+  /// thickness is not positive. material_data: the `*MATERIAL` the element is
+  /// made of, read by mass() only (its density, name and deck line); must
+  /// outlive the element; nullptr (or no `*DENSITY` in it) is fine for static
+  /// analysis, mass() then throws.
   ContinuumElement(int label, const ElementType& type, std::vector<int> node_indices,
                    std::vector<Eigen::Vector2d> ref_coords, const ConstitutiveModel& material,
-                   double thickness, const DofMap& dofs);
+                   double thickness, const DofMap& dofs, const MaterialData* material_data = nullptr);
 
   [[nodiscard]] std::span<const int> dofs() const override { return dofs_; }
 
@@ -68,6 +72,14 @@ class ContinuumElement final : public Contribution {
   /// position X + u.
   void point_values(const EvaluationState& s, std::vector<PointValues>& out) const;
 
+  /// Mass matrix over dofs() [mass] (2n x 2n, local dof order; lumped: diagonal),
+  /// from the reference configuration, the material's density and the thickness
+  /// (totals over 2 pi for axisymmetry): constant, also under NLGEOM. See
+  /// elements/mass_matrix.hpp. Throws ModelError naming the element and its
+  /// material when the material has no `*DENSITY`, or when det J <= 0 (R <= 0)
+  /// at a point of the mass rule.
+  void mass(MassKind kind, Eigen::MatrixXd& out) const;
+
   /// Extrapolates point values to the element's nodes (stress and strain),
   /// ABAQUS-like (see fem/extrapolation.hpp). `points` has n_points() entries.
   void extrapolate_to_nodes(const std::vector<PointValues>& points, std::vector<Tensor4>& nodal_stress,
@@ -99,6 +111,7 @@ class ContinuumElement final : public Contribution {
   std::vector<int> dofs_;
   std::vector<Eigen::Vector2d> ref_coords_;
   const ConstitutiveModel* material_;
+  const MaterialData* material_data_;  ///< for mass(); may be null
   double thickness_;
   QuadratureRule rule_;
   int n_points_;

@@ -3,6 +3,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <numbers>
 
 namespace tether {
 
@@ -62,6 +63,55 @@ std::span<const LinePoint> line_points(int n_points) {
   assert(n_points == 2 || n_points == 3);
   if (n_points == 2) return kLine2;
   return kLine3;
+}
+
+std::vector<LinePoint> gauss_legendre(int n_points) {
+  assert(n_points >= 1 && n_points <= 20);
+  const int n = n_points;
+  std::vector<LinePoint> out(static_cast<std::size_t>(n));
+  for (int i = 0; i < (n + 1) / 2; ++i) {
+    // Newton on P_n from the usual asymptotic guess of the i-th largest root.
+    double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
+    double dp = 1;
+    for (int it = 0; it < 100; ++it) {
+      double p1 = 1, p0 = 0;  // P_j and P_{j-1} at z
+      for (int j = 1; j <= n; ++j) {
+        const double p_prev = p0;
+        p0 = p1;
+        p1 = ((2 * j - 1) * z * p0 - (j - 1) * p_prev) / j;
+      }
+      dp = n * (z * p1 - p0) / (z * z - 1);  // P_n'(z)
+      const double step = p1 / dp;
+      z -= step;
+      if (std::abs(step) < 1e-16) break;
+    }
+    const double w = 2 / ((1 - z * z) * dp * dp);
+    out[static_cast<std::size_t>(i)] = {-z, w};
+    out[static_cast<std::size_t>(n - 1 - i)] = {z, w};
+  }
+  if (n % 2 == 1) out[static_cast<std::size_t>(n / 2)].s = 0;  // exact middle point
+  return out;
+}
+
+std::vector<QuadraturePoint> exact_rule(Shape shape, int degree) {
+  assert(degree >= 0 && degree <= 37);
+  std::vector<QuadraturePoint> out;
+  if (shape == Shape::Quad4 || shape == Shape::Quad8) {
+    const auto g = gauss_legendre((degree + 2) / 2);
+    for (const LinePoint& pe : g)
+      for (const LinePoint& px : g) out.push_back({{px.s, pe.s}, px.weight * pe.weight});
+    return out;
+  }
+  // Triangle: (s, t) in [-1,1]^2 -> u = (1+s)/2, v = (1+t)/2; xi = u, eta = v (1-u);
+  // d xi d eta = (1-u) du dv = (1-u)/4 ds dt.
+  const auto gu = gauss_legendre((degree + 3) / 2);
+  const auto gv = gauss_legendre((degree + 2) / 2);
+  for (const LinePoint& pv : gv)
+    for (const LinePoint& pu : gu) {
+      const double u = 0.5 * (1 + pu.s), v = 0.5 * (1 + pv.s);
+      out.push_back({{u, v * (1 - u)}, 0.25 * pu.weight * pv.weight * (1 - u)});
+    }
+  return out;
 }
 
 }  // namespace tether

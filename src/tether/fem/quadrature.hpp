@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <span>
+#include <vector>
 
 #include "tether/model/element_type.hpp"
 
@@ -46,5 +47,23 @@ QuadratureRule default_rule(const ElementType& type);
 
 /// Gauss-Legendre rule with `n_points` (2 or 3) on [-1,1].
 std::span<const LinePoint> line_points(int n_points);
+
+/// Gauss-Legendre rule with `n_points` (1 to 20) on [-1,1], points ascending,
+/// computed by Newton's method on the Legendre polynomial (to about 1e-15).
+/// Exact for polynomials of degree 2 n_points - 1.
+std::vector<LinePoint> gauss_legendre(int n_points);
+
+/// A rule on the reference element of `shape` (the triangle for Tri3/Tri6,
+/// the square for Quad4/Quad8) that integrates every polynomial of degree
+/// `degree` (0 to 37) exactly:
+///  - square: degree in each variable separately (xi^d eta^d included);
+///    tensor Gauss with ceil((degree+1)/2) points per direction, xi fastest;
+///  - triangle: total degree; the collapsed ("Duffy") product of Gauss rules,
+///    xi = u, eta = v (1 - u) with u, v in [0,1] and weight factor (1 - u):
+///    a monomial of total degree d becomes degree d+1 in u (with the factor)
+///    and d in v, so ceil((degree+2)/2) points in u and ceil((degree+1)/2) in v.
+///    Points are interior but not symmetric under the triangle's rotations.
+/// Meant for integrals evaluated once per element (e.g. mass), not hot loops.
+std::vector<QuadraturePoint> exact_rule(Shape shape, int degree);
 
 }  // namespace tether

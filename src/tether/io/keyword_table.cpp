@@ -105,8 +105,11 @@ std::vector<KeywordSpec> build_table() {
       {"HYPERELASTIC", kMaterial, "Compressible neo-Hookean hyperelasticity.", "`C10, D1` with C10 > 0, D1 > 0",
        {flag("NEO HOOKE", "Neo-Hookean strain energy (required; the only model supported).")},
        handle_hyperelastic, ""},
-      {"DENSITY", kMaterial, "Mass density (kept for dynamics; unused by static steps).", "`rho`", {},
-       handle_density, ""},
+      {"DENSITY", kMaterial,
+       "Mass density, for the element masses (consistent or lumped; docs/theory/elements.md, section Mass). "
+       "Optional: static steps do not use it; asking for the mass of an element whose material has none is an "
+       "error naming the material.",
+       "`rho` with rho > 0 [mass/volume]", {}, handle_density, ""},
       {"SOLID SECTION", kModelData, "Assigns a material (and thickness) to an element set.",
        "optional `thickness` (default 1; ignored for axisymmetric elements)",
        {name("ELSET", "Element set the section applies to.", true),
