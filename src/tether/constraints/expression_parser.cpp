@@ -54,6 +54,28 @@ unsigned abs_serial() {
   return serial;
 }
 
+/// base^exponent. Built as a temporary `power`, not with GiNaC::pow(): pow()
+/// puts the new object on the heap and then evaluates it, and when the
+/// evaluation throws (0^0: std::domain_error; 0^-1: GiNaC::pole_error)
+/// GiNaC 1.8's ex::construct_from_basic() leaves before deleting it, so it is
+/// lost (40 bytes a formula). A temporary is destroyed by the unwinding.
+ex raised(const ex& base, const ex& exponent) { return GiNaC::power(base, exponent); }
+
+/// `e`, or its value as a number when all its operands are numbers (pi,
+/// sqrt(2), sin(1), 2*pi). Applied to every result of the parser, so that
+/// each constant of a formula is a number as soon as it is formed: GiNaC
+/// would otherwise keep it symbolic and evaluate it only later, in evalf(),
+/// and a constant that is exactly 0 there (sqrt(2)*sqrt(3) - sqrt(6)) as a
+/// denominator makes GiNaC's power::evalf() throw with terms of its own in
+/// flight, lost. As a number, such a 0 is seen when the power is built (a
+/// division by zero, reported) and nothing is lost. O(operands) per call.
+ex settled(const ex& e) {
+  if (GiNaC::is_exactly_a<numeric>(e) || GiNaC::is_a<GiNaC::symbol>(e)) return e;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (!GiNaC::is_exactly_a<numeric>(e.op(i))) return e;
+  return e.evalf();
+}
+
 // ---------------------------------------------------------------------------
 // The formula language.
 
@@ -80,7 +102,7 @@ const FunctionInfo kFunctions[] = {
     {"ln", 1, [](const std::vector<ex>& a) -> ex { return GiNaC::log(a[0]); }},
     {"sqrt", 1, [](const std::vector<ex>& a) -> ex { return GiNaC::sqrt(a[0]); }},
     {"abs", 1, [](const std::vector<ex>& a) -> ex { return abs_of(a[0]); }},
-    {"pow", 2, [](const std::vector<ex>& a) -> ex { return GiNaC::pow(a[0], a[1]); }},
+    {"pow", 2, [](const std::vector<ex>& a) -> ex { return raised(a[0], a[1]); }},
 };
 
 std::string known_functions() {
@@ -225,18 +247,18 @@ class Parser {
   // expression := term (('+' | '-') term)*
   ex expression() {
     ex e = term();
-    while (at_operator("+", "-")) e = next().text == "+" ? e + term() : e - term();
+    while (at_operator("+", "-")) e = settled(next().text == "+" ? e + term() : e - term());
     return e;
   }
   // term := unary (('*' | '/') unary)*
   ex term() {
     ex e = unary();
-    while (at_operator("*", "/")) e = next().text == "*" ? e * unary() : e / unary();
+    while (at_operator("*", "/")) e = settled(next().text == "*" ? e * unary() : e / unary());
     return e;
   }
   // unary := ('+' | '-') unary | power
   ex unary() {
-    if (at_operator("+", "-")) return next().text == "+" ? unary() : -unary();
+    if (at_operator("+", "-")) return next().text == "+" ? unary() : settled(-unary());
     return power();
   }
   // power := primary (('^' | '**') unary)?    (right associative: 2^3^2 = 2^9; -x^2 = -(x^2))
@@ -245,7 +267,8 @@ class Parser {
     if (at_operator("^", "**")) {
       const Token op = next();
       const ex exponent = unary();
-      return real_valued(GiNaC::pow(base, exponent), op, {base, exponent});
+      refuse_zero_base(base, exponent, op);
+      return settled(real_valued(raised(base, exponent), op, {base, exponent}));
     }
     return base;
   }
@@ -275,7 +298,7 @@ class Parser {
   ex variable(const Token& t) {
     const std::string name = lower(t.text);
     const std::string at = "' at column " + std::to_string(t.column);
-    if (name == "pi") return GiNaC::Pi;
+    if (name == "pi") return settled(GiNaC::Pi);
     if (name == "t") return vars_.total_time;
     if (name == "tstep") return vars_.step_time;
     if (name.size() >= 2 && std::strchr("xyuv", name[0]) != nullptr &&
@@ -338,7 +361,21 @@ class Parser {
       throw FormulaError("function '" + t.text + "' at column " + std::to_string(t.column) + " takes " +
                          std::to_string(f->arity) + " argument" + (f->arity == 1 ? "" : "s") + ", got " +
                          std::to_string(arguments.size()));
-    return real_valued(f->make(arguments), t, arguments);
+    if (name == "pow") refuse_zero_base(arguments[0], arguments[1], t);
+    return settled(real_valued(f->make(arguments), t, arguments));
+  }
+
+  /// Refuses base^exponent (power token `t`: '^', '**' or pow) for a zero
+  /// base with an exponent that is not a number, i.e. depends on a
+  /// displacement or the time (0^U1, 0^T; constants are numbers by now, see
+  /// settled()): its derivative contains log(0) and 0^-1, on which GiNaC's
+  /// differentiation throws with a term of its own in flight, lost. A numeric
+  /// exponent is left to GiNaC: 0^2 = 0, 0^0 and 0^-1 throw (reported).
+  static void refuse_zero_base(const ex& base, const ex& exponent, const Token& t) {
+    if (GiNaC::is_exactly_a<numeric>(base) && base.is_zero() && !GiNaC::is_exactly_a<numeric>(exponent))
+      throw FormulaError("'" + t.text + "' at column " + std::to_string(t.column) +
+                         " raises 0 to a power that is not a number (" + short_text(exponent) +
+                         "): its derivative is undefined");
   }
 
   /// `e` unless it is a constant that is not a real number (log(-1), sqrt(X1 - X2) with X1 < X2, ...);
