@@ -90,15 +90,7 @@ fs::path output_directory(const std::string& deck, const std::string& output_dir
   return dir;
 }
 
-int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
-        bool quiet, const std::string& restart, double memory_mb) {
-  const auto t0 = std::chrono::steady_clock::now();
-  std::vector<DeckWarning> warnings;
-  const Model model = read_deck(deck, &warnings);
-  if (!quiet)
-    for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
-  const std::string job = fs::path(deck).stem().string();
-
+AnalysisOptions analysis_options(const std::string& solver, bool condense, double memory_mb) {
   AnalysisOptions options;
   options.solver = parse_solver_kind(solver);
   // Refuse before the run, not when the factors first go to disk; only the
@@ -108,24 +100,55 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   options.condense_contact = condense;
   options.memory_budget_mb = memory_mb;
   options.stream_element_results = true;  // the writer does not keep the results
-  Relay relay;
-  std::unique_ptr<StaticAnalysis> analysis;
+  return options;
+}
+
+std::string timing_line(double seconds, const SolveTiming& t) {
+  return fmt::format("time {:.2f} s: contact search {:.2f}, assembly {:.2f}, analyse {:.2f}, factorize {:.2f} ({} "
+                     "factorizations{}), solve {:.2f}, output {:.2f}",
+                     seconds, t.contact_search, t.assembly, t.analyse, t.factorize, t.factorizations,
+                     t.sparse_factorizations > 0
+                         ? fmt::format(", {} of the bulk, the rest of the contact equations only",
+                                       t.sparse_factorizations)
+                         : std::string(),
+                     t.solve, t.output);
+}
+
+/// The files this run wrote, for the `results:` line.
+std::string written_files(const ResultWriter& writer, const ProgressObserver& observer) {
+  std::string written;
+  for (const fs::path& f :
+       {writer.pvd_path(), writer.dat_path(), writer.sta_path(), observer.msg_path(), writer.restart_path()})
+    if (fs::exists(f)) written += (written.empty() ? "" : "  ") + f.string();
+  return written;
+}
+
+int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
+        bool quiet, const std::string& restart, double memory_mb) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<DeckWarning> warnings;
+  const Model model = read_deck(deck, &warnings);
+  if (!quiet)
+    for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
+  const std::string job = fs::path(deck).stem().string();
   const std::string restart_file = restart_source(model, deck, restart);
   const fs::path dir = output_directory(deck, output_dir, restart_file);
+
+  // The model is discretized and a restart state read and checked before any
+  // output file is touched: a deck or restart refused here leaves the
+  // previous results (and the restart file) as they were.
+  Relay relay;
+  StaticAnalysis analysis(model, relay, analysis_options(solver, condense, memory_mb));
   RestartState state;
   if (!restart_file.empty()) {
-    // Read and check the state before any output file is touched: a refused
-    // restart leaves the previous results (and the file itself) as they were.
     state = read_restart_file(restart_file);
-    analysis = std::make_unique<StaticAnalysis>(model, relay, options);
-    analysis->resume(state, restart_file);
+    analysis.resume(state, restart_file);
     if (!quiet) fmt::print("{}: restarting from {}; the results go to {}\n", job, restart_file, dir.string());
   }
 
   ResultWriterOptions writer_options;
   if (ascii) writer_options.encoding = VtuEncoding::Ascii;
   ResultWriter writer(model, dir, job, writer_options);
-  const bool progress = !quiet && isatty(fileno(stdout));
   if (!restart_file.empty()) {
     try {
       writer.load_output_state(state.output_state);
@@ -133,15 +156,14 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
       throw InputError(SourceLocation{restart_file, 0}, e.what());
     }
   }
-  ProgressObserver observer(writer, progress);
+  ProgressObserver observer(writer, !quiet && isatty(fileno(stdout)));
   relay.to = &observer;
   for (const auto& w : warnings) observer.log(warning_text(w));
   if (!restart_file.empty()) observer.log("restart from " + restart_file + " into " + dir.string());
 
   AnalysisSummary summary;
   try {
-    if (!analysis) analysis = std::make_unique<StaticAnalysis>(model, relay, options);
-    summary = analysis->run();
+    summary = analysis.run();
   } catch (const ModelError& e) {
     writer.finish(false, e.what());
     throw;
@@ -150,27 +172,14 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
     throw;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const SolveTiming& t = summary.timing;
-  const std::string timing =
-      fmt::format("time {:.2f} s: contact search {:.2f}, assembly {:.2f}, analyse {:.2f}, factorize {:.2f} ({} "
-                  "factorizations{}), solve {:.2f}, output {:.2f}",
-                  seconds, t.contact_search, t.assembly, t.analyse, t.factorize, t.factorizations,
-                  t.sparse_factorizations > 0
-                      ? fmt::format(", {} of the bulk, the rest of the contact equations only", t.sparse_factorizations)
-                      : std::string(),
-                  t.solve, t.output);
+  const std::string timing = timing_line(seconds, summary.timing);
   observer.log(summary.message);
   observer.log(timing);
   writer.finish(summary.completed, summary.message);
   if (!quiet) {
-    fmt::print("{}: {} ({} increments, {} iterations, {} cut-backs, {:.2f} s)\n", job, summary.message,
-               summary.increments, summary.iterations, summary.cutbacks, seconds);
-    fmt::print("{}\n", timing);
-    std::string written;  // only the files this run wrote
-    for (const fs::path& f : {writer.pvd_path(), writer.dat_path(), writer.sta_path(), observer.msg_path(),
-                              writer.restart_path()})
-      if (fs::exists(f)) written += (written.empty() ? "" : "  ") + f.string();
-    fmt::print("results: {}\n", written);
+    fmt::print("{}: {} ({} increments, {} iterations, {} cut-backs, {:.2f} s)\n{}\nresults: {}\n", job,
+               summary.message, summary.increments, summary.iterations, summary.cutbacks, seconds, timing,
+               written_files(writer, observer));
   }
   if (!summary.completed) {
     fmt::print(stderr, "{}: error: {}\n", deck, summary.message);

@@ -208,7 +208,10 @@ TEST(ContactKeywords, NodeSurfaceReadsOneAreaPerNodeAndRefusesBadOnes) {
   const std::string zero = head + "*SURFACE, NAME=S, TYPE=NODE\n1, 0.\n";
   expect_deck_error_at(zero, "1, 0.", {"node area 0.", "expected an area > 0"});
   const std::string twice = head + "*SURFACE, NAME=S, TYPE=NODE\nTWO, 2.\n3, 3.\n";
-  expect_deck_error_at(twice, "3, 3.", {"node 3 is given the area 3.", "another at bad.inp:8"});
+  expect_deck_error_at(twice, "3, 3.", {"node 3 is given the area 3 here", "and 2 at bad.inp:8"});
+  // The later line leaves the area out (then 1): named as such, no crash.
+  const std::string omitted = head + "*SURFACE, NAME=S, TYPE=NODE\nTWO, 2.\n3\n";
+  expect_deck_error(omitted, 9, {"node 3 is given the area 1 here (1 when omitted) and 2 at bad.inp:8"});
   const std::string same = head + "*SURFACE, NAME=S, TYPE=NODE\nTWO, 2.\n3, 2.\n";
   EXPECT_EQ(read_deck_string(same, "n.inp").surfaces.at("S").nodes.size(), 2u);
 }

@@ -94,12 +94,13 @@ void handle_surface(DeckState& state, const KeywordBlock& block, const Parameter
       const SourceLocation at = line.where();
       const auto f = data_fields(line, 1, 2, "`node_or_nset[, area]`");
       const double a = f.size() > 1 && !f[1].empty() ? parse_real(f[1], at, "node area") : 1.0;
-      if (!(a > 0)) throw InputError(at, "node area " + f[1] + ": expected an area > 0 (default 1)");
+      if (!(a > 0)) throw InputError(at, "node area " + f.at(1) + ": expected an area > 0 (default 1)");
       for (int n : state.nodes_of(f[0], at)) {
         const auto [it, added] = area.try_emplace(n, a, at);
         if (!added && it->second.first != a)
           throw InputError(at, "node " + std::to_string(state.model.node_ids[static_cast<std::size_t>(n)]) +
-                                   " is given the area " + f[1] + " here and another at " + it->second.second.str());
+                                   " is given the area " + format_number(a) + " here (1 when omitted) and " +
+                                   format_number(it->second.first) + " at " + it->second.second.str());
       }
     }
     for (const auto& [n, a] : area) s.nodes.push_back(n), s.node_areas.push_back(a.first);
