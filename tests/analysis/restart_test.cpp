@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -386,7 +387,10 @@ TEST(Restart, TheFileIsCompleteAtEveryMoment) {
       }
     }
   });
-  for (int round = 0; round < 20; ++round)
+  // At least 20 rounds, and on until the reader has read 20 times (a loaded
+  // machine may not schedule it during the first rounds), for at most 30 s.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  for (int round = 0; round < 20 || (reads.load() < 20 && std::chrono::steady_clock::now() < deadline); ++round)
     for (const RestartState& s : states) write_restart_file(file, s);
   done = true;
   reader.join();
