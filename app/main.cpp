@@ -86,7 +86,8 @@ fs::path output_directory(const std::string& deck, const std::string& output_dir
       throw InputError(SourceLocation{restart_file, 0},
                        "-o " + output_dir + " holds the results of a run of " + job + " (" + job + extension +
                            "), which this restart would overwrite; give a new directory with -o, or leave -o out "
-                           "to write to " + (deck_dir / (job + "-restart")).string() + " (or the next free -restart-N)");
+                           "to write to " + (deck_dir / (job + "-restart")).string() +
+                           " (or the next free -restart-N)");
   return dir;
 }
 

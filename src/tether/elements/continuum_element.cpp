@@ -13,31 +13,17 @@ namespace tether {
 
 namespace {
 
-/// Shape functions and local derivatives at the points of one rule, the same
-/// for every element of a shape (computed once).
-struct RuleShapes {
-  std::vector<ShapeVector> N;
-  std::vector<ShapeGradient> dN;
-  std::vector<double> weight;
-};
-
-const RuleShapes& rule_shapes(Shape shape, QuadratureRule rule) {
+/// Shape functions at the points of one rule, the same for every element of
+/// a shape (computed once).
+const TabulatedShapes& rule_shapes(Shape shape, QuadratureRule rule) {
   static const auto table = [] {
-    std::array<std::array<RuleShapes, 4>, 4> t;
+    std::array<std::array<TabulatedShapes, 4>, 4> t;
     for (Shape sh : {Shape::Tri3, Shape::Quad4, Shape::Tri6, Shape::Quad8})
       for (QuadratureRule ru : {QuadratureRule::Triangle1, QuadratureRule::Triangle3, QuadratureRule::Quad2x2,
                                 QuadratureRule::Quad3x3}) {
         const bool tri_shape = sh == Shape::Tri3 || sh == Shape::Tri6;
         if (tri_shape != (rule_shape(ru) == Shape::Tri3)) continue;
-        RuleShapes& r = t[static_cast<std::size_t>(sh)][static_cast<std::size_t>(ru)];
-        for (const QuadraturePoint& p : quadrature_points(ru)) {
-          ShapeVector N;
-          ShapeGradient dN;
-          shape_functions(sh, p.xi, N, dN);
-          r.N.push_back(N);
-          r.dN.push_back(dN);
-          r.weight.push_back(p.weight);
-        }
+        t[static_cast<std::size_t>(sh)][static_cast<std::size_t>(ru)] = tabulate_shapes(sh, quadrature_points(ru));
       }
     return t;
   }();
@@ -89,7 +75,7 @@ ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vect
 }
 
 double ContinuumElement::point_geometry(int q, PointGeometry& g) const {
-  const RuleShapes& shapes = rule_shapes(type_.shape, rule_);
+  const TabulatedShapes& shapes = rule_shapes(type_.shape, rule_);
   const ShapeVector& N = shapes.N[static_cast<std::size_t>(q)];
   const ShapeGradient& dN = shapes.dN[static_cast<std::size_t>(q)];
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // J(i,j) = dX_i/dxi_j

@@ -14,27 +14,12 @@ namespace tether {
 namespace {
 
 /// Shape functions at the points of one mass rule (computed once per shape).
-struct MassPoints {
-  std::vector<ShapeVector> N;
-  std::vector<ShapeGradient> dN;
-  std::vector<double> weight;
-};
-
-const MassPoints& mass_points(Shape shape, bool axisymmetric) {
+const TabulatedShapes& mass_points(Shape shape, bool axisymmetric) {
   static const auto table = [] {
-    std::array<std::array<MassPoints, 2>, 4> t;
+    std::array<std::array<TabulatedShapes, 2>, 4> t;
     for (Shape sh : {Shape::Tri3, Shape::Quad4, Shape::Tri6, Shape::Quad8})
-      for (bool axi : {false, true}) {
-        MassPoints& m = t[static_cast<std::size_t>(sh)][axi ? 1 : 0];
-        for (const QuadraturePoint& p : mass_rule(sh, axi)) {
-          ShapeVector N;
-          ShapeGradient dN;
-          shape_functions(sh, p.xi, N, dN);
-          m.N.push_back(N);
-          m.dN.push_back(dN);
-          m.weight.push_back(p.weight);
-        }
-      }
+      for (bool axi : {false, true})
+        t[static_cast<std::size_t>(sh)][axi ? 1 : 0] = tabulate_shapes(sh, mass_rule(sh, axi));
     return t;
   }();
   return table[static_cast<std::size_t>(shape)][axisymmetric ? 1 : 0];
@@ -68,7 +53,7 @@ Eigen::MatrixXd consistent_mass(const ElementType& type, std::span<const Eigen::
   if (!axisymmetric && !(thickness > 0))
     throw ModelError(fmt::format("mass: thickness must be positive (got {:g})", thickness));
 
-  const MassPoints& pts = mass_points(type.shape, axisymmetric);
+  const TabulatedShapes& pts = mass_points(type.shape, axisymmetric);
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n, n);
   for (std::size_t q = 0; q < pts.weight.size(); ++q) {
     const ShapeVector& N = pts.N[q];

@@ -100,4 +100,17 @@ void face_shape_functions(int n_face_nodes, double s, Eigen::Vector3d& N, Eigen:
   }
 }
 
+TabulatedShapes tabulate_shapes(Shape shape, std::span<const QuadraturePoint> points) {
+  TabulatedShapes t;
+  for (const QuadraturePoint& p : points) {
+    ShapeVector N;
+    ShapeGradient dN;
+    shape_functions(shape, p.xi, N, dN);
+    t.N.push_back(N);
+    t.dN.push_back(dN);
+    t.weight.push_back(p.weight);
+  }
+  return t;
+}
+
 }  // namespace tether

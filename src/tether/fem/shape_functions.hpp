@@ -10,6 +10,10 @@
 
 #include <Eigen/Core>
 
+#include <span>
+#include <vector>
+
+#include "tether/fem/quadrature.hpp"
 #include "tether/model/element_type.hpp"
 
 namespace tether {
@@ -35,5 +39,16 @@ Eigen::Vector2d reference_node(Shape shape, int node);
 /// Shape functions of a face with `n_face_nodes` (2 or 3) nodes at s in [-1,1]:
 /// values N[0..n) and derivatives dN/ds. Entry 2 is zero for 2-node faces.
 void face_shape_functions(int n_face_nodes, double s, Eigen::Vector3d& N, Eigen::Vector3d& dN);
+
+/// N and dN/dxi of a shape at the points of a rule, with the weights: the
+/// same for every element of the shape, so callers tabulate them once.
+struct TabulatedShapes {
+  std::vector<ShapeVector> N;
+  std::vector<ShapeGradient> dN;
+  std::vector<double> weight;
+};
+
+/// Evaluates `shape`'s functions at every point of `points`.
+TabulatedShapes tabulate_shapes(Shape shape, std::span<const QuadraturePoint> points);
 
 }  // namespace tether
