@@ -316,6 +316,15 @@ TEST(Constraints, BeamTransmitsAMomentToTheBody) {
   EXPECT_NEAR(moment, -5.0, 1e-9);
   EXPECT_NEAR(fx, 0.0, 1e-9);
   EXPECT_NEAR(fy, 0.0, 1e-9);
+  // The BEAMs' moments on the reference node's rotation balance M; no other
+  // node gets a moment.
+  double on_reference = 0;
+  for (const MultiplierValues& m : run.last().multipliers)
+    for (const NodalConstraintForce& f : m.nodal_force) {
+      EXPECT_EQ(f.moment.has_value(), f.node == run.node(100)) << m.owner;
+      on_reference += f.moment.value_or(0.0);
+    }
+  EXPECT_NEAR(on_reference, -5.0, 1e-9);
 }
 
 TEST(Constraints, MoreEquationsThanFreeDofsIsNamed) {

@@ -183,5 +183,36 @@ TEST(MultiplierOutput, TieAndPeriodicMultipliersAreInTheVtu) {
   }
 }
 
+// An *MPC BEAM's moment on its reference node's rotation is output as
+// CONSTRAINT_MOMENT (the reference node 100 carries M = 5: the BEAMs' moment
+// there is -5); models without rotations write no such array.
+TEST(MultiplierOutput, BeamMomentOnTheReferenceNodeIsInTheVtu) {
+  const Model model = read_deck(kSource + "/tests/smoke/decks/mpc_beam.inp");
+  const auto dir = fresh_directory("multiplier_beam");
+  ResultWriter writer(model, dir, "job", {VtuEncoding::Ascii, true});
+  WritingObserver observer(writer);
+  const AnalysisSummary summary = StaticAnalysis(model, observer).run();
+  ASSERT_TRUE(summary.completed) << summary.message;
+  const std::string text = read_text(dir / ("job_1_" + std::to_string(observer.results.back().increment) + ".vtu"));
+  const auto at = text.find("Name=\"CONSTRAINT_MOMENT\"");
+  ASSERT_NE(at, std::string::npos);
+  std::istringstream values(text.substr(text.find('>', at) + 1));
+  const int reference = model.node_index.at(100);
+  for (int i = 0; i < static_cast<int>(model.coords.size()); ++i) {
+    double v = 0;
+    values >> v;
+    EXPECT_NEAR(v, i == reference ? -5.0 : 0.0, 1e-8) << "node index " << i;
+  }
+  std::ostringstream tie;
+  VtuWriter(tiny_model(), VtuEncoding::Ascii).write(
+      [] {
+        auto r = synthetic_results(tiny_model(), 1, 1, 1.0, 1.0);
+        r.multipliers = three_constraints();
+        return r;
+      }(),
+      tie);
+  EXPECT_EQ(tie.str().find("CONSTRAINT_MOMENT"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace tether

@@ -122,14 +122,17 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
       v.constraint.push_back(f);
       const double l = lambda[static_cast<Eigen::Index>(k++)];
       v.value.push_back(l);
-      // Force on dof i: -lambda * df/du_i, accumulated per node (a rotation's
-      // moment is no part of the nodal force: its node is listed, its value left out).
+      // Force on dof i: -lambda * df/du_i, accumulated per node (on a rotation:
+      // the moment).
       for (const auto& [dof, c] : row.terms) {
         const int node = dofs.node_of(dof), component = dofs.component_of(dof);
         auto it = std::find_if(v.nodal_force.begin(), v.nodal_force.end(),
                                [&](const NodalConstraintForce& n) { return n.node == node; });
         if (it == v.nodal_force.end()) it = v.nodal_force.insert(v.nodal_force.end(), {node, Eigen::Vector2d::Zero()});
-        if (component < kDofsPerNode) it->force[component] -= l * c;
+        if (component < kDofsPerNode)
+          it->force[component] -= l * c;
+        else
+          it->moment = it->moment.value_or(0.0) - l * c;
       }
     }
     r.multipliers.push_back(std::move(v));

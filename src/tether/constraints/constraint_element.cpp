@@ -148,16 +148,18 @@ MultiplierValues ConstraintElement::values(const EvaluationState& state, const D
       case Enforcement::Method::Elimination: v.value[k] = 0; break;
     }
   }
-  // Force on dof i: -sum_k lambda_k df_k/du_i, gathered per node. A rotation
-  // (BEAM reference node) carries a moment, which is no part of the nodal
-  // force: its node is listed, its value is left out.
+  // Force on dof i: -sum_k lambda_k df_k/du_i, gathered per node; on a
+  // rotation (BEAM reference node) it is the moment on the node.
   const Eigen::VectorXd force = -(c.gradient.transpose() * Eigen::Map<const Eigen::VectorXd>(v.value.data(), m_));
   for (int i = 0; i < n_; ++i) {
     const int node = dofs.node_of(dofs_[i]), component = dofs.component_of(dofs_[i]);
     std::size_t a = 0;
     while (a < v.nodal_force.size() && v.nodal_force[a].node != node) ++a;
     if (a == v.nodal_force.size()) v.nodal_force.push_back({node, Eigen::Vector2d::Zero()});
-    if (component < kDofsPerNode) v.nodal_force[a].force[component] += force[i];
+    if (component < kDofsPerNode)
+      v.nodal_force[a].force[component] += force[i];
+    else
+      v.nodal_force[a].moment = v.nodal_force[a].moment.value_or(0.0) + force[i];
   }
   return v;
 }

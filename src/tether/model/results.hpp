@@ -2,6 +2,7 @@
 /// \file Results of one converged increment: plain data handed to the writers.
 
 #include <Eigen/Core>
+#include <optional>
 #include <array>
 #include <string>
 #include <vector>
@@ -27,6 +28,9 @@ struct PointValues {
 struct NodalConstraintForce {
   int node = 0;                      ///< node index
   Eigen::Vector2d force{0, 0};       ///< (fx, fy)
+  /// The moment about z on the node's rotation (ABAQUS dof 6) [force x length],
+  /// when the constraint acts on it (an *MPC BEAM's reference node).
+  std::optional<double> moment;
 };
 
 /// Multiplier values owned by one constraint/contact object, for output.

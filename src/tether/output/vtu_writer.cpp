@@ -306,6 +306,7 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
     SparseNodal<Eigen::Vector3d> lambdas;  // constraints of 2 or 3 equations, at their first node
     bool scalar = false;
     SparseNodal<Eigen::Vector2d> force;
+    SparseNodal<double> moment;
     const auto checked = [&](const MultiplierValues& m, int node) {
       if (node < 0 || static_cast<std::size_t>(node) >= n_nodes)
         throw std::invalid_argument(fmt::format("VtuWriter: multiplier owner '{}' names node index {} outside the mesh",
@@ -326,8 +327,10 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
         seen.push_back(i);
         lambda.try_emplace(i, 0.0).first->second += m.value.front();
       }
-      for (const auto& f : m.nodal_force)
+      for (const auto& f : m.nodal_force) {
         force.try_emplace(checked(m, f.node), Eigen::Vector2d::Zero()).first->second += f.force;
+        if (f.moment) moment.try_emplace(checked(m, f.node), 0.0).first->second += *f.moment;
+      }
     }
     if (scalar)
       write_data_array<double>(sink, enc, kIndent, "LAGRANGE_MULTIPLIER", 1, n_nodes,
@@ -345,6 +348,9 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
         sparse_nodal(force, Eigen::Vector2d(Eigen::Vector2d::Zero()), [](const Eigen::Vector2d& v) { return v; });
     write_data_array<double>(sink, enc, kIndent, "CONSTRAINT_FORCE", 3, 3 * n_nodes,
                              tuples(3, [&](std::size_t i, double* t) { put_vector(t, nodal_force(i)); }));
+    if (!moment.empty())
+      write_data_array<double>(sink, enc, kIndent, "CONSTRAINT_MOMENT", 1, n_nodes,
+                               indexed(sparse_nodal(moment, 0.0, [](double v) { return v; })));
   }
   if (!r.contact.empty()) write_contact_point_data(sink, enc, kIndent, r.contact, n_nodes);
   sink.append("      </PointData>\n      <CellData Scalars=\"ElementId\">\n");

@@ -51,6 +51,9 @@ std::uint8_t vtk_cell_type(Shape shape);
 /// prescribed it equals minus the reaction force the constraint causes there
 /// (RF = internal force + constraint residual), and with Warp By Vector /
 /// Glyph it shows where and in which direction constraints push.
+/// `CONSTRAINT_MOMENT` (scalar) [force x length], written when a constraint
+/// acts on a rotation (an *MPC BEAM's reference node): the moment on that
+/// node's rotation, 0 elsewhere.
 ///
 /// `LAGRANGE_MULTIPLIER` (scalar; written when some constraint has exactly
 /// one equation): the multiplier of every single-equation constraint (LINK,
