@@ -69,6 +69,14 @@ StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::Vec
     loads.pressures.push_back(removed);
     loads.pressure_values.push_back(RampedValue{value, 0.0, -1});
   }
+  if (!step.ramp_loads) {  // AMPLITUDE=STEP: the target holds from the step's start
+    const auto hold = [](RampedValue& v) {
+      if (v.amplitude < 0) v.start = v.target;
+    };
+    for (auto& [dof, v] : loads.prescribed) hold(v);
+    for (auto& [dof, v] : loads.forces) hold(v);
+    for (RampedValue& v : loads.pressure_values) hold(v);
+  }
   return loads;
 }
 

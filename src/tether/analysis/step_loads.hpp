@@ -30,7 +30,9 @@ struct StepLoads {
 /// Builds the step's loads. `u` is the state at the start of the step (start
 /// values of prescribed dofs); `cload_end` and `pressure_end` hold the
 /// magnitudes at the end of the previous step (loads no longer listed are
-/// ramped down to zero, as ABAQUS does in a static step).
+/// ramped down to zero, as ABAQUS does in a static step). With
+/// Step::ramp_loads false (AMPLITUDE=STEP) a value without an amplitude starts
+/// at its target: applied (or removed) at the step's start and held.
 /// (node, dof) map to global unknowns through `dofs` (dof 2 is a node's
 /// rotation; ModelError when the node has none).
 StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::VectorXd& u,

@@ -23,6 +23,7 @@ struct DeckState {
   bool in_step = false;      ///< between *STEP and *END STEP
   bool seen_step = false;    ///< a *STEP has been read (model data is over)
   bool step_has_procedure = false;
+  bool step_amplitude_given = false;  ///< the current *STEP wrote AMPLITUDE=
 
   // --- history data in force (OP=MOD/NEW resolved), copied into each step at *END STEP ---
   std::vector<Prescribed> boundary;

@@ -32,9 +32,13 @@ TETHER_DECK_HANDLER(handle_dsload);
 // step_keywords.cpp
 TETHER_DECK_HANDLER(handle_step);
 TETHER_DECK_HANDLER(handle_static);
+TETHER_DECK_HANDLER(handle_dynamic);
 TETHER_DECK_HANDLER(handle_controls);
 TETHER_DECK_HANDLER(handle_end_step);
 TETHER_DECK_HANDLER(handle_restart);
+// dynamic_keywords.cpp
+TETHER_DECK_HANDLER(handle_initial_conditions);
+TETHER_DECK_HANDLER(handle_damping);
 // output_keywords.cpp
 TETHER_DECK_HANDLER(handle_node_print);
 TETHER_DECK_HANDLER(handle_el_print);

@@ -110,6 +110,13 @@ std::vector<KeywordSpec> build_table() {
        "Optional: static steps do not use it; asking for the mass of an element whose material has none is an "
        "error naming the material.",
        "`rho` with rho > 0 [mass/volume]", {}, handle_density, ""},
+      {"DAMPING", kMaterial,
+       "Rayleigh damping of the material in dynamic steps: C = ALPHA M + BETA K (K the element's tangent).",
+       "",
+       {real("ALPHA", "0", "Mass-proportional factor [1/time]."),
+        real("BETA", "0", "Stiffness-proportional factor [time]."),
+        real("STRUCTURAL", "", "Structural damping of frequency-domain procedures: refused.")},
+       handle_damping, ""},
       {"SOLID SECTION", kModelData, "Assigns a material (and thickness) to an element set.",
        "optional `thickness` (default 1; ignored for axisymmetric elements)",
        {name("ELSET", "Element set the section applies to.", true),
@@ -140,13 +147,31 @@ std::vector<KeywordSpec> build_table() {
       // --- steps ---
       {"STEP", kModelData | kBetweenSteps, "Starts a step; ends with *END STEP.", "",
        {choice("NLGEOM", "NO", {"YES", "NO"}, "Geometric nonlinearity (bare NLGEOM means YES). Omitted: as in the previous step (NO in the first); once on, it stays on in every later step, as in ABAQUS (NLGEOM=NO after it is ignored with a warning).", "YES"),
-        integer("INC", "100", "Maximum number of increments."), name("NAME", "Name of the step.")},
+        integer("INC", "100", "Maximum number of increments."), name("NAME", "Name of the step."),
+        choice("AMPLITUDE", "RAMP", {"RAMP", "STEP"},
+               "Loads and prescribed values without an amplitude: RAMP from their previous values over the step "
+               "(default of *STATIC) or STEP, applied at the step's start and held (default of *DYNAMIC).")},
        handle_step, ""},
       {"STATIC", kAnyStep, "Static procedure with automatic (or fixed, DIRECT) incrementation.",
        "`initial, period, min, max` (defaults 1, 1, 1e-5*period, period)",
        {flag("DIRECT", "Fixed increments of the initial size, no cut-back."),
         name("SOLVER", "Accepted for CalculiX compatibility and ignored (tether chooses the linear solver).")},
        handle_static, ""},
+      {"DYNAMIC", kAnyStep,
+       "Dynamic procedure: implicit HHT-alpha with Newton (default), or EXPLICIT central differences with lumped "
+       "mass and predictor-corrector contact. Needs *DENSITY on every material. Loads without an amplitude are "
+       "applied at the step's start and held unless *STEP has AMPLITUDE=RAMP. docs/theory/dynamics.md.",
+       "`initial, period, min, max` (implicit; defaults 1, 1, 1e-5*period, period); EXPLICIT: `increment, "
+       "period` (the increment is used with DIRECT, else the stable increment is computed)",
+       {real("ALPHA", "-0.05", "HHT's alpha, -1/3 <= alpha <= 0 (0: trapezoidal Newmark, no numerical damping)."),
+        flag("DIRECT", "Fixed increments of the initial size (implicit: no cut-back)."),
+        flag("EXPLICIT", "Central-difference (explicit) integration."),
+        real("HAFTOL", "", "Implicit: half-increment residual tolerance [force] of the automatic incrementation "
+                           "(without it the increment never grows past the initial one)."),
+        choice("MASS", "CONSISTENT", {"CONSISTENT", "LUMPED"},
+               "tether extension: mass matrix of the implicit procedure (EXPLICIT always lumps)."),
+        name("SOLVER", "Accepted for CalculiX compatibility and ignored (tether chooses the linear solver).")},
+       handle_dynamic, ""},
       {"CONTROLS", kAnyStep,
        "Convergence and incrementation controls; they stay in force for later steps until RESET.",
        "FIELD: `R_n, C_n, q0, qu, R_P, eps, C_eps, R_l` (R_n, C_n and eps are used); TIME INCREMENTATION: "
@@ -179,13 +204,13 @@ std::vector<KeywordSpec> build_table() {
          "line must give --restart)."}},
        handle_restart, ""},
       // --- output requests (apply to their step only) ---
-      {"NODE PRINT", kAnyStep, "Nodal values in the text report.", "variables: U, RF",
+      {"NODE PRINT", kAnyStep, "Nodal values in the text report.", "variables: U, RF; V, A (dynamic steps)",
        {name("NSET", "Node set (default: all nodes)."), frequency_param(),
         choice("TOTALS", "NO", {"YES", "ONLY", "NO"}, "Also (YES) or only (ONLY) print the sums over the set.")},
        handle_node_print, ""},
       {"EL PRINT", kAnyStep, "Element integration-point values in the text report.", "variables: S, E",
        {name("ELSET", "Element set (default: all elements)."), frequency_param()}, handle_el_print, ""},
-      {"NODE FILE", kAnyStep, "Nodal values in the result files (VTU).", "variables: U, RF",
+      {"NODE FILE", kAnyStep, "Nodal values in the result files (VTU; V and A are written in dynamic steps).", "variables: U, RF, V, A",
        {name("NSET", "Node set (default: all nodes)."), frequency_param(),
         name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
        handle_node_file, ""},
@@ -305,6 +330,10 @@ std::vector<KeywordSpec> build_table() {
                             "(0 < s <= 0.5; a C1 surface, continuous normal). Absent or 0: no smoothing (ABAQUS "
                             "smooths by 0.2 by default; tether only when asked). Quadratic master faces are refused.")},
        handle_contact_pair, ""},
+      {"INITIAL CONDITIONS", kModelData, "Initial values: TYPE=VELOCITY (the velocity at the start of the first "
+       "dynamic step). Other types are refused.",
+       "`node or node set, dof, velocity` (dof 1 or 2) [length/time]",
+       {name("TYPE", "VELOCITY (other types are refused).", true)}, handle_initial_conditions, ""},
       {"CONTACT PRINT", kAnyStep, "Contact output in the .dat report.", "variables: CSTR, CDIS (CalculiX), CSTRESS, CDISP, CFN, CFS (ABAQUS)",
        {frequency_param()}, handle_contact_output, ""},
       {"CONTACT FILE", kAnyStep, "Contact output in the result files.", "variables: CSTR, CDIS",
@@ -312,15 +341,15 @@ std::vector<KeywordSpec> build_table() {
       {"CONTACT OUTPUT", kAnyStep, "Contact output request (ABAQUS).", "variables: CSTRESS, CDISP, CFN, CFS",
        {frequency_param()}, handle_contact_output, ""},
       // --- recognised, not supported yet: a clear error, never silently dropped ---
-      {"DYNAMIC", kAnyStep, "Implicit dynamic procedure.", "", {}, nullptr, kLater},
-      {"INITIAL CONDITIONS", kModelData, "Initial values of state variables.", "", {}, nullptr, kLater},
       {"PLASTIC", kMaterial, "Metal plasticity.", "", {}, nullptr, "tether's materials are elastic only"},
       {"EXPANSION", kMaterial, "Thermal expansion.", "", {}, nullptr, "tether has no thermal analysis"},
       {"ORIENTATION", kModelData, "Local material directions.", "", {}, nullptr,
        "tether's materials are isotropic"},
       {"TRANSFORM", kModelData, "Local nodal directions.", "", {}, nullptr, kLater},
-      {"FREQUENCY", kAnyStep, "Eigenfrequency procedure.", "", {}, nullptr, "tether solves static problems"},
-      {"BUCKLE", kAnyStep, "Buckling procedure.", "", {}, nullptr, "tether solves static problems"},
+      {"FREQUENCY", kAnyStep, "Eigenfrequency procedure.", "", {}, nullptr,
+       "tether has static and dynamic (*DYNAMIC) procedures, no eigenvalue extraction"},
+      {"BUCKLE", kAnyStep, "Buckling procedure.", "", {}, nullptr,
+       "tether has static and dynamic (*DYNAMIC) procedures, no eigenvalue extraction"},
       {"HEAT TRANSFER", kAnyStep, "Heat-transfer procedure.", "", {}, nullptr, "tether has no thermal analysis"},
       {"TEMPERATURE", kAnyStep, "Prescribed temperatures.", "", {}, nullptr, "tether has no thermal analysis"},
   };

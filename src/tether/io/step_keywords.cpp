@@ -1,4 +1,4 @@
-// *STEP, *STATIC, *CONTROLS, *END STEP, *RESTART.
+// *STEP, *STATIC, *DYNAMIC, *CONTROLS, *END STEP, *RESTART.
 #include <algorithm>
 #include <optional>
 
@@ -105,6 +105,8 @@ void handle_step(DeckState& state, const KeywordBlock& block, const ParameterVal
   if (s.max_increments <= 0)
     throw InputError(block.where, "INC=" + params.text("INC") + ": expected a positive number of increments");
   s.where = block.where;
+  state.step_amplitude_given = params.given("AMPLITUDE");
+  s.ramp_loads = params.name("AMPLITUDE") != "STEP";
   if (!block.data.empty())
     state.warn(block.data[0].where(), "*STEP data lines (a step title) are ignored");
   state.model.steps.push_back(std::move(s));
@@ -115,33 +117,83 @@ void handle_step(DeckState& state, const KeywordBlock& block, const ParameterVal
   state.output_active = false;
 }
 
-void handle_static(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+namespace {
+
+/// The data line `initial, period, min, max` of *STATIC and *DYNAMIC.
+void read_increments(const KeywordBlock& block, Step& s, std::string_view keyword) {
+  if (block.data.size() > 1)
+    throw InputError(block.data[1].where(), std::string(keyword) + " has one data line: expected `initial, period, min, max`");
+  if (block.data.empty()) return;
+  const DataLine& line = block.data[0];
+  const SourceLocation at = line.where();
+  const auto f = data_fields(line, 0, 4, "`initial, period, min, max`");
+  const auto initial = real_field(f, 0, at, "initial increment");
+  if (const auto v = real_field(f, 1, at, "step period")) s.period = *v;
+  if (!(s.period > 0)) throw InputError(at, "step period " + f[1] + ": expected a period > 0");
+  s.initial_increment = initial.value_or(s.period);
+  if (!(s.initial_increment > 0 && s.initial_increment <= s.period))
+    throw InputError(at, "initial increment " + f[0] + ": expected 0 < initial <= period (" +
+                             std::to_string(s.period) + ")");
+  if (const auto v = real_field(f, 2, at, "minimum increment")) s.min_increment = *v;
+  if (const auto v = real_field(f, 3, at, "maximum increment")) s.max_increment = *v;
+  if (s.min_increment < 0 || s.min_increment > s.initial_increment)
+    throw InputError(at, "minimum increment " + f[2] + ": expected 0 <= min <= initial increment");
+  if (s.max_increment != 0 && s.max_increment < s.initial_increment)
+    throw InputError(at, "maximum increment " + f[3] + ": expected max >= initial increment");
+}
+
+void require_one_procedure(const DeckState& state, const KeywordBlock& block) {
   if (state.step_has_procedure)
-    throw InputError(block.where, "second procedure in step " + state.step().name +
-                                      ": expected one *STATIC per step");
+    throw InputError(block.where, "second procedure in step " + state.model.steps.back().name +
+                                      ": expected one *STATIC or *DYNAMIC per step");
+}
+
+/// Loads without an amplitude in a dynamic step: held from the step's start
+/// unless *STEP said AMPLITUDE=RAMP (ABAQUS's default for dynamic steps).
+void dynamic_load_default(DeckState& state, Step& s) {
+  if (!state.step_amplitude_given) s.ramp_loads = false;
+}
+
+}  // namespace
+
+void handle_static(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  require_one_procedure(state, block);
   if (params.given("SOLVER")) state.warn(block.where, "SOLVER=" + params.text("SOLVER") + " ignored");
   Step& s = state.step();
   s.direct = params.given("DIRECT");
-  if (block.data.size() > 1)
-    throw InputError(block.data[1].where(), "*STATIC has one data line: expected `initial, period, min, max`");
-  if (!block.data.empty()) {
-    const DataLine& line = block.data[0];
-    const SourceLocation at = line.where();
-    const auto f = data_fields(line, 0, 4, "`initial, period, min, max`");
-    const auto initial = real_field(f, 0, at, "initial increment");
-    if (const auto v = real_field(f, 1, at, "step period")) s.period = *v;
-    if (!(s.period > 0)) throw InputError(at, "step period " + f[1] + ": expected a period > 0");
-    s.initial_increment = initial.value_or(s.period);
-    if (!(s.initial_increment > 0 && s.initial_increment <= s.period))
-      throw InputError(at, "initial increment " + f[0] + ": expected 0 < initial <= period (" +
-                               std::to_string(s.period) + ")");
-    if (const auto v = real_field(f, 2, at, "minimum increment")) s.min_increment = *v;
-    if (const auto v = real_field(f, 3, at, "maximum increment")) s.max_increment = *v;
-    if (s.min_increment < 0 || s.min_increment > s.initial_increment)
-      throw InputError(at, "minimum increment " + f[2] + ": expected 0 <= min <= initial increment");
-    if (s.max_increment != 0 && s.max_increment < s.initial_increment)
-      throw InputError(at, "maximum increment " + f[3] + ": expected max >= initial increment");
+  read_increments(block, s, "*STATIC");
+  state.step_has_procedure = true;
+}
+
+void handle_dynamic(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  require_one_procedure(state, block);
+  if (params.given("SOLVER")) state.warn(block.where, "SOLVER=" + params.text("SOLVER") + " ignored");
+  Step& s = state.step();
+  const bool explicit_scheme = params.given("EXPLICIT");
+  s.procedure = explicit_scheme ? StepProcedure::ExplicitDynamic : StepProcedure::ImplicitDynamic;
+  s.direct = params.given("DIRECT");
+  DynamicData& d = s.dynamic;
+  if (explicit_scheme) {
+    for (std::string_view p : {"ALPHA", "HAFTOL"})
+      if (params.given(p))
+        throw InputError(block.where, std::string(p) + "= belongs to the implicit *DYNAMIC; *DYNAMIC, EXPLICIT "
+                                                       "integrates by central differences");
+    d.lumped_mass = true;
+    d.alpha = 0;
+  } else {
+    d.alpha = params.real("ALPHA");
+    if (!(d.alpha >= -1.0 / 3.0 && d.alpha <= 0))
+      throw InputError(block.where, "ALPHA=" + params.text("ALPHA") + ": expected -1/3 <= alpha <= 0 (HHT)");
+    d.lumped_mass = params.name("MASS") == "LUMPED";
+    if (params.given("HAFTOL")) {
+      d.haftol = params.real("HAFTOL");
+      if (!(d.haftol > 0)) throw InputError(block.where, "HAFTOL=" + params.text("HAFTOL") + ": expected a force > 0");
+    }
   }
+  read_increments(block, s, "*DYNAMIC");
+  if (explicit_scheme && block.data.empty())
+    throw InputError(block.where, "*DYNAMIC, EXPLICIT needs a data line: expected `increment, period`");
+  dynamic_load_default(state, s);
   state.step_has_procedure = true;
 }
 
@@ -173,10 +225,16 @@ void handle_controls(DeckState& state, const KeywordBlock& block, const Paramete
 void handle_end_step(DeckState& state, const KeywordBlock& block, const ParameterValues&) {
   if (!state.step_has_procedure)
     throw InputError(state.step().where, "step " + state.step().name +
-                                             " has no procedure: expected *STATIC between *STEP and *END STEP");
+                                             " has no procedure: expected *STATIC or *DYNAMIC between *STEP and *END STEP");
   if (!block.data.empty())
     throw InputError(block.data[0].where(), "*END STEP takes no data lines: expected a keyword line");
   Step& s = state.step();
+  if (s.procedure == StepProcedure::Static)
+    for (const OutputRequest& r : s.outputs)
+      for (const std::string& v : r.variables)
+        if (v == "V" || v == "A")
+          throw InputError(r.where, "output variable " + v + " (velocity, acceleration) exists in *DYNAMIC steps "
+                                    "only, and step " + s.name + " is *STATIC");
   s.controls = state.controls;
   s.boundary = state.boundary;
   s.cloads = state.cloads;

@@ -65,6 +65,14 @@ struct MaterialData {
   std::optional<Elastic> elastic;
   std::optional<NeoHooke> neo_hooke;
   std::optional<double> density;  ///< [mass/volume]
+  /// `*DAMPING, ALPHA=, BETA=` (ABAQUS's Rayleigh damping of the material):
+  /// in dynamic steps the element's damping matrix is C = alpha M + beta K.
+  struct Damping {
+    double alpha = 0;  ///< mass-proportional factor [1/time]
+    double beta = 0;   ///< stiffness-proportional factor [time]
+    SourceLocation where;
+  };
+  std::optional<Damping> damping;
   SourceLocation where;
 
   /// A stiffness of the material [stress] for scaling and comparing bodies:
@@ -147,9 +155,35 @@ struct OutputRequest {
   SourceLocation where;
 };
 
-/// `*STEP` ... `*END STEP` with a `*STATIC` procedure.
+/// The procedure of a step.
+enum class StepProcedure {
+  Static,           ///< `*STATIC`
+  ImplicitDynamic,  ///< `*DYNAMIC` (HHT-alpha, Newton)
+  ExplicitDynamic,  ///< `*DYNAMIC, EXPLICIT` (central difference, lumped mass)
+};
+
+/// Data of a `*DYNAMIC` step.
+struct DynamicData {
+  /// HHT's alpha in [-1/3, 0] (ALPHA=; ABAQUS's and CalculiX's default -0.05);
+  /// Newmark's beta = (1 - alpha)^2 / 4 and gamma = 1/2 - alpha follow from it.
+  double alpha = -0.05;
+  /// HAFTOL= [force]: the half-increment residual tolerance of the automatic
+  /// time incrementation; 0 = not given (fixed increments unless a cut-back).
+  double haftol = 0;
+  /// Mass matrix: lumped (MASS=LUMPED, and always for EXPLICIT) or consistent.
+  bool lumped_mass = false;
+};
+
+/// `*STEP` ... `*END STEP` with one procedure (`*STATIC` or `*DYNAMIC`).
 struct Step {
   std::string name;
+  StepProcedure procedure = StepProcedure::Static;
+  DynamicData dynamic;                ///< for the dynamic procedures
+  /// Loads and prescribed values without an amplitude: ramped over the step
+  /// from their previous values (AMPLITUDE=RAMP, the default of static steps)
+  /// or applied at the step's start and held (AMPLITUDE=STEP, the default of
+  /// dynamic steps).
+  bool ramp_loads = true;
   bool nlgeom = false;
   int max_increments = 100;           ///< INC=
   double initial_increment = 1;       ///< first increment [time]; 0 = the whole period
@@ -202,6 +236,14 @@ struct Model {
   std::vector<ContactPairData> contact_pairs;    ///< *CONTACT PAIR
 
   std::vector<Step> steps;
+  /// `*INITIAL CONDITIONS, TYPE=VELOCITY`: (node index, component 0/1, value [length/time]).
+  struct InitialVelocity {
+    int node = 0;
+    int dof = 0;
+    double value = 0;
+    SourceLocation where;
+  };
+  std::vector<InitialVelocity> initial_velocities;
   std::optional<RestartRead> restart_read;  ///< `*RESTART, READ`, when given
 
   [[nodiscard]] int n_nodes() const { return static_cast<int>(coords.size()); }
