@@ -334,9 +334,9 @@ TEST(Restart, TruncatedOrCorruptFilesAreRefusedCleanly) {
   EXPECT_NE(refusal(flipped).find("checksum mismatch"), std::string::npos) << refusal(flipped);
   EXPECT_NE(refusal(bytes + "x").find("truncated or extended"), std::string::npos);
   EXPECT_NE(refusal("*HEADING\nnot a restart file\n").find("magic"), std::string::npos);
-  std::string v2 = bytes;
-  v2[8] = 2;
-  EXPECT_NE(refusal(v2).find("format version 2"), std::string::npos) << refusal(v2);
+  std::string v3 = bytes;
+  v3[8] = 3;
+  EXPECT_NE(refusal(v3).find("format version 3"), std::string::npos) << refusal(v3);
 
   // A state with a contribution record that does not fit is refused by resume, naming the contribution.
   RestartState broken = state;

@@ -4,6 +4,7 @@
 
 #include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/increment_controller.hpp"
+#include "tether/analysis/implicit_dynamic_procedure.hpp"
 #include "tether/analysis/static_procedure.hpp"
 #include "tether/analysis/step_system.hpp"
 #include "tether/core/error.hpp"
@@ -51,10 +52,17 @@ std::string singular_explanation(const IncrementOutcome& outcome, const Discreti
                                        "move it into contact with a prescribed displacement first")));
 }
 
-/// The procedure of a step. Every step is *STATIC so far (the reader refuses
-/// the other procedures); dynamic procedures will be chosen here.
+/// The procedure of a step.
 std::unique_ptr<Procedure> make_procedure(StepSystem& system, AnalysisObserver& observer,
-                                          const AnalysisOptions& options) {
+                                          const AnalysisOptions& options, MotionState& motion) {
+  switch (system.step().procedure) {
+    case StepProcedure::ImplicitDynamic:
+      return std::make_unique<ImplicitDynamicProcedure>(system, observer, options.stream_element_results, motion);
+    case StepProcedure::ExplicitDynamic:
+      throw ModelError("*DYNAMIC, EXPLICIT is not available yet");
+    case StepProcedure::Static:
+      break;
+  }
   return std::make_unique<StaticProcedure>(system, observer, options.stream_element_results);
 }
 
@@ -174,7 +182,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                       if (index == 0) observer_.on_message(m);
                     });
   IncrementController clock(step, total_time_);
-  const std::unique_ptr<Procedure> procedure = make_procedure(system, observer_, options_);
+  const std::unique_ptr<Procedure> procedure = make_procedure(system, observer_, options_, motion_);
   if (resumed) {
     clock.restore(*resumed);
     procedure->restore(*resumed);

@@ -18,6 +18,7 @@
 
 #include "tether/analysis/analysis_observer.hpp"
 #include "tether/analysis/discretization.hpp"
+#include "tether/analysis/motion_state.hpp"
 #include "tether/analysis/newton.hpp"
 #include "tether/solvers/linear_solver.hpp"
 
@@ -113,6 +114,7 @@ class StaticAnalysis {
   std::unique_ptr<RestartState> resume_;  ///< set by resume(): where run() continues
   std::string resume_file_;
   int run_increments_ = 0;                ///< converged increments of this run (stop_after_increments)
+  MotionState motion_;                    ///< velocities and energies of dynamic steps
 };
 
 }  // namespace tether

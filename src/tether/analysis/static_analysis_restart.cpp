@@ -122,6 +122,8 @@ void StaticAnalysis::resume(const RestartState& state, const std::string& file) 
     for (const CarriedLoad& l : *loads)
       if (l.first < 0 || l.first > INT32_MAX || l.second < 0 || l.second > INT32_MAX) refuse("bad carried load");
 
+  MotionState motion;
+  if (!motion.load(state.motion, static_cast<Eigen::Index>(n))) refuse("bad dynamic state (velocities, accelerations)");
   check_contribution_records(order, state, refuse);
   load_contribution_states(order, state, refuse);
   u_ = Eigen::Map<const Eigen::VectorXd>(state.u.data(), static_cast<Eigen::Index>(n));
@@ -132,6 +134,7 @@ void StaticAnalysis::resume(const RestartState& state, const std::string& file) 
   pressure_end_.clear();
   for (const CarriedLoad& l : state.pressure_end)
     pressure_end_[{static_cast<int>(l.first), static_cast<int>(l.second)}] = l.value;
+  motion_ = std::move(motion);
   resume_ = std::make_unique<RestartState>(state);
   resume_->u.clear();
   resume_file_ = file;
@@ -156,6 +159,7 @@ RestartState StaticAnalysis::restart_state(int index, bool completed, const Anal
   r.cutbacks = summary.cutbacks;
   r.u.assign(u_.data(), u_.data() + u_.size());
   if (!completed) r.u_step_start.assign(u_step_start.data(), u_step_start.data() + u_step_start.size());
+  motion_.save(r.motion);
   for (const auto& [key, value] : cload_end_) r.cload_end.push_back({key.first, key.second, value});
   for (const auto& [key, value] : pressure_end_) r.pressure_end.push_back({key.first, key.second, value});
   for (std::size_t k = 0; k < order.size(); ++k) {

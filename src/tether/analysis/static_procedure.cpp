@@ -2,18 +2,11 @@
 
 #include <chrono>
 
-#include "tether/analysis/amplitude.hpp"
+#include "tether/analysis/acceptance.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/core/error.hpp"
 
 namespace tether {
-
-namespace {
-
-/// Newton passes of one attempt before the contributions must accept its solution.
-constexpr int kMaxAcceptancePasses = 50;
-
-}  // namespace
 
 StaticProcedure::StaticProcedure(StepSystem& system, AnalysisObserver& observer, bool stream_results)
     : system_(system),
@@ -26,12 +19,13 @@ IncrementOutcome StaticProcedure::solve_increment(const IncrementAttempt& attemp
   const IncrementTimes& t = attempt.time;
   const Discretization& disc = system_.discretization();
   const Eigen::VectorXd u_start = u;
-  apply_loads(t, u);
+  system_.apply_loads(t, u, external_);
   IncrementProblem problem(system_.assembler(), disc.dofs(), u, u_start, external_, system_.load_contributions(),
                            IncrementTime{t.step_time, t.total_time, t.dt, system_.step().nlgeom}, system_.symmetric(),
                            &disc.contact_pairs());
   int iterations = 0;
-  const NewtonOutcome newton = solve_with_acceptance(problem, iterations);
+  const NewtonOutcome newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_,
+                                                     averaged_force_, n_averaged_, iterations);
 
   IncrementOutcome out;
   out.converged = newton.status == NewtonOutcome::Status::Converged;
@@ -59,48 +53,6 @@ IncrementOutcome StaticProcedure::solve_increment(const IncrementAttempt& attemp
   else
     u = u_start;  // restore the converged state
   return out;
-}
-
-void StaticProcedure::apply_loads(const IncrementTimes& t, Eigen::VectorXd& u) {
-  const Model& model = system_.discretization().model();
-  const StepLoads& loads = system_.loads();
-  const auto magnitude = [&](const RampedValue& v) {
-    return step_magnitude(model, v.amplitude, v.start, v.target, t.step_time, t.period, t.total_time);
-  };
-  for (const auto& [dof, v] : loads.prescribed) u[dof] = magnitude(v);
-  system_.equations().update_dependents(u);
-  external_.setZero();
-  for (const auto& [dof, v] : loads.forces) external_[dof] += magnitude(v);
-  const auto& pressures = system_.pressures();
-  for (std::size_t k = 0; k < pressures.size(); ++k) pressures[k]->set_pressure(magnitude(loads.pressure_values[k]));
-}
-
-NewtonOutcome StaticProcedure::solve_with_acceptance(IncrementProblem& problem, int& iterations) {
-  NewtonOutcome outcome;
-  for (int pass = 0; pass < kMaxAcceptancePasses; ++pass) {
-    outcome = newton_.solve(problem, averaged_force_, n_averaged_,
-                            [&](int it, const IterationNorms& n) { observer_.on_iteration(it, n); });
-    iterations += outcome.iterations;
-    if (outcome.status != NewtonOutcome::Status::Converged) break;
-    bool again = false;
-    std::string iterating;
-    const EvaluationState s = problem.state();
-    try {
-      for (Contribution* c : system_.contributions())
-        if (c->on_converged(s) == Acceptance::Iterate) {
-          if (!again) iterating = c->describe();
-          again = true;
-        }
-    } catch (const ModelError& e) {
-      outcome.status = NewtonOutcome::Status::ElementFailure;
-      outcome.message = e.what();
-      break;
-    }
-    if (!again) break;
-    observer_.on_message("converged state not accepted by " + iterating + " (augmented Lagrangian update or "
-                         "contact nodes released by a contact guard): Newton pass " + std::to_string(pass + 2));
-  }
-  return outcome;
 }
 
 void StaticProcedure::complete(const IncrementAttempt& attempt, const IncrementProblem& problem, int iterations,

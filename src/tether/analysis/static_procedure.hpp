@@ -34,13 +34,6 @@ class StaticProcedure final : public Procedure {
   void restore(const RestartState& state) override;
 
  private:
-  /// Sets the prescribed values in `u` (and the dependent dofs), the nodal
-  /// forces and the pressures to their magnitudes at the end of the increment.
-  void apply_loads(const IncrementTimes& t, Eigen::VectorXd& u);
-  /// Newton, then the contributions' acceptance of its solution: another
-  /// pass while one asks for it (at most kMaxAcceptancePasses). Adds the
-  /// iterations of every pass to `iterations`.
-  NewtonOutcome solve_with_acceptance(IncrementProblem& problem, int& iterations);
   /// A converged attempt: results, commit of the history, the force average, on_results.
   void complete(const IncrementAttempt& attempt, const IncrementProblem& problem, int iterations,
                 double force_scale);

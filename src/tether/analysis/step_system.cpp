@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/constraint_checks.hpp"
 #include "tether/analysis/contact_builder.hpp"
 #include "tether/core/error.hpp"
@@ -24,6 +25,7 @@ StepSystem::StepSystem(const Discretization& discretization, const Step& step, S
                        const std::function<void(const std::string&)>& message)
     : discretization_(discretization), step_(step), settings_(settings), loads_(std::move(loads)) {
   pressures_ = discretization_.make_pressures(loads_.pressures);
+  make_inertia();
   gather_contributions();
   const std::vector<bool> prescribed = prescribed_dofs();
   if (unused_nodes_ > 0 && message)
@@ -48,6 +50,34 @@ StepSystem::StepSystem(const Discretization& discretization, const Step& step, S
 
 StepSystem::~StepSystem() = default;
 
+void StepSystem::apply_loads(const IncrementTimes& t, Eigen::VectorXd& u, Eigen::VectorXd& forces) {
+  const Model& model = discretization_.model();
+  const auto magnitude = [&](const RampedValue& v) {
+    return step_magnitude(model, v.amplitude, v.start, v.target, t.step_time, t.period, t.total_time);
+  };
+  for (const auto& [dof, v] : loads_.prescribed) u[dof] = magnitude(v);
+  equations().update_dependents(u);
+  forces.setZero(discretization_.dofs().n_dofs());
+  for (const auto& [dof, v] : loads_.forces) forces[dof] += magnitude(v);
+  for (std::size_t k = 0; k < pressures_.size(); ++k) pressures_[k]->set_pressure(magnitude(loads_.pressure_values[k]));
+}
+
+void StepSystem::make_inertia() {
+  if (step_.procedure == StepProcedure::Static) return;
+  const Model& model = discretization_.model();
+  const auto& elements = discretization_.elements();
+  const MassKind kind = step_.dynamic.lumped_mass ? MassKind::Lumped : MassKind::Consistent;
+  inertia_.reserve(elements.size());
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const int section = model.elements[e].section;
+    const MaterialData* material =
+        section >= 0 ? &model.materials[static_cast<std::size_t>(model.sections[static_cast<std::size_t>(section)].material)]
+                     : nullptr;
+    const auto damping = material && material->damping ? *material->damping : MaterialData::Damping{};
+    inertia_.push_back(std::make_unique<ElementInertia>(*elements[e], kind, damping.alpha, damping.beta, newmark_));
+  }
+}
+
 void StepSystem::gather_contributions() {
   const Discretization& disc = discretization_;
   contributions_.reserve(disc.elements().size() + disc.constraints().size() + disc.user_constraints().size() +
@@ -62,6 +92,8 @@ void StepSystem::gather_contributions() {
   }
   const auto n_contact = contributions_.size() - n_bulk;
   for (const auto& p : pressures_) contributions_.push_back(p.get()), load_contributions_.push_back(p.get());
+  if (step_.procedure == StepProcedure::ImplicitDynamic)
+    for (const auto& m : inertia_) contributions_.push_back(m.get());
 
   const auto linear = [&](const Contribution* c) { return c->linear_in_u(step_.nlgeom); };
   const auto contact_begin = contributions_.begin() + static_cast<std::ptrdiff_t>(n_bulk);

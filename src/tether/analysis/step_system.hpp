@@ -18,8 +18,10 @@
 #include <vector>
 
 #include "tether/analysis/discretization.hpp"
+#include "tether/analysis/increment_controller.hpp"
 #include "tether/analysis/step_loads.hpp"
 #include "tether/assembly/assembler.hpp"
+#include "tether/elements/element_inertia.hpp"
 #include "tether/solvers/linear_solver.hpp"
 
 namespace tether {
@@ -57,10 +59,23 @@ class StepSystem {
   /// One per loads().pressures, in that order (magnitudes set by the procedure).
   [[nodiscard]] const std::vector<std::unique_ptr<FacePressure>>& pressures() const { return pressures_; }
   /// Everything assembled, in assembly order: elements, constraints, user
-  /// constraints, each contact pair followed by its nodes, pressures.
+  /// constraints, each contact pair followed by its nodes, pressures, and in
+  /// an implicit dynamic step the elements' inertia.
   [[nodiscard]] const std::vector<Contribution*>& contributions() const { return contributions_; }
   /// The load contributions (the pressures): they size Newton's force scale.
   [[nodiscard]] const std::vector<const Contribution*>& load_contributions() const { return load_contributions_; }
+
+  /// Dynamic steps: one per element, in the order of the discretization's
+  /// elements (lumped for EXPLICIT and MASS=LUMPED); empty in static steps.
+  /// Assembled only in implicit steps.
+  [[nodiscard]] const std::vector<std::unique_ptr<ElementInertia>>& inertia() const { return inertia_; }
+  /// The Newmark data the inertia reads: set by the dynamic procedure before each attempt.
+  [[nodiscard]] NewmarkIncrement& newmark() { return newmark_; }
+
+  /// Sets the prescribed values in `u` (and the dependent dofs), the nodal
+  /// forces `forces` (over all dofs) and the pressures to their magnitudes at
+  /// the time `t` of the step (step_time, period and total_time are used).
+  void apply_loads(const IncrementTimes& t, Eigen::VectorXd& u, Eigen::VectorXd& forces);
 
   [[nodiscard]] Assembler& assembler() { return *assembler_; }
   [[nodiscard]] const EquationMap& equations() const { return assembler_->equations(); }
@@ -79,6 +94,8 @@ class StepSystem {
   [[nodiscard]] bool bulk_linear() const { return bulk_linear_; }
 
  private:
+  /// Fills inertia_ in dynamic steps (ModelError: a material without *DENSITY).
+  void make_inertia();
   /// Fills contributions_, load_contributions_ and bulk_linear_.
   void gather_contributions();
   /// The step's prescribed dofs, and the dofs of nodes no contribution uses.
@@ -92,6 +109,8 @@ class StepSystem {
   SolverSettings settings_;
   StepLoads loads_;
   std::vector<std::unique_ptr<FacePressure>> pressures_;
+  NewmarkIncrement newmark_;
+  std::vector<std::unique_ptr<ElementInertia>> inertia_;
   std::vector<Contribution*> contributions_;
   std::vector<const Contribution*> load_contributions_;
   std::unique_ptr<Assembler> assembler_;

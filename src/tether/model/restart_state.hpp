@@ -67,6 +67,9 @@ struct RestartState {
   std::vector<CarriedLoad> cload_end;     ///< (node, dof) -> magnitude at the end of the previous step
   std::vector<CarriedLoad> pressure_end;  ///< (element, face) -> magnitude at the end of the previous step
   std::vector<ContributionState> contributions;
+  /// Dynamic steps: velocities, accelerations, HHT's residual and the energy
+  /// bookkeeping (MotionState::save); empty before the first dynamic step.
+  std::vector<double> motion;
   /// The result writer's own history (the .dat CDIS sums): filled by the
   /// writer when it writes the file, opaque to the analysis; may be empty.
   std::vector<double> output_state;

@@ -80,6 +80,24 @@ struct ContactPairValues {
   bool node_based = false;
 };
 
+/// Energies of the whole model at the end of an increment of a dynamic step
+/// [energy] (totals over 2 pi for axisymmetry), ABAQUS's names. Work and
+/// dissipations accumulate from the start of the first dynamic step.
+struct EnergyTotals {
+  double kinetic = 0;    ///< ALLKE = 1/2 v^T M v
+  double strain = 0;     ///< ALLSE: stored elastic energy
+  double work = 0;       ///< ALLWK: work of loads, pressures and reactions (trapezoidal in the displacements)
+  double friction = 0;   ///< ALLFD: frictional dissipation of the contact pairs
+  double viscous = 0;    ///< ALLVD: Rayleigh damping, C v times the displacement increments (trapezoidal)
+  /// Energy the time integration removed (HHT's numerical damping, and at
+  /// impacts the contact treatment): the drop of the balance since the
+  /// start of the first dynamic step; negative means the scheme added energy.
+  double numerical = 0;
+  /// ETOTAL = ALLKE + ALLSE + ALLVD + ALLFD - ALLWK: constant for an exact
+  /// integration of an elastic model.
+  double total = 0;
+};
+
 /// Computes the integration-point values of one element on demand (streamed
 /// results: see IncrementResults::point_source).
 class ElementPointSource {
@@ -108,6 +126,10 @@ struct IncrementResults {
   int iterations = 0;
   std::vector<Eigen::Vector2d> displacement;  ///< per node
   std::vector<Eigen::Vector2d> reaction;      ///< per node: internal minus applied force at constrained dofs
+                                              ///< (plus inertia and damping forces in a dynamic step)
+  std::vector<Eigen::Vector2d> velocity;      ///< per node, dynamic steps only (else empty) [length/time]
+  std::vector<Eigen::Vector2d> acceleration;  ///< per node, dynamic steps only (else empty) [length/time^2]
+  std::optional<EnergyTotals> energy;         ///< dynamic steps only
   std::vector<Tensor4> nodal_stress;          ///< per node: average of extrapolated element values
   std::vector<Tensor4> nodal_strain;          ///< per node, as above
   std::vector<std::vector<PointValues>> points;  ///< per element, per integration point (empty when streamed)

@@ -252,6 +252,15 @@ std::string multiplier_set_name(const std::string& owner, int number) {
   return name.empty() ? fmt::format("C{}", number) : name;
 }
 
+/// The whole model's energies of a dynamic increment (one line, ABAQUS's names).
+void write_energy_block(std::string& text, const EnergyTotals& e, double time) {
+  const auto out = std::back_inserter(text);
+  fmt::format_to(out, "\n energies (ALLKE,ALLSE,ALLWK,ALLFD,ALLVD,numerical,ETOTAL) and time {:14.7E}\n\n", time);
+  fmt::format_to(out, " {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}\n", unsigned_zero(e.kinetic),
+                 unsigned_zero(e.strain), unsigned_zero(e.work), unsigned_zero(e.friction), unsigned_zero(e.viscous),
+                 unsigned_zero(e.numerical), unsigned_zero(e.total));
+}
+
 void write_multiplier_blocks(std::string& text, const std::vector<MultiplierValues>& multipliers, double time) {
   const auto out = std::back_inserter(text);
   for (std::size_t c = 0; c < multipliers.size(); ++c) {
@@ -320,10 +329,10 @@ void DatWriter::check(const Model& model, const OutputRequest& r) {
                                             r.set));
   }
   for (const auto& v : r.variables) {
-    const bool ok = nodal ? (v == "U" || v == "RF") : (v == "S" || v == "E");
+    const bool ok = nodal ? (v == "U" || v == "RF" || v == "V" || v == "A") : (v == "S" || v == "E");
     if (!ok)
       throw InputError(r.where, fmt::format("{}: variable '{}' cannot be printed (tether prints {})", keyword, v,
-                                            nodal ? "U and RF" : "S and E"));
+                                            nodal ? "U, RF, V and A" : "S and E"));
   }
 }
 
@@ -366,9 +375,10 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
   const auto relative_slip = advanced_slip(model_, results, relative_slip_);
   std::string text;
   const auto out = std::back_inserter(text);
-  bool contact_due = false;
+  bool contact_due = false, any_due = false;
   for (const auto& r : requests) {
     if (!is_due(r, results.increment, last_in_step)) continue;
+    any_due = any_due || is_print(r) || is_contact_print(r);
     if (is_contact_print(r)) {
       contact_due = true;
       for (const auto& v : r.variables) {
@@ -391,12 +401,18 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
       else if (v == "RF")
         write_nodal(out, model_, sel, results.reaction, "forces (fx,fy,fz)", !r.totals_only,
                     r.totals || r.totals_only, results.total_time);
+      else if (v == "V")
+        write_nodal(out, model_, sel, results.velocity, "velocities (vx,vy,vz)", true, false, results.total_time);
+      else if (v == "A")
+        write_nodal(out, model_, sel, results.acceleration, "accelerations (ax,ay,az)", true, false,
+                    results.total_time);
       else if (v == "S" || v == "E")
         write_points(out, model_, sel, results, v == "S");
     }
   }
   if (contact_due) write_contact_state_blocks(text, model_, results.contact, results.total_time);
   write_multiplier_blocks(text, results.multipliers, results.total_time);
+  if (results.energy && (any_due || last_in_step)) write_energy_block(text, *results.energy, results.total_time);
   out_ << text;
   out_.flush();
   if (!out_) throw std::runtime_error("error while writing '" + file_.string() + "' (disk full?)");

@@ -191,13 +191,14 @@ class DatWriter {
 
   /// Throws InputError (at the request's deck line) when a print request
   /// names an unknown set or a variable this writer does not print
-  /// (supported: NODE PRINT U, RF; EL PRINT S, E; CONTACT PRINT CSTR, CDIS,
+  /// (supported: NODE PRINT U, RF, V, A; EL PRINT S, E; CONTACT PRINT CSTR, CDIS,
   /// CSTRESS, CDISP, CFN, CFS, CELS). Other kinds pass.
   static void check(const Model& model, const OutputRequest& request);
 
   /// Writes the print requests due at this increment (see is_due()), in the
   /// order given, then the contact-state blocks (when a *CONTACT PRINT is
-  /// due), then the multiplier blocks (always), and flushes. All requests are
+  /// due), then the multiplier blocks (always), then the energies (dynamic
+  /// steps: when a print request is due, and at the step's end), and flushes. All requests are
   /// checked first, so a bad request writes nothing. Throws
   /// std::invalid_argument when a requested quantity is missing from `results`
   /// or sized wrongly for the mesh, or a contact node is paired with an

@@ -124,6 +124,7 @@ void encode_payload(Encoder& e, const RestartState& s) {
   e.u64(s.contributions.size());
   for (const ContributionState& c : s.contributions) e.i64(c.index), e.doubles(c.values);
   e.doubles(s.output_state);
+  e.doubles(s.motion);
 }
 
 RestartState decode_payload(Decoder& d) {
@@ -155,6 +156,7 @@ RestartState decode_payload(Decoder& d) {
   for (ContributionState& c : s.contributions)
     c.index = d.i64("contribution index"), c.values = d.doubles("contribution state");
   s.output_state = d.doubles("output state");
+  s.motion = d.doubles("dynamic state");
   return s;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <fstream>
 
 #include "tether/output/output_schedule.hpp"
 #include "tether/output/restart_file.hpp"
@@ -25,13 +26,13 @@ bool is_increment_vtu(const std::string& name, const std::string& job) {
 }
 
 /// Removes what an earlier run of `job` left in `directory` and this run would
-/// not replace: its .vtu files, .pvd and restart file.
+/// not replace: its .vtu files, .pvd, restart file and energy history.
 void remove_earlier_results(const std::filesystem::path& directory, const std::string& job) {
   namespace fs = std::filesystem;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(directory.empty() ? fs::path(".") : directory, ec))
     if (entry.is_regular_file() && is_increment_vtu(entry.path().filename().string(), job)) fs::remove(entry.path());
-  for (const char* extension : {".pvd", ".rst"}) fs::remove(directory / (job + extension));
+  for (const char* extension : {".pvd", ".rst", "_energy.csv"}) fs::remove(directory / (job + extension));
 }
 
 std::filesystem::path prepared(const std::filesystem::path& directory, const std::string& job) {
@@ -70,10 +71,24 @@ std::filesystem::path ResultWriter::vtu_path(int step, int increment) const {
 void ResultWriter::write_increment(const IncrementResults& results, const std::vector<OutputRequest>& requests,
                                    bool last_in_step) {
   dat_.write_increment(results, requests, last_in_step);
+  if (results.energy) write_energy_row(results);
   if (!options_.write_vtu || !vtu_due(requests, results.increment, last_in_step)) return;
   const auto file = vtu_path(results.step, results.increment);
   vtu_.write(results, file);
   pvd_.add(results.total_time, file.filename().string());
+}
+
+void ResultWriter::write_energy_row(const IncrementResults& results) {
+  const auto file = energy_path();
+  const bool fresh = !energy_started_;
+  std::ofstream out(file, fresh ? std::ios::trunc : std::ios::app);
+  if (fresh) out << "step,increment,time,ALLKE,ALLSE,ALLWK,ALLFD,ALLVD,NUMERICAL,ETOTAL\n";
+  const EnergyTotals& e = *results.energy;
+  out << fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", results.step,
+                     results.increment, results.total_time, e.kinetic, e.strain, e.work, e.friction, e.viscous,
+                     e.numerical, e.total);
+  if (!out) throw std::runtime_error("error while writing '" + file.string() + "' (disk full?)");
+  energy_started_ = true;
 }
 
 void ResultWriter::write_restart(const RestartState& state) {

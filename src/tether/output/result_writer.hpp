@@ -30,6 +30,7 @@ struct ResultWriterOptions {
 /// - `DIR/JOB.dat`: `*NODE PRINT` / `*EL PRINT` / `*CONTACT PRINT` output in
 ///   CalculiX's layout (see DatWriter);
 /// - `DIR/JOB.sta`: one line per increment attempt and a final verdict;
+/// - `DIR/JOB_energy.csv`: the energies of dynamic increments;
 /// - `DIR/JOB.rst`: the restart state (`*RESTART, WRITE`), replaced atomically.
 ///
 /// A `.vtu` is written for every increment, unless the step's requests
@@ -79,9 +80,16 @@ class ResultWriter {
   [[nodiscard]] const std::filesystem::path& pvd_path() const { return pvd_.file(); }
   [[nodiscard]] const std::filesystem::path& dat_path() const { return dat_.file(); }
   [[nodiscard]] const std::filesystem::path& sta_path() const { return status_.file(); }
+  /// `DIR/JOB_energy.csv`: one row per converged increment of a dynamic step
+  /// (step, increment, total time, ALLKE, ALLSE, ALLWK, ALLFD, ALLVD,
+  /// NUMERICAL, ETOTAL; EnergyTotals), written from the first such increment on.
+  [[nodiscard]] std::filesystem::path energy_path() const { return directory_ / (job_ + "_energy.csv"); }
   [[nodiscard]] std::filesystem::path restart_path() const { return directory_ / (job_ + ".rst"); }
 
  private:
+  /// Appends the increment's energies to energy_path() (creating it at the first).
+  void write_energy_row(const IncrementResults& results);
+
   std::filesystem::path directory_;
   std::string job_;
   ResultWriterOptions options_;
@@ -89,6 +97,7 @@ class ResultWriter {
   PvdWriter pvd_;
   DatWriter dat_;
   StatusWriter status_;
+  bool energy_started_ = false;  ///< energy_path() has been created by this writer
 };
 
 }  // namespace tether

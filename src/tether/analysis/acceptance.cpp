@@ -1,0 +1,46 @@
+#include "tether/analysis/acceptance.hpp"
+
+#include <string>
+
+#include "tether/core/error.hpp"
+
+namespace tether {
+
+namespace {
+
+/// Newton passes of one attempt before the contributions must accept its solution.
+constexpr int kMaxAcceptancePasses = 50;
+
+}  // namespace
+
+NewtonOutcome solve_with_acceptance(NewtonSolver& newton, IncrementProblem& problem,
+                                    const std::vector<Contribution*>& contributions, AnalysisObserver& observer,
+                                    double averaged_force, int n_averaged, int& iterations) {
+  NewtonOutcome outcome;
+  for (int pass = 0; pass < kMaxAcceptancePasses; ++pass) {
+    outcome = newton.solve(problem, averaged_force, n_averaged,
+                           [&](int it, const IterationNorms& n) { observer.on_iteration(it, n); });
+    iterations += outcome.iterations;
+    if (outcome.status != NewtonOutcome::Status::Converged) break;
+    bool again = false;
+    std::string iterating;
+    const EvaluationState s = problem.state();
+    try {
+      for (Contribution* c : contributions)
+        if (c->on_converged(s) == Acceptance::Iterate) {
+          if (!again) iterating = c->describe();
+          again = true;
+        }
+    } catch (const ModelError& e) {
+      outcome.status = NewtonOutcome::Status::ElementFailure;
+      outcome.message = e.what();
+      break;
+    }
+    if (!again) break;
+    observer.on_message("converged state not accepted by " + iterating + " (augmented Lagrangian update or "
+                        "contact nodes released by a contact guard): Newton pass " + std::to_string(pass + 2));
+  }
+  return outcome;
+}
+
+}  // namespace tether
