@@ -4,7 +4,9 @@ read(path) follows *INCLUDE (relative to the including file) and returns
   {"steps": [[(title, set), ...] per step: the blocks its print requests
              write at the step's last increment],
    "contact_pairs": ["SLAVE-MASTER", ...],
-   "constraints": True when the deck has *EQUATION, *MPC, *CONSTRAINT, *TIE or *PERIODIC}.
+   "constraints": True when the deck has *EQUATION, *MPC, *CONSTRAINT, *TIE or *PERIODIC,
+   "dynamic": True when a step is *DYNAMIC (its end writes the energies block;
+              *NODE PRINT V -> velocities, A -> accelerations)}.
 
 Titles are the leading words of tether's block headers (tools/datfile.py
 splits them from the set and the time), as DatWriter documents them:
@@ -21,7 +23,7 @@ writes nothing; file requests (*NODE FILE, *OUTPUT, FIELD, ...) write no
 import os
 import re
 
-_NODE_TITLES = {"U": ["displacements"], "RF": ["forces"]}
+_NODE_TITLES = {"U": ["displacements"], "RF": ["forces"], "V": ["velocities"], "A": ["accelerations"]}
 _ELEMENT_TITLES = {"S": ["stresses"], "E": ["strains"]}
 _CONTACT_TITLES = {"CSTR": "contact stress", "CSTRESS": "contact stress", "CDIS": "relative contact displacement",
                    "CDISP": "relative contact displacement"}
@@ -78,6 +80,7 @@ def read(path):
     steps, pairs, constraints = [], [], False
     current = None
     history = None  # (frequency) of the current *OUTPUT, HISTORY block, or "field"
+    dynamic = False  # a *DYNAMIC step: energies in the .dat and JOB_energy.csv
     for keyword, params, data in _blocks(path):
         if keyword in _CONSTRAINT_KEYWORDS:
             constraints = True
@@ -88,6 +91,9 @@ def read(path):
             steps.append(current)
         elif current is None:
             continue
+        elif keyword == "*DYNAMIC":
+            dynamic = True
+            current.append(("energies", ""))  # at every step's end
         elif keyword == "*OUTPUT":
             history = _frequency(params) if "HISTORY" in params else "field"
             if history != "field" and history > 0 and "VARIABLE" in params:
@@ -118,4 +124,4 @@ def read(path):
                 elif v in _CONTACT_PAIR_TITLES:
                     current += [(_CONTACT_PAIR_TITLES[v], p) for p in pairs]
             current += [("contact state", p) for p in pairs]
-    return {"steps": steps, "contact_pairs": pairs, "constraints": constraints}
+    return {"steps": steps, "contact_pairs": pairs, "constraints": constraints, "dynamic": dynamic}

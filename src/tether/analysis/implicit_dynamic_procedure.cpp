@@ -79,6 +79,13 @@ void ImplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
   nm.a_start = &motion_.a;
   nm.dt = 1, nm.beta = beta_, nm.gamma = gamma_, nm.scale = 0;  // inertia silent: the static part only
   const IncrementTimes start{0, first.total_time - first.step_time, 0, first.period, false};
+  const Step& step = system_.step();
+  observer_.on_message("*DYNAMIC step " + step.name + ": HHT alpha " + std::to_string(alpha_) + " (Newmark beta " +
+                       std::to_string(beta_) + ", gamma " + std::to_string(gamma_) + "), " +
+                       (step.dynamic.lumped_mass ? "lumped" : "consistent") + " mass; loads without an amplitude " +
+                       (step.ramp_loads ? "ramped over the step (AMPLITUDE=RAMP)"
+                                        : "applied at the step's start and held (AMPLITUDE=STEP, the default of "
+                                          "dynamic steps)"));
   system_.apply_loads(start, u, cloads_);
   const EvaluationState s{u, u, 0, start.total_time, 0, system_.step().nlgeom};
   const Eigen::VectorXd r0 = static_residual(s);

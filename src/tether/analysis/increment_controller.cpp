@@ -21,9 +21,9 @@ IncrementController::IncrementController(const Step& step, double step_start_tim
       direct_(step.direct),
       controls_(step.controls),
       step_start_time_(step_start_time) {
-  // A dynamic step's increment is chosen for accuracy: without a half-increment
-  // residual tolerance it never grows past the initial one.
-  if (step.procedure == StepProcedure::ImplicitDynamic && step.dynamic.haftol == 0) max_dt_ = std::min(max_dt_, dt_);
+  // A dynamic step's increment is chosen for accuracy, not for Newton's ease:
+  // it never grows past the initial one (there is no error estimate yet).
+  if (step.procedure == StepProcedure::ImplicitDynamic) max_dt_ = std::min(max_dt_, dt_);
 }
 
 bool IncrementController::finished() const { return step_time_ >= period_ * (1 - 1e-12); }

@@ -166,8 +166,8 @@ std::vector<KeywordSpec> build_table() {
        {real("ALPHA", "-0.05", "HHT's alpha, -1/3 <= alpha <= 0 (0: trapezoidal Newmark, no numerical damping)."),
         flag("DIRECT", "Fixed increments of the initial size (implicit: no cut-back)."),
         flag("EXPLICIT", "Central-difference (explicit) integration."),
-        real("HAFTOL", "", "Implicit: half-increment residual tolerance [force] of the automatic incrementation "
-                           "(without it the increment never grows past the initial one)."),
+        real("HAFTOL", "", "ABAQUS's half-increment residual tolerance: refused (not implemented yet); the implicit "
+                           "increment never grows past the initial one and is cut back when Newton fails."),
         choice("MASS", "CONSISTENT", {"CONSISTENT", "LUMPED"},
                "tether extension: mass matrix of the implicit procedure (EXPLICIT always lumps)."),
         name("SOLVER", "Accepted for CalculiX compatibility and ignored (tether chooses the linear solver).")},

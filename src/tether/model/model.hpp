@@ -167,9 +167,6 @@ struct DynamicData {
   /// HHT's alpha in [-1/3, 0] (ALPHA=; ABAQUS's and CalculiX's default -0.05);
   /// Newmark's beta = (1 - alpha)^2 / 4 and gamma = 1/2 - alpha follow from it.
   double alpha = -0.05;
-  /// HAFTOL= [force]: the half-increment residual tolerance of the automatic
-  /// time incrementation; 0 = not given (fixed increments unless a cut-back).
-  double haftol = 0;
   /// Mass matrix: lumped (MASS=LUMPED, and always for EXPLICIT) or consistent.
   bool lumped_mass = false;
 };
