@@ -21,7 +21,7 @@ writes nothing; file requests (*NODE FILE, *OUTPUT, FIELD, ...) write no
 import os
 import re
 
-_NODE_TITLES = {"U": ["displacements"], "RF": ["forces"]}
+_NODE_TITLES = {"U": ["displacements"], "RF": ["forces"], "V": ["velocities"], "A": ["accelerations"]}
 _ELEMENT_TITLES = {"S": ["stresses"], "E": ["strains"]}
 _CONTACT_TITLES = {"CSTR": "contact stress", "CSTRESS": "contact stress", "CDIS": "relative contact displacement",
                    "CDISP": "relative contact displacement"}

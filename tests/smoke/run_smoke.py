@@ -53,6 +53,7 @@ _COLUMNS = {
     "contact stress": (4, 0, None), "relative contact displacement": (4, 0, None),
     "contact state": (10, 0, 7), "total normal contact force": (3, None, None),
     "total shear contact force": (3, None, None), "constraint multipliers": (4, None, None),
+    "velocities": (4, 0, None), "accelerations": (4, 0, None), "energies": (7, None, None),
 }
 
 

@@ -152,7 +152,8 @@ void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
 void ExplicitDynamicProcedure::prescribed_accelerations(const Eigen::VectorXd& u, double t, double h) {
   const Model& model = system_.discretization().model();
   const double step_start = motion_time_offset_;
-  next_values_ = u;  // held dofs (unused nodes) keep their values
+  next_values_.resize(u.size());
+  for (int d : prescribed_) next_values_[d] = u[d];  // held dofs (unused nodes) keep their values
   for (const auto& [dof, v] : system_.loads().prescribed)
     next_values_[dof] = step_magnitude(model, v.amplitude, v.start, v.target, t + h, period_, step_start + t + h);
   const double h_average = 0.5 * (h_previous_ + h);
@@ -207,7 +208,10 @@ IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttemp
   IncrementOutcome out;
   std::optional<IncrementResults> results;
   const auto output_start = Clock::now();
-  if (u.allFinite() && accel_.allFinite()) results = interval_results(attempt, u);
+  // The results may stream element values from `points` until on_results returns.
+  const EvaluationState s{u, u_previous_, t.step_time, t.total_time, h_previous_, system_.step().nlgeom};
+  const DiscretizationPoints points(system_.discretization(), s);
+  if (u.allFinite() && accel_.allFinite()) results = interval_results(attempt, s, stream_results_ ? &points : nullptr);
   out.converged = results && !diverged(*results->energy);
   if (!out.converged)
     out.message = std::string("the central differences diverged (") +
@@ -234,7 +238,9 @@ bool ExplicitDynamicProcedure::diverged(const EnergyTotals& e) const {
   return !std::isfinite(e.total) || e.kinetic + e.strain > kEnergyGrowthLimit * put_in;
 }
 
-IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttempt& attempt, const Eigen::VectorXd& u) {
+IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttempt& attempt, const EvaluationState& s,
+                                                            const ElementPointSource* points) {
+  const Eigen::VectorXd& u = s.u;
   const Discretization& disc = system_.discretization();
   const DofMap& dofs = disc.dofs();
   const IncrementTimes& t = attempt.time;
@@ -250,10 +256,7 @@ IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttem
   Eigen::VectorXd reaction = residual_;
   reaction.head(n_disp) += mass_.head(n_disp).cwiseProduct(accel_.head(n_disp));
 
-  const EvaluationState s{u, u_previous_, t.step_time, t.total_time, h_previous_, system_.step().nlgeom};
-  const DiscretizationPoints point_source(disc, s);
-  IncrementResults results =
-      build_results(disc, s, reaction, system_.equations(), stream_results_ ? &point_source : nullptr);
+  IncrementResults results = build_results(disc, s, reaction, system_.equations(), points);
   results.velocity.resize(static_cast<std::size_t>(dofs.n_nodes()));
   results.acceleration.resize(results.velocity.size());
   for (int i = 0; i < dofs.n_nodes(); ++i)

@@ -27,6 +27,7 @@
 #include "tether/analysis/analysis_observer.hpp"
 #include "tether/analysis/motion_state.hpp"
 #include "tether/analysis/procedure.hpp"
+#include "tether/analysis/results_builder.hpp"
 #include "tether/analysis/stable_increment.hpp"
 #include "tether/analysis/step_system.hpp"
 
@@ -82,8 +83,11 @@ class ExplicitDynamicProcedure final : public Procedure {
   void work_force(Eigen::VectorXd& out) const;
   /// One explicit increment h from step time t to t + h.
   void advance(Eigen::VectorXd& u, double t, double h);
-  /// Results and energies at the end of an interval (also sets the motion state).
-  IncrementResults interval_results(const IncrementAttempt& attempt, const Eigen::VectorXd& u);
+  /// Results and energies at the end of an interval, state `s` (also sets the
+  /// motion state); `points` (may be null) streams element values and must
+  /// outlive the results.
+  IncrementResults interval_results(const IncrementAttempt& attempt, const EvaluationState& s,
+                                    const ElementPointSource* points);
   /// The energy in the model (ALLKE + ALLSE) is not finite or more than
   /// kEnergyGrowthLimit times what was put in (the balance's start plus |ALLWK|).
   [[nodiscard]] bool diverged(const EnergyTotals& e) const;
