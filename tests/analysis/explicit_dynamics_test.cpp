@@ -276,5 +276,106 @@ TEST(ExplicitDynamics, UnsupportedContributionsAreRefusedByName) {
   EXPECT_NE(nd.summary.message.find("STEEL"), std::string::npos) << nd.summary.message;
 }
 
+
+/// The bar of bar_deck (every node held in y) at rest against a rigid wall:
+/// one CPE4 left of x = 0 (3 h tall, every node held) whose right face is
+/// the master of the bar's left end. The bar moves at -v0.
+std::string wall_deck(int n, double h, double v0, double period) {
+  std::string deck = bar_deck(n, h, "", "*DYNAMIC, EXPLICIT\n, " + num(period) + "\n");
+  const int w = 2 * n + 10;
+  std::ostringstream wall;
+  wall.precision(17);
+  wall << "*NODE\n" << w + 1 << ", " << -h << ", " << -h << "\n" << w + 2 << ", 0, " << -h << "\n" << w + 3 << ", 0, "
+       << 2 * h << "\n" << w + 4 << ", " << -h << ", " << 2 * h << "\n*ELEMENT, TYPE=CPE4, ELSET=WALL\n" << n + 1 << ", "
+       << w + 1 << ", " << w + 2 << ", " << w + 3 << ", " << w + 4 << "\n*NSET, NSET=WALLN, GENERATE\n" << w + 1 << ", "
+       << w + 4 << ", 1\n*SOLID SECTION, ELSET=WALL, MATERIAL=STEEL\n1.\n*SURFACE, NAME=BAREND\n1, S4\n"
+       << "*SURFACE, NAME=WALLFACE\n" << n + 1 << ", S2\n*SURFACE INTERACTION, NAME=I\n"
+       << "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nBAREND, WALLFACE\n*BOUNDARY\nWALLN, 1, 2\n"
+       << "*INITIAL CONDITIONS, TYPE=VELOCITY\nALLN, 1, " << -v0 << "\n";
+  deck.replace(deck.find("*STEP"), 5, wall.str() + "*STEP");
+  return deck;
+}
+
+TEST(ExplicitContact, ElasticBarHitsARigidWall) {
+  // Contact lasts 2 L / c_p at the force rho c_p v0 A; the bar leaves at +v0.
+  const int n = 100;
+  const double h = 0.01, v0 = 1, length = n * h, duration = 2 * length / kCp;
+  const DeckRun run = run_deck_text(wall_deck(n, h, v0, 1.1 * duration));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const double expected = kRho * kCp * v0 * h;
+  double force_sum = 0, previous_force = 0, previous_time = 0, released = -1, worst_penetration = 0;
+  int n_force = 0;
+  for (const IncrementResults& r : run.recorder.results) {
+    double force = 0;
+    for (int node : run.model.node_sets.at("WALLN")) force += r.reaction[static_cast<std::size_t>(node)].x();
+    ASSERT_EQ(r.contact.size(), 1u);
+    EXPECT_NEAR(r.contact[0].total_force.x(), force, 1e-9 * expected);  // the pair's force is the wall's
+    if (r.step_time > 0.05 * duration && r.step_time < 0.95 * duration) force_sum += force, ++n_force;
+    // Release: the force falls through half its value (linear between reports).
+    if (released < 0 && previous_force > 0.5 * expected && force <= 0.5 * expected)
+      released = previous_time + (r.step_time - previous_time) * (previous_force - 0.5 * expected) / (previous_force - force);
+    previous_force = force, previous_time = r.step_time;
+    for (int node : run.model.node_sets.at("LEFT"))
+      worst_penetration = std::max(worst_penetration, -r.displacement[static_cast<std::size_t>(node)].x());
+  }
+  double mean_velocity = 0;
+  for (int node : run.model.node_sets.at("ALLN")) mean_velocity += run.last().velocity[static_cast<std::size_t>(node)].x();
+  mean_velocity /= static_cast<double>(run.model.node_sets.at("ALLN").size());
+  const double force = force_sum / n_force;
+  std::printf("contact force %.6g against %.6g (%.3g %%), duration %.6g against %.6g (%.3g %%), rebound %.6g "
+              "(%.3g %%), penetration %.3g, numerical energy %.3g of %.6g\n",
+              force, expected, 100 * (force / expected - 1), released, duration, 100 * (released / duration - 1),
+              mean_velocity, 100 * (mean_velocity / v0 - 1), worst_penetration, run.last().energy->numerical,
+              run.recorder.results.front().energy->total);
+  EXPECT_NEAR(force / expected, 1, 0.02);
+  EXPECT_NEAR(released / duration, 1, 0.02);
+  EXPECT_NEAR(mean_velocity / v0, 1, 0.02);
+  EXPECT_LT(worst_penetration, 1e-12 * h);  // a rigid master: the correction is exact
+}
+
+TEST(ExplicitContact, CorrectorConservesLinearMomentum) {
+  // Two free unit-density squares: A (0.8 x 0.8) moving at (2, 0.5) onto B
+  // (1 x 1) at rest, A's right face the slave, B's left face the master;
+  // they touch at t = 0, slide along the face and part.
+  const std::string deck =
+      "*NODE\n1, -0.8, 0.1\n2, 0, 0.1\n3, 0, 0.9\n4, -0.8, 0.9\n5, 0, 0\n6, 1, 0\n7, 1, 1\n8, 0, 1\n"
+      "*ELEMENT, TYPE=CPE4, ELSET=A\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=CPE4, ELSET=B\n2, 5, 6, 7, 8\n"
+      "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n*SOLID SECTION, ELSET=A, MATERIAL=M\n"
+      "*SOLID SECTION, ELSET=B, MATERIAL=M\n*SURFACE, NAME=AR\n1, S2\n*SURFACE, NAME=BL\n2, S4\n"
+      "*SURFACE INTERACTION, NAME=I\n*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nAR, BL\n"
+      "*NSET, NSET=AN\n1, 2, 3, 4\n*INITIAL CONDITIONS, TYPE=VELOCITY\nAN, 1, 2.\nAN, 2, 0.5\n"
+      "*STEP\n*DYNAMIC, EXPLICIT\n, 0.2\n*END STEP\n";
+  const DeckRun run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const double mass_a = 0.64 / 4, mass_b = 0.25;  // lumped, per node
+  const Eigen::Vector2d initial(4 * mass_a * 2, 4 * mass_a * 0.5);
+  bool touched = false;
+  for (const IncrementResults& r : run.recorder.results) {
+    Eigen::Vector2d momentum(0, 0);
+    for (int i = 0; i < 8; ++i) momentum += (i < 4 ? mass_a : mass_b) * r.velocity[static_cast<std::size_t>(i)];
+    EXPECT_NEAR((momentum - initial).norm(), 0, 1e-13 * initial.norm()) << "time " << r.step_time;
+    touched = touched || r.contact[0].total_force.norm() > 0;
+    EXPECT_GE(r.energy->numerical, -1e-12);  // the kinematic corrector never adds energy here
+  }
+  EXPECT_TRUE(touched);
+  // B was pushed along x only (frictionless, vertical face): its y momentum stays 0.
+  double b_momentum_y = 0, b_momentum_x = 0;
+  for (int i = 4; i < 8; ++i) {
+    b_momentum_x += mass_b * run.last().velocity[static_cast<std::size_t>(i)].x();
+    b_momentum_y += mass_b * run.last().velocity[static_cast<std::size_t>(i)].y();
+  }
+  EXPECT_GT(b_momentum_x, 0.1 * initial.x());
+  EXPECT_NEAR(b_momentum_y, 0, 0.02 * initial.norm());
+}
+
+TEST(ExplicitContact, FrictionIsRefusedByName) {
+  std::string deck = wall_deck(4, 0.01, 1, 1e-5);
+  deck.replace(deck.find("*SURFACE INTERACTION, NAME=I\n"), 29, "*SURFACE INTERACTION, NAME=I\n*FRICTION\n0.3\n");
+  const DeckRun run = run_deck_text(deck);
+  EXPECT_FALSE(run.summary.completed);
+  EXPECT_NE(run.summary.message.find("does not support friction"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("BAREND-WALLFACE"), std::string::npos) << run.summary.message;
+}
+
 }  // namespace
 }  // namespace tether

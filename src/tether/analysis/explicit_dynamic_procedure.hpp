@@ -11,6 +11,9 @@
 /// those velocities. Full-step velocities v_n = v_{n-1/2} + h/2 a_n are what
 /// the results, the kinetic energy and the next step see.
 ///
+/// Contact: ExplicitContact's predictor–corrector adds the contact forces
+/// at t_n before the velocities and positions are advanced.
+///
 /// Time stepping: the explicit increment is the data line's increment with
 /// DIRECT (used as given, with a warning above the stable estimate) and
 /// otherwise kSafetyFactor times the element-by-element stable increment
@@ -22,8 +25,10 @@
 /// docs/theory/explicit_dynamics.md.
 
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
+#include "tether/analysis/explicit_contact.hpp"
 #include "tether/analysis/analysis_observer.hpp"
 #include "tether/analysis/motion_state.hpp"
 #include "tether/analysis/procedure.hpp"
@@ -47,8 +52,8 @@ class ExplicitDynamicProcedure final : public Procedure {
 
   /// `system`, `observer` and `motion` must outlive the procedure; `u` is the
   /// state at the step's start (for the stable increment). Throws ModelError
-  /// for what the explicit scheme does not support (contact, constraints,
-  /// user constraints, eliminated dofs, damping), naming it.
+  /// for what the explicit scheme does not support (constraints, user
+  /// constraints, eliminated dofs, damping; contact other than hard and frictionless), naming it.
   ExplicitDynamicProcedure(StepSystem& system, AnalysisObserver& observer, bool stream_results, MotionState& motion,
                            const Eigen::VectorXd& u);
 
@@ -81,6 +86,9 @@ class ExplicitDynamicProcedure final : public Procedure {
   void prescribed_accelerations(const Eigen::VectorXd& u, double t, double h);
   /// Forces doing work: applied forces at free dofs, the reactions r + m a at prescribed ones.
   void work_force(Eigen::VectorXd& out) const;
+  /// The contact forces at t_n (ExplicitContact::correct) for the positions
+  /// the next increment h would predict from the state `u`, half_velocity_, accel_.
+  void contact_force(const Eigen::VectorXd& u, double h, Eigen::VectorXd& force);
   /// One explicit increment h from step time t to t + h.
   void advance(Eigen::VectorXd& u, double t, double h);
   /// Results and energies at the end of an interval, state `s` (also sets the
@@ -97,6 +105,8 @@ class ExplicitDynamicProcedure final : public Procedure {
   bool stream_results_;
   MotionState& motion_;
   StableIncrement stable_;
+  std::unique_ptr<ExplicitContact> contact_;  ///< null without contact pairs
+  Eigen::VectorXd contact_force_, predicted_;  ///< contact forces at t_n; scratch predicted displacements
   double limit_ = 0;
   bool started_ = false;
   std::vector<int> free_, prescribed_;   ///< displacement dofs that move by the scheme / by their values
