@@ -7,7 +7,8 @@ keys title, set, time and rows (lists of floats).
 Contact headers are read too: ccx's `<title> for all contact elements and time
 <T>` (`forall` in ccx's CELS header) and `<title> for time <T>` (set ""), and
 tether's `<title> for pair <NAME> and time <T>` (set NAME, e.g.
-`last_block(blocks, "contact state", "SLAVE-MASTER")`).
+`last_block(blocks, "contact state", "SLAVE-MASTER")`). A dynamic increment's
+energies read as `energies (ALLKE,...) and time <T>` (set "").
 """
 import re
 
@@ -15,6 +16,8 @@ _HEADER = re.compile(r"^\s*(?P<title>\S.*?)\s+for\s*set\s+(?P<set>\S+)\s+and\s+t
 _CONTACT_HEADER = re.compile(
     r"^\s*(?P<title>\S.*?)\s*\bfor\s*(?:pair\s+(?P<set>\S+)\s+and\s+|all\s+contact\s+elements\s+and\s+)?"
     r"time\s*(?P<time>[-+0-9.]\S*)\s*$")
+# A whole-model block of a dynamic increment: `energies (ALLKE,...) and time <T>` (set "").
+_MODEL_HEADER = re.compile(r"^\s*(?P<title>energies\s*\(.*?\))\s+and\s+time\s+(?P<time>\S+)\s*$")
 
 
 def _number(token):
@@ -27,9 +30,10 @@ def parse(text):
     for number, line in enumerate(text.splitlines(), start=1):
         if not line.strip():
             continue
-        header = _HEADER.match(line) or _CONTACT_HEADER.match(line)
+        header = _HEADER.match(line) or _CONTACT_HEADER.match(line) or _MODEL_HEADER.match(line)
         if header:
-            current = {"title": header["title"], "set": header["set"] or "", "time": _number(header["time"]),
+            named = header.groupdict().get("set")
+            current = {"title": header["title"], "set": named or "", "time": _number(header["time"]),
                        "rows": []}
             blocks.append(current)
             continue

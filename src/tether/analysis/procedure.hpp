@@ -53,6 +53,11 @@ class Procedure {
   /// at the converged state. Exceptions from the observer propagate.
   virtual IncrementOutcome solve_increment(const IncrementAttempt& attempt, Eigen::VectorXd& u) = 0;
 
+  /// The step as the step loop's IncrementController should step it: the
+  /// step itself, unless the procedure reports at intervals of its own (the
+  /// explicit one: fixed report intervals, each of many explicit increments).
+  [[nodiscard]] virtual Step time_stepping(const Step& step) const { return step; }
+
   /// Time spent in this step so far: evaluation, linear solver, output.
   [[nodiscard]] virtual SolveTiming timing() const = 0;
 

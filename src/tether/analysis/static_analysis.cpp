@@ -4,6 +4,7 @@
 
 #include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/increment_controller.hpp"
+#include "tether/analysis/explicit_dynamic_procedure.hpp"
 #include "tether/analysis/implicit_dynamic_procedure.hpp"
 #include "tether/analysis/static_procedure.hpp"
 #include "tether/analysis/step_system.hpp"
@@ -54,12 +55,13 @@ std::string singular_explanation(const IncrementOutcome& outcome, const Discreti
 
 /// The procedure of a step.
 std::unique_ptr<Procedure> make_procedure(StepSystem& system, AnalysisObserver& observer,
-                                          const AnalysisOptions& options, MotionState& motion) {
+                                          const AnalysisOptions& options, MotionState& motion,
+                                          const Eigen::VectorXd& u) {
   switch (system.step().procedure) {
     case StepProcedure::ImplicitDynamic:
       return std::make_unique<ImplicitDynamicProcedure>(system, observer, options.stream_element_results, motion);
     case StepProcedure::ExplicitDynamic:
-      throw ModelError("*DYNAMIC, EXPLICIT is not available yet");
+      return std::make_unique<ExplicitDynamicProcedure>(system, observer, options.stream_element_results, motion, u);
     case StepProcedure::Static:
       break;
   }
@@ -181,8 +183,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
                     [&](const std::string& m) {
                       if (index == 0) observer_.on_message(m);
                     });
-  IncrementController clock(step, total_time_);
-  const std::unique_ptr<Procedure> procedure = make_procedure(system, observer_, options_, motion_);
+  const std::unique_ptr<Procedure> procedure = make_procedure(system, observer_, options_, motion_, u_);
+  IncrementController clock(procedure->time_stepping(step), total_time_);
   if (resumed) {
     clock.restore(*resumed);
     procedure->restore(*resumed);

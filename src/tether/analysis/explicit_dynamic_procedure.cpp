@@ -1,0 +1,321 @@
+#include "tether/analysis/explicit_dynamic_procedure.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "tether/analysis/amplitude.hpp"
+#include "tether/analysis/results_builder.hpp"
+#include "tether/core/error.hpp"
+
+namespace tether {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// Adds a contribution's local residual times `factor` into a global vector.
+void scatter(const Contribution& c, const Eigen::VectorXd& local, double factor, Eigen::VectorXd& out) {
+  const auto dofs = c.dofs();
+  for (std::size_t i = 0; i < dofs.size(); ++i) out[dofs[i]] += factor * local[static_cast<Eigen::Index>(i)];
+}
+
+}  // namespace
+
+ExplicitDynamicProcedure::ExplicitDynamicProcedure(StepSystem& system, AnalysisObserver& observer,
+                                                   bool stream_results, MotionState& motion, const Eigen::VectorXd& u)
+    : system_(system), observer_(observer), stream_results_(stream_results), motion_(motion) {
+  check_supported();
+  if (!system.discretization().contact_pairs().empty())
+    contact_ = std::make_unique<ExplicitContact>(system.discretization());
+  update_limit(u, 0, true);
+}
+
+void ExplicitDynamicProcedure::check_supported() const {
+  const Discretization& disc = system_.discretization();
+  const std::string scheme = "*DYNAMIC, EXPLICIT (step " + system_.step().name + ") does not support ";
+  if (!disc.constraints().empty())
+    throw ModelError(scheme + "constraints with Lagrange multipliers yet: " + disc.constraints().front()->describe());
+  if (!disc.user_constraints().empty())
+    throw ModelError(scheme + "user constraints yet: " + disc.user_constraints().front()->describe());
+  if (!disc.elimination_rows().empty())
+    throw ModelError(scheme + "eliminated dofs (*EQUATION, *MPC, *TIE by elimination) yet: " +
+                     std::to_string(disc.elimination_rows().size()) + " dependent dof(s)");
+  for (const auto& m : system_.inertia())
+    if (m->damped())
+      throw ModelError(scheme + "*DAMPING (Rayleigh) yet: " + m->element().describe() + " is damped");
+  if (system_.inertia().empty()) throw ModelError(scheme + "a model without elements");
+}
+
+void ExplicitDynamicProcedure::update_limit(const Eigen::VectorXd& u, double total_time, bool report) {
+  const Step& step = system_.step();
+  stable_ = stable_increment(system_.inertia(), EvaluationState{u, u, 0, total_time, 0, step.nlgeom});
+  const std::string where =
+      system_.inertia()[static_cast<std::size_t>(stable_.element)]->element().describe();
+  if (step.direct) {
+    limit_ = step.initial_increment;
+    if (report && limit_ > stable_.dt)
+      observer_.on_message("warning: step " + step.name + ": the DIRECT increment " + format_time(limit_) +
+                           " exceeds the stable time increment " + format_time(stable_.dt) + " (set by " + where +
+                           "): the central differences will likely diverge");
+  } else {
+    limit_ = kSafetyFactor * stable_.dt;
+  }
+  if (report)
+    observer_.on_message("step " + step.name + ": stable time increment " + format_time(stable_.dt) + " (2/omega_max, " +
+                         where + "); explicit increment " + format_time(limit_) +
+                         (step.direct ? " (DIRECT)" : " (safety factor " + format_time(kSafetyFactor) + ")"));
+}
+
+Step ExplicitDynamicProcedure::time_stepping(const Step& step) const {
+  Step s = step;
+  const double period = step.period > 0 ? step.period : 1;
+  const double n_explicit = std::max(1.0, std::ceil(period / limit_ - 1e-9));
+  const int n_reports = static_cast<int>(std::min<double>(kReportIntervals, n_explicit));
+  s.direct = true;
+  s.period = period;
+  s.initial_increment = period / n_reports;
+  s.min_increment = 0;
+  s.max_increment = 0;
+  s.max_increments = n_reports + 2;  // the controller snaps a last sliver onto the end
+  return s;
+}
+
+void ExplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::VectorXd& u) {
+  const Discretization& disc = system_.discretization();
+  const DofMap& dofs = disc.dofs();
+  const auto n = static_cast<Eigen::Index>(dofs.n_dofs());
+  if (!motion_.started) {
+    motion_.v = Eigen::VectorXd::Zero(n);
+    for (const auto& iv : disc.model().initial_velocities) motion_.v[dofs.displacement(iv.node, iv.dof)] = iv.value;
+  }
+  mass_ = Eigen::VectorXd::Zero(n);
+  for (const auto& m : system_.inertia()) {
+    const auto d = m->dofs();
+    for (std::size_t i = 0; i < d.size(); ++i) mass_[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+  }
+  inverse_mass_ = Eigen::VectorXd::Zero(n);
+  free_.clear(), prescribed_.clear();
+  for (int d = 0; d < dofs.n_displacement_dofs(); ++d) {
+    if (system_.equations().is_prescribed(d)) {
+      prescribed_.push_back(d);
+      continue;
+    }
+    if (!(mass_[d] > 0))
+      throw ModelError("*DYNAMIC, EXPLICIT: " + dofs.describe(d) + " is free but carries no mass");
+    free_.push_back(d);
+    inverse_mass_[d] = 1 / mass_[d];
+  }
+  const double step_start = first.total_time - first.step_time;
+  system_.apply_loads(IncrementTimes{0, step_start, 0, first.period, false}, u, cloads_);
+  half_velocity_ = motion_.v;
+  accel_ = Eigen::VectorXd::Zero(n);
+  u_previous_ = u;
+  force_previous_ = force_ = step_u_ = Eigen::VectorXd::Zero(n);
+  h_previous_ = 0;
+  evaluate_forces(EvaluationState{u, u, 0, step_start, 0, system_.step().nlgeom});
+  if (!motion_.started) {
+    EnergyTotals& e = motion_.energy;
+    e = EnergyTotals{};
+    for (int d : free_) e.kinetic += 0.5 * mass_[d] * motion_.v[d] * motion_.v[d];
+    const EvaluationState s{u, u, 0, step_start, 0, system_.step().nlgeom};
+    for (const auto& el : disc.elements()) e.strain += el->strain_energy(s);
+    e.total = motion_.balance_start = e.kinetic + e.strain;
+    motion_.started = true;
+  }
+  work_ = motion_.energy.work;
+}
+
+void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
+  residual_.setZero(s.u.size());
+  for (const auto& el : system_.discretization().elements()) {
+    local_.reset(static_cast<Eigen::Index>(el->dofs().size()));
+    el->evaluate(s, local_, false);
+    scatter(*el, local_.residual, 1, residual_);
+  }
+  external_ = cloads_;
+  for (const auto& p : system_.pressures()) {
+    local_.reset(static_cast<Eigen::Index>(p->dofs().size()));
+    p->evaluate(s, local_, false);
+    scatter(*p, local_.residual, -1, external_);
+  }
+  residual_ -= external_;
+  for (int d : free_) accel_[d] = -residual_[d] * inverse_mass_[d];
+}
+
+void ExplicitDynamicProcedure::prescribed_accelerations(const Eigen::VectorXd& u, double t, double h) {
+  const Model& model = system_.discretization().model();
+  const double step_start = motion_time_offset_;
+  next_values_.resize(u.size());
+  for (int d : prescribed_) next_values_[d] = u[d];  // held dofs (unused nodes) keep their values
+  for (const auto& [dof, v] : system_.loads().prescribed)
+    next_values_[dof] = step_magnitude(model, v.amplitude, v.start, v.target, t + h, period_, step_start + t + h);
+  const double h_average = 0.5 * (h_previous_ + h);
+  for (int d : prescribed_) {
+    const double v_next = (next_values_[d] - u[d]) / h;
+    if (h_previous_ == 0) half_velocity_[d] = v_next;  // the prescribed motion's own velocity from the start
+    accel_[d] = (v_next - half_velocity_[d]) / h_average;
+  }
+}
+
+void ExplicitDynamicProcedure::work_force(Eigen::VectorXd& out) const {
+  out = external_;
+  for (int d : prescribed_) out[d] += residual_[d] + mass_[d] * accel_[d];
+}
+
+void ExplicitDynamicProcedure::contact_force(const Eigen::VectorXd& u, double h, Eigen::VectorXd& force) {
+  const double h_average = 0.5 * (h_previous_ + h);
+  const int n_disp = system_.discretization().dofs().n_displacement_dofs();
+  predicted_ = u;
+  for (int d = 0; d < n_disp; ++d) predicted_[d] += h * (half_velocity_[d] + h_average * accel_[d]);
+  contact_->correct(predicted_, inverse_mass_, h * h_average, force);
+}
+
+void ExplicitDynamicProcedure::advance(Eigen::VectorXd& u, double t, double h) {
+  prescribed_accelerations(u, t, h);
+  if (contact_) {  // the contact forces at t_n, from the predicted positions
+    contact_force(u, h, contact_force_);
+    accel_ += inverse_mass_.cwiseProduct(contact_force_);
+    residual_ -= contact_force_;
+  }
+  work_force(force_);
+  work_ += 0.5 * (force_previous_ + force_).dot(step_u_);
+  std::swap(force_previous_, force_);
+  const double h_average = 0.5 * (h_previous_ + h);
+  const int n_disp = system_.discretization().dofs().n_displacement_dofs();
+  u_previous_ = u;
+  for (int d = 0; d < n_disp; ++d) {
+    half_velocity_[d] += h_average * accel_[d];
+    u[d] += h * half_velocity_[d];
+  }
+  const double t_next = t + h;
+  system_.apply_loads(IncrementTimes{t_next, motion_time_offset_ + t_next, h, period_, false}, u, cloads_);
+  for (int d = 0; d < n_disp; ++d) step_u_[d] = u[d] - u_previous_[d];
+  const EvaluationState s{u, u_previous_, t_next, motion_time_offset_ + t_next, h, system_.step().nlgeom};
+  evaluate_forces(s);
+  for (const auto& el : system_.discretization().elements()) el->commit(s);
+  h_previous_ = h;
+  ++n_increments_;
+}
+
+IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttempt& attempt, Eigen::VectorXd& u) {
+  const IncrementTimes& t = attempt.time;
+  period_ = t.period;
+  motion_time_offset_ = t.total_time - t.step_time;
+  if (!started_) start_step(t, u), started_ = true;
+  const double t_start = t.step_time - t.dt;
+  if (system_.step().nlgeom && n_increments_ > 0) update_limit(u, t.total_time - t.dt, false);
+  const int k = static_cast<int>(std::max(1.0, std::ceil(t.dt / limit_ - 1e-9)));
+  const double h = t.dt / k;
+  const Eigen::VectorXd u_start = u;
+  const auto evaluation_start = Clock::now();
+  for (int i = 0; i < k; ++i) advance(u, i + 1 == k ? t.step_time - h : t_start + i * h, h);
+  evaluation_seconds_ += seconds_since(evaluation_start);
+
+  IncrementOutcome out;
+  std::optional<IncrementResults> results;
+  const auto output_start = Clock::now();
+  // The results may stream element values from `points` until on_results returns.
+  const EvaluationState s{u, u_previous_, t.step_time, t.total_time, h_previous_, system_.step().nlgeom};
+  const DiscretizationPoints points(system_.discretization(), s);
+  if (u.allFinite() && accel_.allFinite()) results = interval_results(attempt, s, stream_results_ ? &points : nullptr);
+  out.converged = results && !diverged(*results->energy);
+  if (!out.converged)
+    out.message = std::string("the central differences diverged (") +
+                  (results ? "the energy grew past " + format_time(kEnergyGrowthLimit) + " times the energy put in"
+                           : "displacements not finite") +
+                  ") by step time " + format_time(t.step_time) + " with explicit increments of " + format_time(h) +
+                  " against a stable increment of " + format_time(stable_.dt);
+  IncrementReport r;
+  r.step = attempt.step, r.increment = attempt.increment, r.attempt = attempt.attempt;
+  r.total_iterations = attempt.prior_iterations;
+  r.step_time = t.step_time, r.total_time = t.total_time, r.increment_size = t.dt;
+  r.converged = out.converged, r.note = out.message;
+  observer_.on_increment(r);
+  if (out.converged)
+    observer_.on_results(*results, system_.step(), t.ends_step);
+  else
+    u = u_start;
+  output_seconds_ += seconds_since(output_start);
+  return out;
+}
+
+bool ExplicitDynamicProcedure::diverged(const EnergyTotals& e) const {
+  const double put_in = std::abs(motion_.balance_start) + std::abs(e.work);
+  return !std::isfinite(e.total) || e.kinetic + e.strain > kEnergyGrowthLimit * put_in;
+}
+
+IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttempt& attempt, const EvaluationState& s,
+                                                            const ElementPointSource* points) {
+  const Eigen::VectorXd& u = s.u;
+  const Discretization& disc = system_.discretization();
+  const DofMap& dofs = disc.dofs();
+  const IncrementTimes& t = attempt.time;
+  prescribed_accelerations(u, t.step_time, h_previous_);
+  // The state at t_n with the contact forces of t_n, as the next increment will find them.
+  Eigen::VectorXd accel = accel_, residual = residual_;
+  if (contact_) {
+    contact_force(u, h_previous_, contact_force_);
+    accel += inverse_mass_.cwiseProduct(contact_force_);
+    residual -= contact_force_;
+  }
+  const int n_disp = dofs.n_displacement_dofs();
+  motion_.v = Eigen::VectorXd::Zero(u.size());
+  motion_.v.head(n_disp) = half_velocity_.head(n_disp) + (0.5 * h_previous_) * accel.head(n_disp);
+  motion_.a = accel;
+  force_ = external_;
+  for (int d : prescribed_) force_[d] += residual[d] + mass_[d] * accel[d];
+  motion_.work_force = force_;
+  motion_.static_residual = residual;
+  motion_.damping_force = Eigen::VectorXd::Zero(u.size());
+  Eigen::VectorXd reaction = residual;
+  reaction.head(n_disp) += mass_.head(n_disp).cwiseProduct(accel.head(n_disp));
+
+  IncrementResults results = build_results(disc, s, reaction, system_.equations(), points);
+  if (contact_) results.contact = contact_->values();
+  results.velocity.resize(static_cast<std::size_t>(dofs.n_nodes()));
+  results.acceleration.resize(results.velocity.size());
+  for (int i = 0; i < dofs.n_nodes(); ++i)
+    for (int c = 0; c < kDofsPerNode; ++c) {
+      results.velocity[static_cast<std::size_t>(i)][c] = motion_.v[dofs.displacement(i, c)];
+      results.acceleration[static_cast<std::size_t>(i)][c] = motion_.a[dofs.displacement(i, c)];
+    }
+  EnergyTotals& e = motion_.energy;
+  e.kinetic = 0.5 * motion_.v.head(n_disp).cwiseAbs2().dot(mass_.head(n_disp));
+  // Kinematic contact removes the normal relative velocity of a slave at impact
+  // (a plastic impact of the node's mass): that loss shows as numerical energy.
+  e.strain = 0;
+  for (const auto& el : disc.elements()) e.strain += el->strain_energy(s);
+  e.work = work_ + 0.5 * (force_previous_ + force_).dot(step_u_);
+  e.friction = e.viscous = 0;
+  e.total = e.kinetic + e.strain - e.work;
+  e.numerical = motion_.balance_start - e.total;
+  results.energy = e;
+  results.step = attempt.step;
+  results.increment = attempt.increment;
+  results.step_time = t.step_time;
+  results.total_time = t.total_time;
+  results.iterations = 0;
+  return results;
+}
+
+SolveTiming ExplicitDynamicProcedure::timing() const {
+  SolveTiming t;
+  t.assembly = evaluation_seconds_;
+  t.output = output_seconds_;
+  return t;
+}
+
+// The state between report intervals is (u, v, a) at a full step, which the
+// analysis saves with the motion state: a restart starts the next interval
+// with v_{n+1/2} = v_n + h/2 a_n, the same increment the run would have made.
+void ExplicitDynamicProcedure::save(RestartState& /*state*/) const {}
+
+void ExplicitDynamicProcedure::restore(const RestartState& /*state*/) {}
+
+}  // namespace tether

@@ -1,0 +1,130 @@
+#pragma once
+/// \file The increment of a `*DYNAMIC, EXPLICIT` step: central differences
+/// with the lumped mass, no Newton and no linear solver.
+///
+/// Each explicit increment h (velocity Verlet form of central differences):
+///   v_{n+1/2} = v_{n-1/2} + (h_{n-1/2} + h_{n+1/2}) / 2 a_n,  u_{n+1} = u_n + h v_{n+1/2},
+///   a_{n+1} = M^-1 (f_ext(t_{n+1}) - f_int(u_{n+1}))  at free dofs,
+/// with f_int the elements' residuals evaluated without tangent. Prescribed
+/// dofs follow their values (and amplitudes): their half-step velocity is the
+/// difference of the prescribed values, their acceleration the difference of
+/// those velocities. Full-step velocities v_n = v_{n-1/2} + h/2 a_n are what
+/// the results, the kinetic energy and the next step see.
+///
+/// Contact: ExplicitContact's predictor–corrector adds the contact forces
+/// at t_n before the velocities and positions are advanced.
+///
+/// Time stepping: the explicit increment is the data line's increment with
+/// DIRECT (used as given, with a warning above the stable estimate) and
+/// otherwise kSafetyFactor times the element-by-element stable increment
+/// (stable_increment.hpp), recomputed at every report under NLGEOM. The step
+/// is reported (status line, results, energies) at kReportIntervals equal
+/// intervals of its period, or at every explicit increment when there are
+/// fewer: each increment of the step loop is one report interval holding
+/// ceil(interval / limit) equal explicit increments. See
+/// docs/theory/explicit_dynamics.md.
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "tether/analysis/explicit_contact.hpp"
+#include "tether/analysis/analysis_observer.hpp"
+#include "tether/analysis/motion_state.hpp"
+#include "tether/analysis/procedure.hpp"
+#include "tether/analysis/results_builder.hpp"
+#include "tether/analysis/stable_increment.hpp"
+#include "tether/analysis/step_system.hpp"
+
+namespace tether {
+
+class ExplicitDynamicProcedure final : public Procedure {
+ public:
+  /// Fraction of the stable increment used without DIRECT.
+  static constexpr double kSafetyFactor = 0.9;
+  /// Reports per step (fewer when the step has fewer explicit increments).
+  static constexpr int kReportIntervals = 100;
+  /// A report whose ALLKE + ALLSE exceeds this multiple of the energy put in
+  /// stops the step as diverged (an increment above the stable one). Below
+  /// the limit the full-step energy of a mode stays under 1 / (1 - (omega h / 2)^2)
+  /// times its share: the guard cannot fire for h < (1 - 5e-7) 2 / omega_max.
+  static constexpr double kEnergyGrowthLimit = 1e6;
+
+  /// `system`, `observer` and `motion` must outlive the procedure; `u` is the
+  /// state at the step's start (for the stable increment). Throws ModelError
+  /// for what the explicit scheme does not support (constraints, user
+  /// constraints, eliminated dofs, damping; contact other than hard and frictionless), naming it.
+  ExplicitDynamicProcedure(StepSystem& system, AnalysisObserver& observer, bool stream_results, MotionState& motion,
+                           const Eigen::VectorXd& u);
+
+  [[nodiscard]] std::string keyword() const override { return "*DYNAMIC, EXPLICIT"; }
+  /// The step as the step loop's IncrementController should step it: fixed
+  /// increments of one report interval.
+  [[nodiscard]] Step time_stepping(const Step& step) const override;
+  IncrementOutcome solve_increment(const IncrementAttempt& attempt, Eigen::VectorXd& u) override;
+  [[nodiscard]] SolveTiming timing() const override;
+  void save(RestartState& state) const override;
+  void restore(const RestartState& state) override;
+
+  /// The explicit increment limit in force [time] (DIRECT's, or the safety times the stable estimate).
+  [[nodiscard]] double increment_limit() const { return limit_; }
+  /// The last element-by-element estimate (without the safety factor).
+  [[nodiscard]] const StableIncrement& stable() const { return stable_; }
+
+ private:
+  /// Refuses the contributions the scheme does not support.
+  void check_supported() const;
+  /// Sets limit_ from DIRECT or the stable increment at `u` and time
+  /// `total_time`; `report`: tells the observer (and warns when DIRECT exceeds it).
+  void update_limit(const Eigen::VectorXd& u, double total_time, bool report);
+  /// At the first increment of the step: velocities, masses, forces and accelerations at the step's start.
+  void start_step(const IncrementTimes& first, Eigen::VectorXd& u);
+  /// r = f_int(u) - f_ext at step time `t` (loads applied by the caller), and a = -r / m at free dofs.
+  void evaluate_forces(const EvaluationState& s);
+  /// Accelerations at the prescribed dofs at step time `t` (state `u`) from
+  /// their values at t + h (the central difference of the prescribed motion).
+  void prescribed_accelerations(const Eigen::VectorXd& u, double t, double h);
+  /// Forces doing work: applied forces at free dofs, the reactions r + m a at prescribed ones.
+  void work_force(Eigen::VectorXd& out) const;
+  /// The contact forces at t_n (ExplicitContact::correct) for the positions
+  /// the next increment h would predict from the state `u`, half_velocity_, accel_.
+  void contact_force(const Eigen::VectorXd& u, double h, Eigen::VectorXd& force);
+  /// One explicit increment h from step time t to t + h.
+  void advance(Eigen::VectorXd& u, double t, double h);
+  /// Results and energies at the end of an interval, state `s` (also sets the
+  /// motion state); `points` (may be null) streams element values and must
+  /// outlive the results.
+  IncrementResults interval_results(const IncrementAttempt& attempt, const EvaluationState& s,
+                                    const ElementPointSource* points);
+  /// The energy in the model (ALLKE + ALLSE) is not finite or more than
+  /// kEnergyGrowthLimit times what was put in (the balance's start plus |ALLWK|).
+  [[nodiscard]] bool diverged(const EnergyTotals& e) const;
+
+  StepSystem& system_;
+  AnalysisObserver& observer_;
+  bool stream_results_;
+  MotionState& motion_;
+  StableIncrement stable_;
+  std::unique_ptr<ExplicitContact> contact_;  ///< null without contact pairs
+  Eigen::VectorXd contact_force_, predicted_;  ///< contact forces at t_n; scratch predicted displacements
+  double limit_ = 0;
+  bool started_ = false;
+  std::vector<int> free_, prescribed_;   ///< displacement dofs that move by the scheme / by their values
+  Eigen::VectorXd mass_, inverse_mass_;  ///< lumped mass per dof (inverse 0 at prescribed dofs)
+  Eigen::VectorXd cloads_;               ///< nodal forces at the current time
+  Eigen::VectorXd external_;             ///< f_ext (nodal forces and pressures) at the current state
+  Eigen::VectorXd residual_;             ///< f_int - f_ext at the current state
+  Eigen::VectorXd next_values_;          ///< scratch: prescribed values one increment ahead
+  LocalSystem local_;                    ///< scratch for one contribution
+  Eigen::VectorXd half_velocity_;        ///< v_{n-1/2} (v_0 before the first increment)
+  Eigen::VectorXd accel_;                ///< a_n
+  Eigen::VectorXd u_previous_;           ///< u_{n-1} (evaluation state's u_start)
+  Eigen::VectorXd force_previous_, force_, step_u_;  ///< work forces at n-1 and n; u_n - u_{n-1}
+  double work_ = 0;                      ///< ALLWK up to u_{n-1} (the last increment's share is added later)
+  double period_ = 1, motion_time_offset_ = 0;  ///< the step's period and its start in total time
+  double h_previous_ = 0;                ///< h_{n-1/2} (0 before the first increment)
+  long long n_increments_ = 0;           ///< explicit increments in this step
+  double evaluation_seconds_ = 0, output_seconds_ = 0;
+};
+
+}  // namespace tether

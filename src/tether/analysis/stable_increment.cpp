@@ -1,0 +1,51 @@
+#include "tether/analysis/stable_increment.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <sstream>
+
+#include "tether/core/error.hpp"
+
+namespace tether {
+
+double largest_frequency_squared(const Eigen::MatrixXd& stiffness, const Eigen::VectorXd& lumped_mass,
+                                 const std::string& what) {
+  const Eigen::Index n = lumped_mass.size();
+  Eigen::VectorXd scale(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (!(lumped_mass[i] > 0))
+      throw ModelError(what + " has a lumped mass of " + std::to_string(lumped_mass[i]) +
+                       " at one of its dofs: the stable increment needs a positive mass at every node");
+    scale[i] = 1 / std::sqrt(lumped_mass[i]);
+  }
+  // M^-1/2 K M^-1/2 has the eigenvalues omega^2 of the generalized problem.
+  const Eigen::MatrixXd scaled = scale.asDiagonal() * (0.5 * (stiffness + stiffness.transpose())) * scale.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(scaled, Eigen::EigenvaluesOnly);
+  if (eigen.info() != Eigen::Success) return std::numeric_limits<double>::quiet_NaN();
+  return eigen.eigenvalues().maxCoeff();
+}
+
+StableIncrement stable_increment(const std::vector<std::unique_ptr<ElementInertia>>& inertia,
+                                 const EvaluationState& s) {
+  StableIncrement out;
+  LocalSystem local;
+  for (std::size_t e = 0; e < inertia.size(); ++e) {
+    const ElementInertia& m = *inertia[e];
+    local.reset(static_cast<Eigen::Index>(m.dofs().size()));
+    m.element().evaluate(s, local, true);
+    const std::string what = m.element().describe();
+    const double omega2 = largest_frequency_squared(local.tangent, m.mass().diagonal(), what);
+    if (!(omega2 > 0) || !std::isfinite(omega2)) {
+      std::ostringstream why;
+      why << what << " gives a stable time increment that is not a positive number (largest omega^2 = " << omega2
+          << "): the element has no stiffness, or is degenerate or inverted";
+      throw ModelError(why.str());
+    }
+    const double omega = std::sqrt(omega2);
+    if (omega > out.omega_max) out.omega_max = omega, out.element = static_cast<int>(e);
+  }
+  if (out.element >= 0) out.dt = 2 / out.omega_max;
+  return out;
+}
+
+}  // namespace tether

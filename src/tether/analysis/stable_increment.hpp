@@ -1,0 +1,44 @@
+#pragma once
+/// \file The stable time increment of central differences with a lumped mass,
+/// element by element.
+///
+/// Central differences are stable for an undamped linear system while
+/// dt <= 2 / omega_max, omega_max the highest natural frequency of the mesh.
+/// For each element, omega_e^2 is the largest eigenvalue of K_e x = omega^2 M_e x
+/// (K_e its tangent at the current state, M_e its lumped, diagonal mass); the
+/// mesh's omega_max never exceeds max_e omega_e (Irons' bound: the Rayleigh
+/// quotient of the assembled pair is a weighted mean of the elements'), so
+/// 2 / max_e omega_e is a rigorous lower bound of the critical increment.
+/// Boundary conditions only lower omega_max: the bound stays safe. See
+/// docs/theory/explicit_dynamics.md.
+
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "tether/assembly/contribution.hpp"
+#include "tether/elements/element_inertia.hpp"
+
+namespace tether {
+
+/// The increment a step's explicit integration must not exceed.
+struct StableIncrement {
+  double dt = std::numeric_limits<double>::infinity();  ///< 2 / omega_max [time], no safety factor
+  double omega_max = 0;                                 ///< largest element frequency [rad/time]
+  int element = -1;                                     ///< index (in `inertia`) of the element that sets it
+};
+
+/// The largest omega^2 [1/time^2] of K x = omega^2 M x for a symmetric `stiffness`
+/// and a diagonal, positive `lumped_mass` of the same size. Throws ModelError
+/// (naming `what`) when a mass entry is not positive.
+double largest_frequency_squared(const Eigen::MatrixXd& stiffness, const Eigen::VectorXd& lumped_mass,
+                                 const std::string& what);
+
+/// The element-by-element estimate over every element of `inertia` (lumped
+/// masses) at state `s` (tangents under s.nlgeom). Throws ModelError when an
+/// element's estimate is zero, negative or not a number (naming the element):
+/// a material without stiffness, a degenerate or inverted element.
+StableIncrement stable_increment(const std::vector<std::unique_ptr<ElementInertia>>& inertia,
+                                 const EvaluationState& s);
+
+}  // namespace tether

@@ -1,0 +1,381 @@
+// *DYNAMIC, EXPLICIT (central differences, lumped mass): stress waves in a
+// 1D-strain bar against c_p and rho c_p v, free flight, energy balance, the
+// stable increment against its closed form, divergence above it, refused input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "run_deck.hpp"
+#include "tether/analysis/increment_controller.hpp"
+#include "tether/analysis/stable_increment.hpp"
+#include "tether/analysis/step_system.hpp"
+#include "tether/io/deck_reader.hpp"
+
+namespace tether {
+namespace {
+
+using DeckRun = tether::testing::Run;
+using tether::testing::run_deck_text;
+
+std::string num(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+constexpr double kE = 2e11, kNu = 0.3, kRho = 7800;
+const double kLambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu)), kMu = kE / (2 * (1 + kNu));
+/// 1D-strain (plane strain, rollers) wave speed.
+const double kCp = std::sqrt((kLambda + 2 * kMu) / kRho);
+
+/// A bar of `n` square CPE4 of side `h` along x, one element high, every node
+/// held in y (1D strain). Node i (1..n+1) at x = (i-1) h, y = 0; node n+1+i above it.
+/// Sets: LEFT (x = 0), RIGHT (x = L), INNER (the rest), ALLN. `bc` and
+/// `step` are appended to the model data and the step.
+std::string bar_deck(int n, double h, const std::string& bc, const std::string& step) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "*NODE\n";
+  for (int i = 0; i <= n; ++i) d << i + 1 << ", " << i * h << ", 0\n" << n + 2 + i << ", " << i * h << ", " << h << "\n";
+  d << "*ELEMENT, TYPE=CPE4, ELSET=BAR\n";
+  for (int i = 0; i < n; ++i) d << i + 1 << ", " << i + 1 << ", " << i + 2 << ", " << n + 3 + i << ", " << n + 2 + i << "\n";
+  d << "*NSET, NSET=ALLN, GENERATE\n1, " << 2 * n + 2 << ", 1\n*NSET, NSET=LEFT\n1, " << n + 2 << "\n*NSET, NSET=RIGHT\n"
+    << n + 1 << ", " << 2 * n + 2 << "\n*NSET, NSET=INNER, GENERATE\n2, " << n << ", 1\n" << n + 3 << ", " << 2 * n + 1
+    << ", 1\n*MATERIAL, NAME=STEEL\n*ELASTIC\n" << kE << ", " << kNu << "\n*DENSITY\n" << kRho
+    << "\n*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL\n1.\n*BOUNDARY\nALLN, 2, 2\n"
+    << bc << "*STEP\n" << step << "*END STEP\n";
+  return d.str();
+}
+
+/// Where the x velocity along the bar's bottom edge first crosses `level`
+/// coming from x = 0 (linear between nodes) [length].
+double front_position(const DeckRun& run, const IncrementResults& r, int n, double h, double level) {
+  for (int i = 0; i < n; ++i) {
+    const double a = r.velocity[static_cast<std::size_t>(run.node(i + 1))].x() - level;
+    const double b = r.velocity[static_cast<std::size_t>(run.node(i + 2))].x() - level;
+    if (a * b <= 0 && a != b) return h * (i + a / (a - b));
+  }
+  return -1;
+}
+
+TEST(ExplicitDynamics, ImpactWaveTravelsAtTheDilatationalSpeedWithAmplitudeRhoCpV) {
+  // The bar moves at -v0 onto its held left end: a compression wave of
+  // stress rho c_p v0 runs to the free end and brings the bar to rest there.
+  const int n = 200;
+  const double h = 0.01, length = n * h, v0 = 1, transit = length / kCp;
+  const DeckRun run = run_deck_text(bar_deck(n, h, "LEFT, 1, 1\n*INITIAL CONDITIONS, TYPE=VELOCITY\nINNER, 1, -1.\nRIGHT, 1, -1.\n",
+                                             "*DYNAMIC, EXPLICIT\n, " + num(transit) + "\n"));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_EQ(run.recorder.results.size(), 100u);
+  double worst_front = 0, force_sum = 0;
+  int n_force = 0;
+  for (const IncrementResults& r : run.recorder.results) {
+    const double t = r.step_time;
+    if (t < 0.1 * transit || t > 0.9 * transit) continue;
+    // The front: where the velocity is halfway between -v0 (ahead) and 0 (behind).
+    const double front = front_position(run, r, n, h, -0.5 * v0);
+    worst_front = std::max(worst_front, std::abs(front - kCp * t));
+    double reaction = 0;
+    for (int node : run.model.node_sets.at("LEFT")) reaction += r.reaction[static_cast<std::size_t>(node)].x();
+    force_sum += reaction, ++n_force;
+  }
+  const double force = force_sum / n_force, expected = kRho * kCp * v0 * h;  // area h x 1
+  std::printf("front error %.3g elements, wall force %.6g against %.6g (%.3g %%)\n", worst_front / h, force, expected,
+              100 * (force / expected - 1));
+  EXPECT_LT(worst_front, 2 * h);                  // 1 % of the bar
+  EXPECT_NEAR(force / expected, 1, 0.01);         // the wall holds rho c_p v0 A
+  // At L / c_p the whole bar is at rest (to the scheme's dispersion).
+  double fastest = 0;
+  for (const Eigen::Vector2d& v : run.last().velocity) fastest = std::max(fastest, std::abs(v.x()));
+  EXPECT_LT(fastest, 0.5 * v0);  // the dispersive tail of the front only
+  double mean = 0;
+  for (int i = 0; i < 2 * n + 2; ++i) mean += run.last().velocity[static_cast<std::size_t>(i)].x();
+  EXPECT_NEAR(mean / (2 * n + 2), 0, 0.02 * v0);
+}
+
+TEST(ExplicitDynamics, PrescribedEndVelocityDrivesAWaveAndTheEnergyBalances) {
+  // The left end pushed at v0 into the resting bar: the driving force is
+  // rho c_p v0 A and its work becomes kinetic and strain energy in equal parts.
+  const int n = 200;
+  const double h = 0.01, length = n * h, v0 = 2, transit = length / kCp;
+  const DeckRun run = run_deck_text(
+      bar_deck(n, h, "*AMPLITUDE, NAME=LINEAR\n0., 0., 1., 1.\n*BOUNDARY, AMPLITUDE=LINEAR\nLEFT, 1, 1, " + num(v0) + "\n",
+               "*DYNAMIC, EXPLICIT\n, " + num(0.8 * transit) + "\n*NODE PRINT, NSET=LEFT\nU, V, A, RF\n"));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const IncrementResults& end = run.last();
+  const double t = end.step_time;
+  EXPECT_NEAR(end.displacement[static_cast<std::size_t>(run.node(1))].x(), v0 * t, 1e-12 * v0 * t);
+  EXPECT_NEAR(end.velocity[static_cast<std::size_t>(run.node(1))].x(), v0, 1e-9 * v0);
+  const double force = run.reaction_sum("LEFT", 0), expected = kRho * kCp * v0 * h;
+  const EnergyTotals& e = *end.energy;
+  const double work = expected * v0 * t;  // constant force times the displacement
+  std::printf("driving force %.6g against %.6g; ALLWK %.6g against %.6g; ALLKE %.6g ALLSE %.6g numerical %.3g\n", force,
+              expected, e.work, work, e.kinetic, e.strain, e.numerical);
+  EXPECT_NEAR(force / expected, 1, 0.01);
+  EXPECT_NEAR(e.work / work, 1, 0.01);
+  EXPECT_NEAR(e.kinetic / e.strain, 1, 0.02);
+  EXPECT_LT(std::abs(e.numerical), 2e-3 * e.work);
+  for (const IncrementResults& r : run.recorder.results) EXPECT_LT(std::abs(r.energy->numerical), 2e-3 * e.work + 1e-9);
+}
+
+TEST(ExplicitDynamics, AFreeBodyFliesAtItsInitialVelocity) {
+  const std::string deck =
+      "*NODE\n1, 0, 0\n2, 2, 0\n3, 2, 1\n4, 0, 1\n5, 4, 0\n6, 4, 1\n*ELEMENT, TYPE=CPE4, ELSET=ALL\n1, 1, 2, 3, 4\n"
+      "2, 2, 5, 6, 3\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n*SOLID SECTION, ELSET=ALL, MATERIAL=M\n"
+      "*NSET, NSET=ALLN, GENERATE\n1, 6, 1\n*INITIAL CONDITIONS, TYPE=VELOCITY\nALLN, 1, 3.\nALLN, 2, -1.\n"
+      "*STEP\n*DYNAMIC, EXPLICIT\n, 1.\n*END STEP\n";
+  const DeckRun run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  for (const IncrementResults& r : run.recorder.results)
+    for (std::size_t i = 0; i < r.displacement.size(); ++i) {
+      ASSERT_NEAR(r.displacement[i].x(), 3 * r.step_time, 1e-12);
+      ASSERT_NEAR(r.displacement[i].y(), -r.step_time, 1e-12);
+      ASSERT_NEAR(r.velocity[i].x(), 3, 1e-12);
+      ASSERT_NEAR(r.acceleration[i].norm(), 0, 1e-9);
+    }
+  const EnergyTotals& e = *run.last().energy;
+  EXPECT_NEAR(e.kinetic, 0.5 * 2 * 4 * 10, 1e-9);  // rho 2, area 4, |v|^2 10
+  EXPECT_NEAR(e.strain, 0, 1e-12);
+  EXPECT_EQ(e.work, 0);
+}
+
+/// A square CPE4 of side `a` (E, nu of the bar, density `rho`) free of
+/// supports, one node pushed; `procedure` is the *DYNAMIC block.
+std::string square_deck(const std::string& procedure, double a = 1, double rho = 1) {
+  return "*NODE\n1, 0, 0\n2, " + num(a) + ", 0\n3, " + num(a) + ", " + num(a) + "\n4, 0, " + num(a) +
+         "\n*ELEMENT, TYPE=CPE4, ELSET=ALL\n1, 1, 2, 3, 4\n*MATERIAL, NAME=M\n*ELASTIC\n" + num(kE) + ", " + num(kNu) +
+         "\n*DENSITY\n" + num(rho) + "\n*SOLID SECTION, ELSET=ALL, MATERIAL=M\n"
+         "*INITIAL CONDITIONS, TYPE=VELOCITY\n3, 1, 1.\n3, 2, 0.5\n*STEP\n" + procedure + "*END STEP\n";
+}
+
+/// The stable increment of a square CPE4 of side a with lumped mass: its
+/// highest mode is the uniform dilatation, omega^2 = 8 (lambda + mu) / (rho a^2).
+double square_stable_increment(double a, double rho) { return 2 / std::sqrt(8 * (kLambda + kMu) / (rho * a * a)); }
+
+/// The step system of a deck's first step, with what it borrows.
+struct Built {
+  Model model;
+  std::unique_ptr<Discretization> discretization;
+  std::unique_ptr<StepSystem> system;
+};
+
+std::unique_ptr<Built> build(const std::string& deck) {
+  auto b = std::make_unique<Built>();
+  b->model = read_deck_string(deck, "test.inp");
+  b->discretization = std::make_unique<Discretization>(b->model);
+  const Discretization& disc = *b->discretization;
+  const Step& step = b->model.steps.at(0);
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(disc.dofs().n_dofs());
+  b->system = std::make_unique<StepSystem>(disc, step, make_step_loads(step, disc.dofs(), u, {}, {}), u, 0.0,
+                                           SolverSettings{});
+  return b;
+}
+
+TEST(StableIncrement, SquareCpe4MatchesTheClosedForm) {
+  for (const double side : {1.0, 0.01, 3.0}) {
+    const auto b = build(square_deck("*DYNAMIC, EXPLICIT\n, 1.\n", side, 7));
+    const Eigen::VectorXd u = Eigen::VectorXd::Zero(b->discretization->dofs().n_dofs());
+    const StableIncrement s = stable_increment(b->system->inertia(), EvaluationState{u, u, 0, 0, 0, false});
+    EXPECT_NEAR(s.dt / square_stable_increment(side, 7), 1, 1e-12) << "side " << side;
+    EXPECT_EQ(s.element, 0);
+  }
+}
+
+TEST(StableIncrement, BoundsTheHighestFrequencyOfADistortedMesh) {
+  // Four distorted CPE4 and a CPE3: the assembled (K, M)'s highest frequency
+  // is below the largest element's, and not far below it.
+  const std::string deck =
+      "*NODE\n1, 0, 0\n2, 1, 0\n3, 2.2, 0\n4, 0, 1\n5, 1.3, 0.8\n6, 2, 1.1\n7, 0, 2\n8, 0.9, 2.1\n9, 2.1, 2\n"
+      "10, 3, 2\n*ELEMENT, TYPE=CPE4, ELSET=ALL\n1, 1, 2, 5, 4\n2, 2, 3, 6, 5\n3, 4, 5, 8, 7\n4, 5, 6, 9, 8\n"
+      "*ELEMENT, TYPE=CPE3, ELSET=ALL\n5, 6, 10, 9\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.25\n*DENSITY\n2.\n"
+      "*SOLID SECTION, ELSET=ALL, MATERIAL=M\n*STEP\n*DYNAMIC, EXPLICIT\n, 1.\n*END STEP\n";
+  const auto b = build(deck);
+  const Discretization& disc = *b->discretization;
+  const auto n = static_cast<Eigen::Index>(disc.dofs().n_displacement_dofs());
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(disc.dofs().n_dofs());
+  const EvaluationState s{u, u, 0, 0, 0, false};
+  Eigen::MatrixXd stiffness = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(n);
+  LocalSystem local;
+  for (const auto& m : b->system->inertia()) {
+    const auto dofs = m->dofs();
+    local.reset(static_cast<Eigen::Index>(dofs.size()));
+    m->element().evaluate(s, local, true);
+    for (std::size_t i = 0; i < dofs.size(); ++i) {
+      mass[dofs[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+      for (std::size_t j = 0; j < dofs.size(); ++j)
+        stiffness(dofs[i], dofs[j]) += local.tangent(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+    }
+  }
+  const double mesh_omega = std::sqrt(largest_frequency_squared(stiffness, mass, "the mesh"));
+  const StableIncrement estimate = stable_increment(b->system->inertia(), s);
+  std::printf("mesh omega_max %.6g, element bound %.6g (element %d)\n", mesh_omega, estimate.omega_max, estimate.element);
+  EXPECT_LE(mesh_omega, estimate.omega_max * (1 + 1e-12));
+  EXPECT_GT(mesh_omega, 0.5 * estimate.omega_max);
+}
+
+TEST(ExplicitDynamics, StableIncrementIsReportedAndUsed) {
+  const double exact = square_stable_increment(1, 1);
+  const DeckRun run = run_deck_text(square_deck("*DYNAMIC, EXPLICIT\n, " + num(50 * exact) + "\n"));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_FALSE(run.recorder.messages.empty());
+  const std::string& m = run.recorder.messages.front();
+  EXPECT_NE(m.find("stable time increment " + format_time(exact)), std::string::npos) << m;
+  EXPECT_NE(m.find("explicit increment " + format_time(0.9 * exact)), std::string::npos) << m;
+  // 50 stable increments hold 56 explicit ones of 0.9 of it (rounded to fill the step): 56 reports.
+  EXPECT_EQ(run.recorder.results.size(), 56u);
+  // The bar's elements (side 0.01, rho 7800) scale as a sqrt(rho).
+  const DeckRun bar = run_deck_text(bar_deck(4, 0.01, "", "*DYNAMIC, EXPLICIT\n, 1e-5\n"));
+  ASSERT_TRUE(bar.summary.completed) << bar.summary.message;
+  EXPECT_NE(bar.recorder.messages.front().find("stable time increment " + format_time(square_stable_increment(0.01, kRho))),
+            std::string::npos)
+      << bar.recorder.messages.front();
+}
+
+TEST(ExplicitDynamics, AnIncrementJustAboveTheStableOneDivergesAndJustBelowDoesNot) {
+  // One free element: the element-by-element bound is the model's own highest frequency.
+  const double critical = square_stable_increment(1, 1);
+  const auto run_at = [&](double factor) {
+    const double dt = factor * critical;
+    return run_deck_text(square_deck("*DYNAMIC, EXPLICIT, DIRECT\n" + num(dt) + ", " + num(2000 * dt) + "\n"));
+  };
+  const DeckRun below = run_at(0.98);
+  ASSERT_TRUE(below.summary.completed) << below.summary.message;
+  const double e0 = 0.5 * 0.25 * (1 + 0.25);  // lumped mass 1/4 at node 3, |v|^2 = 1.25
+  // Central differences conserve v^2 + omega^2 (1 - omega^2 h^2 / 4) u^2 per mode: near the
+  // limit the strain energy at full steps may reach e0 / (1 - 0.98^2), but it does not grow.
+  for (const IncrementResults& r : below.recorder.results)
+    EXPECT_LT(r.energy->kinetic + r.energy->strain, e0 / (1 - 0.98 * 0.98));
+  const DeckRun above = run_at(1.02);
+  EXPECT_FALSE(above.summary.completed);
+  EXPECT_NE(above.summary.message.find("diverged"), std::string::npos) << above.summary.message;
+  bool warned = false;
+  for (const std::string& m : above.recorder.messages) warned = warned || m.find("exceeds the stable") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
+TEST(ExplicitDynamics, UnsupportedContributionsAreRefusedByName) {
+  const std::string base = bar_deck(2, 0.01, "", "*DYNAMIC, EXPLICIT\n, 1e-5\n");
+  std::string equation = base;
+  equation.replace(equation.find("*STEP"), 5, "*EQUATION\n2\n1, 1, 1., 3, 1, -1.\n*STEP");
+  const DeckRun eq = run_deck_text(equation);
+  EXPECT_FALSE(eq.summary.completed);
+  EXPECT_NE(eq.summary.message.find("*DYNAMIC, EXPLICIT (step"), std::string::npos) << eq.summary.message;
+  EXPECT_NE(eq.summary.message.find("does not support"), std::string::npos) << eq.summary.message;
+
+  std::string no_density = base;
+  no_density.erase(no_density.find("*DENSITY"), std::string("*DENSITY\n7800\n").size());
+  const DeckRun nd = run_deck_text(no_density);
+  EXPECT_FALSE(nd.summary.completed);
+  EXPECT_NE(nd.summary.message.find("STEEL"), std::string::npos) << nd.summary.message;
+}
+
+
+/// The bar of bar_deck (every node held in y) at rest against a rigid wall:
+/// one CPE4 left of x = 0 (3 h tall, every node held) whose right face is
+/// the master of the bar's left end. The bar moves at -v0.
+std::string wall_deck(int n, double h, double v0, double period) {
+  std::string deck = bar_deck(n, h, "", "*DYNAMIC, EXPLICIT\n, " + num(period) + "\n");
+  const int w = 2 * n + 10;
+  std::ostringstream wall;
+  wall.precision(17);
+  wall << "*NODE\n" << w + 1 << ", " << -h << ", " << -h << "\n" << w + 2 << ", 0, " << -h << "\n" << w + 3 << ", 0, "
+       << 2 * h << "\n" << w + 4 << ", " << -h << ", " << 2 * h << "\n*ELEMENT, TYPE=CPE4, ELSET=WALL\n" << n + 1 << ", "
+       << w + 1 << ", " << w + 2 << ", " << w + 3 << ", " << w + 4 << "\n*NSET, NSET=WALLN, GENERATE\n" << w + 1 << ", "
+       << w + 4 << ", 1\n*SOLID SECTION, ELSET=WALL, MATERIAL=STEEL\n1.\n*SURFACE, NAME=BAREND\n1, S4\n"
+       << "*SURFACE, NAME=WALLFACE\n" << n + 1 << ", S2\n*SURFACE INTERACTION, NAME=I\n"
+       << "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nBAREND, WALLFACE\n*BOUNDARY\nWALLN, 1, 2\n"
+       << "*INITIAL CONDITIONS, TYPE=VELOCITY\nALLN, 1, " << -v0 << "\n";
+  deck.replace(deck.find("*STEP"), 5, wall.str() + "*STEP");
+  return deck;
+}
+
+TEST(ExplicitContact, ElasticBarHitsARigidWall) {
+  // Contact lasts 2 L / c_p at the force rho c_p v0 A; the bar leaves at +v0.
+  const int n = 100;
+  const double h = 0.01, v0 = 1, length = n * h, duration = 2 * length / kCp;
+  const DeckRun run = run_deck_text(wall_deck(n, h, v0, 1.1 * duration));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const double expected = kRho * kCp * v0 * h;
+  double force_sum = 0, previous_force = 0, previous_time = 0, released = -1, worst_penetration = 0;
+  int n_force = 0;
+  for (const IncrementResults& r : run.recorder.results) {
+    double force = 0;
+    for (int node : run.model.node_sets.at("WALLN")) force += r.reaction[static_cast<std::size_t>(node)].x();
+    ASSERT_EQ(r.contact.size(), 1u);
+    EXPECT_NEAR(r.contact[0].total_force.x(), force, 1e-9 * expected);  // the pair's force is the wall's
+    if (r.step_time > 0.05 * duration && r.step_time < 0.95 * duration) force_sum += force, ++n_force;
+    // Release: the force falls through half its value (linear between reports).
+    if (released < 0 && previous_force > 0.5 * expected && force <= 0.5 * expected)
+      released = previous_time + (r.step_time - previous_time) * (previous_force - 0.5 * expected) / (previous_force - force);
+    previous_force = force, previous_time = r.step_time;
+    for (int node : run.model.node_sets.at("LEFT"))
+      worst_penetration = std::max(worst_penetration, -r.displacement[static_cast<std::size_t>(node)].x());
+  }
+  double mean_velocity = 0;
+  for (int node : run.model.node_sets.at("ALLN")) mean_velocity += run.last().velocity[static_cast<std::size_t>(node)].x();
+  mean_velocity /= static_cast<double>(run.model.node_sets.at("ALLN").size());
+  const double force = force_sum / n_force;
+  std::printf("contact force %.6g against %.6g (%.3g %%), duration %.6g against %.6g (%.3g %%), rebound %.6g "
+              "(%.3g %%), penetration %.3g, numerical energy %.3g of %.6g\n",
+              force, expected, 100 * (force / expected - 1), released, duration, 100 * (released / duration - 1),
+              mean_velocity, 100 * (mean_velocity / v0 - 1), worst_penetration, run.last().energy->numerical,
+              run.recorder.results.front().energy->total);
+  EXPECT_NEAR(force / expected, 1, 0.02);
+  EXPECT_NEAR(released / duration, 1, 0.02);
+  EXPECT_NEAR(mean_velocity / v0, 1, 0.02);
+  EXPECT_LT(worst_penetration, 1e-12 * h);  // a rigid master: the correction is exact
+}
+
+TEST(ExplicitContact, CorrectorConservesLinearMomentum) {
+  // Two free unit-density squares: A (0.8 x 0.8) moving at (2, 0.5) onto B
+  // (1 x 1) at rest, A's right face the slave, B's left face the master;
+  // they touch at t = 0, slide along the face and part.
+  const std::string deck =
+      "*NODE\n1, -0.8, 0.1\n2, 0, 0.1\n3, 0, 0.9\n4, -0.8, 0.9\n5, 0, 0\n6, 1, 0\n7, 1, 1\n8, 0, 1\n"
+      "*ELEMENT, TYPE=CPE4, ELSET=A\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=CPE4, ELSET=B\n2, 5, 6, 7, 8\n"
+      "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n*SOLID SECTION, ELSET=A, MATERIAL=M\n"
+      "*SOLID SECTION, ELSET=B, MATERIAL=M\n*SURFACE, NAME=AR\n1, S2\n*SURFACE, NAME=BL\n2, S4\n"
+      "*SURFACE INTERACTION, NAME=I\n*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nAR, BL\n"
+      "*NSET, NSET=AN\n1, 2, 3, 4\n*INITIAL CONDITIONS, TYPE=VELOCITY\nAN, 1, 2.\nAN, 2, 0.5\n"
+      "*STEP\n*DYNAMIC, EXPLICIT\n, 0.2\n*END STEP\n";
+  const DeckRun run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const double mass_a = 0.64 / 4, mass_b = 0.25;  // lumped, per node
+  const Eigen::Vector2d initial(4 * mass_a * 2, 4 * mass_a * 0.5);
+  bool touched = false;
+  for (const IncrementResults& r : run.recorder.results) {
+    Eigen::Vector2d momentum(0, 0);
+    for (int i = 0; i < 8; ++i) momentum += (i < 4 ? mass_a : mass_b) * r.velocity[static_cast<std::size_t>(i)];
+    EXPECT_NEAR((momentum - initial).norm(), 0, 1e-13 * initial.norm()) << "time " << r.step_time;
+    touched = touched || r.contact[0].total_force.norm() > 0;
+    EXPECT_GE(r.energy->numerical, -1e-12);  // the kinematic corrector never adds energy here
+  }
+  EXPECT_TRUE(touched);
+  // B was pushed along x only (frictionless, vertical face): its y momentum stays 0.
+  double b_momentum_y = 0, b_momentum_x = 0;
+  for (int i = 4; i < 8; ++i) {
+    b_momentum_x += mass_b * run.last().velocity[static_cast<std::size_t>(i)].x();
+    b_momentum_y += mass_b * run.last().velocity[static_cast<std::size_t>(i)].y();
+  }
+  EXPECT_GT(b_momentum_x, 0.1 * initial.x());
+  EXPECT_NEAR(b_momentum_y, 0, 0.02 * initial.norm());
+}
+
+TEST(ExplicitContact, FrictionIsRefusedByName) {
+  std::string deck = wall_deck(4, 0.01, 1, 1e-5);
+  deck.replace(deck.find("*SURFACE INTERACTION, NAME=I\n"), 29, "*SURFACE INTERACTION, NAME=I\n*FRICTION\n0.3\n");
+  const DeckRun run = run_deck_text(deck);
+  EXPECT_FALSE(run.summary.completed);
+  EXPECT_NE(run.summary.message.find("does not support friction"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("BAREND-WALLFACE"), std::string::npos) << run.summary.message;
+}
+
+}  // namespace
+}  // namespace tether
