@@ -105,6 +105,16 @@ std::vector<KeywordSpec> build_table() {
       {"HYPERELASTIC", kMaterial, "Compressible neo-Hookean hyperelasticity.", "`C10, D1` with C10 > 0, D1 > 0",
        {flag("NEO HOOKE", "Neo-Hookean strain energy (required; the only model supported).")},
        handle_hyperelastic, ""},
+      {"PLASTIC", kMaterial,
+       "Von Mises plasticity on the material's *ELASTIC range (small strain; docs/theory/plasticity.md): true yield "
+       "stress against equivalent plastic strain, piecewise linear, constant beyond the last row.",
+       "`yield stress, plastic strain` per line, yield stress > 0, plastic strain 0 on the first line and strictly "
+       "increasing (no temperature column)",
+       {choice("HARDENING", "ISOTROPIC", {"ISOTROPIC", "KINEMATIC", "COMBINED"},
+               "ISOTROPIC: the yield stress follows the table; KINEMATIC: the yield stress stays the first one and "
+               "the back stress grows with the table's slope (Prager-Ziegler, linear kinematic hardening for two "
+               "rows); COMBINED is not supported yet.")},
+       handle_plastic, ""},
       {"DENSITY", kMaterial,
        "Mass density, for the element masses (consistent or lumped; docs/theory/elements.md, section Mass). "
        "Optional: static steps do not use it; asking for the mass of an element whose material has none is an "
@@ -314,7 +324,6 @@ std::vector<KeywordSpec> build_table() {
       // --- recognised, not supported yet: a clear error, never silently dropped ---
       {"DYNAMIC", kAnyStep, "Implicit dynamic procedure.", "", {}, nullptr, kLater},
       {"INITIAL CONDITIONS", kModelData, "Initial values of state variables.", "", {}, nullptr, kLater},
-      {"PLASTIC", kMaterial, "Metal plasticity.", "", {}, nullptr, "tether's materials are elastic only"},
       {"EXPANSION", kMaterial, "Thermal expansion.", "", {}, nullptr, "tether has no thermal analysis"},
       {"ORIENTATION", kModelData, "Local material directions.", "", {}, nullptr,
        "tether's materials are isotropic"},

@@ -64,6 +64,16 @@ struct MaterialData {
   };
   std::optional<Elastic> elastic;
   std::optional<NeoHooke> neo_hooke;
+  /// `*PLASTIC`: von Mises plasticity, true yield stress against equivalent
+  /// plastic strain, piecewise linear and constant beyond the last row.
+  struct Plastic {
+    enum class Hardening { Isotropic, Kinematic };
+    Hardening hardening = Hardening::Isotropic;
+    std::vector<double> yield_stress;    ///< [stress], > 0, one per row
+    std::vector<double> plastic_strain;  ///< [-], 0 first, strictly increasing
+    SourceLocation where;                ///< the *PLASTIC line
+  };
+  std::optional<Plastic> plastic;
   std::optional<double> density;  ///< [mass/volume]
   SourceLocation where;
 

@@ -21,6 +21,8 @@ struct PointValues {
   Eigen::Vector2d x{0, 0};  ///< current position
   Tensor4 stress{};         ///< Cauchy stress [force/area]
   Tensor4 strain{};         ///< small strain, or Green-Lagrange strain under NLGEOM; tensor shear
+  double peeq = 0;          ///< equivalent plastic strain PEEQ [-] (0 for elastic materials)
+  Tensor4 plastic_strain{}; ///< plastic strain PE, tensor shear [-] (zero for elastic materials)
 };
 
 /// The force a constraint exerts on one node: -sum_k lambda_k df_k/du over
