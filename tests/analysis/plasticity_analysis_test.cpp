@@ -1,0 +1,164 @@
+// Plasticity through the whole analysis: the perfectly plastic thick
+// cylinder (Hill's elastic-plastic radius, the limit pressure), Newton's
+// convergence order with the consistent tangent, and restart continuing a
+// plastic analysis identically.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "run_deck.hpp"
+#include "tether/output/restart_file.hpp"
+
+using namespace tether;
+using namespace tether::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kYield = 240, kA = 10, kB = 20;
+
+std::string cylinder_deck() {
+  std::ifstream in(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/plastic_cylinder.inp");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "deck has no '" << from << "'";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// Hill: the pressure at which the plastic zone reaches r = c.
+double hill_pressure(double c) {
+  return kYield / std::sqrt(3.0) * (2 * std::log(c / kA) + 1 - c * c / (kB * kB));
+}
+
+/// Only step 1, loaded to `pressure`, with increments of `dt` (fixed when `fixed`).
+std::string loaded_to(double pressure, const std::string& increments = "0.1, 1., 1e-6, 0.1") {
+  std::string d = replaced(cylinder_deck(), "BORE, P, 172.99", "BORE, P, " + std::to_string(pressure));
+  d = replaced(d, "0.1, 1., 1e-6, 0.1", increments);
+  return d.substr(0, d.find("*STEP", d.find("*END STEP")));
+}
+
+}  // namespace
+
+TEST(PlasticCylinder, PlasticZoneFollowsHillsSolution) {
+  const double c = 15;
+  const tether::testing::Run run = run_deck_text(loaded_to(hill_pressure(c)));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  double outermost_plastic = 0, innermost_elastic = kB;
+  for (const auto& element : run.last().points)
+    for (const PointValues& p : element) {
+      const double r = p.x.norm();
+      (p.peeq > 0 ? outermost_plastic : innermost_elastic) =
+          p.peeq > 0 ? std::max(outermost_plastic, r) : std::min(innermost_elastic, r);
+    }
+  // The front lies between the two; the radial point spacing is about 0.5.
+  std::printf("Hill c = %.3f; plastic points up to r = %.3f, elastic from r = %.3f\n", c, outermost_plastic,
+              innermost_elastic);
+  EXPECT_LT(std::abs(outermost_plastic - c), 0.6);
+  EXPECT_LT(std::abs(innermost_elastic - c), 0.6);
+  EXPECT_LT(outermost_plastic, innermost_elastic);
+}
+
+TEST(PlasticCylinder, LimitPressureIsApproachedAndNotExceeded) {
+  const double limit = 2 / std::sqrt(3.0) * kYield * std::log(kB / kA);
+  const auto bore_displacement = [](const tether::testing::Run& run) {
+    return run.last().displacement[static_cast<std::size_t>(run.node(1))].x();  // node 1 at (a, 0)
+  };
+  const tether::testing::Run below = run_deck_text(loaded_to(0.99 * limit, "0.05, 1., 1e-6, 0.05"));
+  ASSERT_TRUE(below.summary.completed) << below.summary.message;
+  const tether::testing::Run elastic = run_deck_text(loaded_to(0.5 * limit));
+  // The bore moves much more than the elastic extrapolation near the limit.
+  const double ratio = bore_displacement(below) / (bore_displacement(elastic) * 0.99 / 0.5);
+  std::printf("0.99 p_L: bore displacement %.4g = %.2f x the elastic extrapolation\n", bore_displacement(below),
+              ratio);
+  EXPECT_GT(ratio, 2);
+  const tether::testing::Run above = run_deck_text(loaded_to(1.02 * limit, "0.05, 1., 1e-4, 0.05"));
+  EXPECT_FALSE(above.summary.completed);
+  if (!above.recorder.results.empty()) {
+    const double reached = above.recorder.results.back().step_time * 1.02;
+    std::printf("1.02 p_L: stopped at p = %.6f p_L\n", reached);
+    EXPECT_LT(reached, 1.002);
+    EXPECT_GT(reached, 0.995);
+  }
+}
+
+TEST(PlasticCylinder, NewtonConvergesQuadraticallyWithTheConsistentTangent) {
+  const tether::testing::Run run = run_deck_text(loaded_to(hill_pressure(17)));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  // Order from three successive residuals above round-off: log(r2/r1) / log(r1/r0).
+  double worst = INFINITY;
+  int measured = 0;
+  for (const auto& r : run.recorder.residuals) {
+    for (std::size_t k = 1; k + 1 < r.size(); ++k) {
+      if (r[k + 1] < 1e-9 * r[0] || r[k] >= r[k - 1] || r[k + 1] >= r[k]) continue;
+      const double order = std::log(r[k + 1] / r[k]) / std::log(r[k] / r[k - 1]);
+      worst = std::min(worst, order);
+      ++measured;
+    }
+  }
+  std::printf("Newton order: %d measurements, smallest %.2f; %d increments, %d iterations\n", measured, worst,
+              run.summary.increments, run.summary.iterations);
+  EXPECT_GE(measured, 3);
+  EXPECT_GE(worst, 1.8);
+}
+
+namespace {
+
+class StateRecorder final : public AnalysisObserver {
+ public:
+  void on_results(const IncrementResults& r, const Step&, bool) override { results.push_back(r); }
+  void on_restart_state(const RestartState& s) override {
+    states.push_back(decode_restart(encode_restart(s), "memory.rst"));
+  }
+  std::vector<IncrementResults> results;
+  std::vector<RestartState> states;
+};
+
+struct Outcome {
+  AnalysisSummary summary;
+  Eigen::VectorXd u;
+  StateRecorder recorder;
+};
+
+Outcome run_model(const Model& model, const RestartState* from = nullptr) {
+  Outcome out;
+  StaticAnalysis analysis(model, out.recorder);
+  if (from) analysis.resume(*from, "memory.rst");
+  out.summary = analysis.run();
+  out.u = analysis.solution();
+  return out;
+}
+
+}  // namespace
+
+TEST(PlasticCylinder, RestartContinuesThePlasticAnalysisIdentically) {
+  const Model model = read_deck_string(cylinder_deck(), "plastic_cylinder.inp");
+  const Outcome full = run_model(model);
+  ASSERT_TRUE(full.summary.completed) << full.summary.message;
+  ASSERT_GE(full.recorder.states.size(), 10u);
+  // Unloaded: residual plastic strain remains.
+  double peeq = 0;
+  for (const auto& element : full.recorder.results.back().points)
+    for (const PointValues& p : element) peeq = std::max(peeq, p.peeq);
+  EXPECT_GT(peeq, 1e-4);
+  for (std::size_t k : {std::size_t{6}, std::size_t{10}, full.recorder.states.size() - 3}) {
+    const Outcome resumed = run_model(model, &full.recorder.states[k]);
+    ASSERT_TRUE(resumed.summary.completed) << resumed.summary.message;
+    EXPECT_EQ((resumed.u - full.u).cwiseAbs().maxCoeff(), 0.0) << "from state " << k;
+    const IncrementResults &a = resumed.recorder.results.back(), &b = full.recorder.results.back();
+    for (std::size_t e = 0; e < a.points.size(); ++e)
+      for (std::size_t q = 0; q < a.points[e].size(); ++q) {
+        EXPECT_EQ(a.points[e][q].peeq, b.points[e][q].peeq);
+        EXPECT_EQ(a.points[e][q].stress, b.points[e][q].stress);
+      }
+    EXPECT_EQ(encode_restart(resumed.recorder.states.back()), encode_restart(full.recorder.states.back()));
+  }
+}
