@@ -162,3 +162,78 @@ TEST(PlasticCylinder, RestartContinuesThePlasticAnalysisIdentically) {
     EXPECT_EQ(encode_restart(resumed.recorder.states.back()), encode_restart(full.recorder.states.back()));
   }
 }
+
+TEST(PlasticBar, PlaneStressKinematicBarMatchesTheClosedFormWithItsOutput) {
+  // One CPS4 (1 x 1, thickness 0.1) pulled to eps = 0.004, then pushed to -0.002:
+  // uniaxial stress, linear kinematic hardening (yield 200, H = 10000, E = 200000).
+  const std::string deck = R"(*NODE, NSET=ALL
+1, 0, 0
+2, 1, 0
+3, 1, 1
+4, 0, 1
+*ELEMENT, TYPE=CPS4, ELSET=PS
+1, 1, 2, 3, 4
+*NSET, NSET=TOP
+3, 4
+*NSET, NSET=BOTTOM
+1, 2
+*MATERIAL, NAME=KIN
+*ELASTIC
+200000, 0.3
+*PLASTIC, HARDENING=KINEMATIC
+200., 0.
+10200., 1.
+*SOLID SECTION, ELSET=PS, MATERIAL=KIN
+0.1
+*BOUNDARY
+BOTTOM, 2, 2
+1, 1, 1
+*STEP
+*STATIC
+0.1, 1.
+*CONTROLS, PARAMETERS=FIELD
+1e-12, 1e-12
+*BOUNDARY
+TOP, 2, 2, 0.004
+*END STEP
+*STEP
+*STATIC
+0.1, 1.
+*CONTROLS, PARAMETERS=FIELD
+1e-12, 1e-12
+*BOUNDARY
+TOP, 2, 2, -0.002
+*END STEP
+)";
+  const tether::testing::Run run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const double E = 200000, s0 = 200, H = 10000, volume = 0.1;
+  const double ep1 = (0.004 - s0 / E) / (1 + H / E), s1 = s0 + H * ep1;
+  const double s2 = (H * -0.002 - s0) / (1 + H / E), ep2 = -0.002 - s2 / E;
+  const IncrementResults* end1 = nullptr;
+  for (const auto& r : run.recorder.results)
+    if (r.step == 1) end1 = &r;
+  ASSERT_NE(end1, nullptr);
+  const IncrementResults& end2 = run.last();
+  for (const PointValues& p : end1->points[0]) {
+    EXPECT_NEAR(p.stress[1], s1, 1e-9 * s1);
+    EXPECT_NEAR(p.peeq, ep1, 1e-12);
+    EXPECT_NEAR(p.plastic_strain[1], ep1, 1e-12);
+    EXPECT_NEAR(p.plastic_strain[0], -0.5 * ep1, 1e-12);
+  }
+  for (const PointValues& p : end2.points[0]) {
+    EXPECT_NEAR(p.stress[1], s2, 1e-9 * s0);
+    EXPECT_NEAR(p.peeq, ep1 + (ep1 - ep2), 1e-12);
+    EXPECT_NEAR(p.plastic_strain[1], ep2, 1e-12);
+  }
+  ASSERT_EQ(end2.nodal_peeq.size(), 4u);
+  ASSERT_EQ(end2.element_peeq.size(), 1u);
+  EXPECT_NEAR(end2.nodal_peeq[2], ep1 + (ep1 - ep2), 1e-12);
+  EXPECT_NEAR(end2.element_peeq[0], ep1 + (ep1 - ep2), 1e-12);
+  EXPECT_NEAR(end2.nodal_plastic_strain[2][1], ep2, 1e-12);
+  // ALLPD: sigma d eps_p, linear in eps_p on both legs (reverse yield at s1 - 2 s0).
+  const double work1 = 0.5 * (s0 + s1) * ep1, work2 = 0.5 * ((s1 - 2 * s0) + s2) * (ep2 - ep1);
+  ASSERT_TRUE(end1->plastic_dissipation && end2.plastic_dissipation);
+  EXPECT_NEAR(*end1->plastic_dissipation, volume * work1, 1e-10 * volume * work1);
+  EXPECT_NEAR(*end2.plastic_dissipation, volume * (work1 + work2), 1e-10 * volume * (work1 + work2));
+}

@@ -82,6 +82,8 @@ TEST(PlasticElement, EvaluateCommitsNothingAndCommitStoresTheConvergedTrialState
   // Results from the committed records equal those computed before commit, bit for bit.
   const std::vector<PointValues> before = values_at(*a.element, u1);
   const double energy_before = a.element->strain_energy({u1, u1, 1, 1, 1, false});
+  const double dissipation_before = a.element->plastic_dissipation({u1, u1, 1, 1, 1, false});
+  EXPECT_GT(dissipation_before, 0);
   a.element->commit({u1, u1, 1, 1, 1, false});
   const std::vector<PointValues> after = values_at(*a.element, u1);
   ASSERT_EQ(before.size(), after.size());
@@ -93,7 +95,8 @@ TEST(PlasticElement, EvaluateCommitsNothingAndCommitStoresTheConvergedTrialState
     EXPECT_GT(after[q].peeq, 0);
   }
   EXPECT_EQ(a.element->strain_energy({u1, u1, 1, 1, 1, false}), energy_before);
-  EXPECT_GT(a.element->plastic_dissipation(), 0);
+  EXPECT_EQ(a.element->plastic_dissipation({u1, u1, 1, 1, 1, false}), dissipation_before);
+  EXPECT_GT(a.element->plastic_dissipation({u1, u1, 1, 1, 1, false}), 0);
   // After the commit the element starts from the new history: unloading to u = 0 leaves a residual stress.
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(u1.size());
   EXPECT_GT(evaluate_at(*a.element, zero, false).residual.norm(), 1e-3);
@@ -113,7 +116,8 @@ TEST(PlasticElement, SavedHistoryLoadsIntoAFreshElement) {
   EXPECT_TRUE(in.empty());
   EXPECT_EQ(evaluate_at(*a.element, u2, false).residual, evaluate_at(*b.element, u2, false).residual);
   EXPECT_EQ(values_at(*a.element, u1)[0].peeq, values_at(*b.element, u1)[0].peeq);
-  EXPECT_EQ(a.element->plastic_dissipation(), b.element->plastic_dissipation());
+  EXPECT_EQ(a.element->plastic_dissipation({u1, u1, 1, 1, 1, false}),
+            b.element->plastic_dissipation({u1, u1, 1, 1, 1, false}));
   // A record of another kind or size is refused.
   std::vector<double> bad(saved.begin(), saved.end() - 1);
   std::span<const double> short_in(bad);

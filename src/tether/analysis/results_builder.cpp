@@ -82,8 +82,18 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   // element by element (one element's extrapolation alive at a time).
   r.nodal_stress.assign(n_nodes, Tensor4{});
   r.nodal_strain.assign(n_nodes, Tensor4{});
+  const bool plastic = std::any_of(elements.begin(), elements.end(), [](const auto& e) { return e->has_history(); });
+  if (plastic) {
+    r.nodal_peeq.assign(n_nodes, 0.0);
+    r.nodal_plastic_strain.assign(n_nodes, Tensor4{});
+    r.element_peeq.assign(static_cast<std::size_t>(n_elements), 0.0);
+    double dissipation = 0;
+    for (const auto& e : elements) dissipation += e->plastic_dissipation(state);
+    r.plastic_dissipation = dissipation;
+  }
   std::vector<int> count(n_nodes, 0);
-  std::vector<Tensor4> element_stress, element_strain;
+  std::vector<Tensor4> element_stress, element_strain, element_pe;
+  std::vector<double> element_peeq;
   for (int first = 0; first < n_elements; first += kPointBlock) {
     const int last = std::min(n_elements, first + kPointBlock);
     const auto points_of = [&](int e) -> std::vector<PointValues>& {
@@ -96,6 +106,16 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
       if (stream) r.element_stress[static_cast<std::size_t>(e)] = mean_stress(points);
       elements[e]->extrapolate_to_nodes(points, element_stress, element_strain);
       const auto& nodes = elements[e]->nodes();
+      if (plastic) {
+        elements[e]->extrapolate_plastic_to_nodes(points, element_peeq, element_pe);
+        double mean = 0;
+        for (const PointValues& p : points) mean += p.peeq / static_cast<double>(points.size());
+        r.element_peeq[static_cast<std::size_t>(e)] = mean;
+        for (std::size_t a = 0; a < nodes.size(); ++a) {
+          r.nodal_peeq[nodes[a]] += element_peeq[a];
+          for (int k = 0; k < 4; ++k) r.nodal_plastic_strain[nodes[a]][k] += element_pe[a][k];
+        }
+      }
       for (std::size_t a = 0; a < nodes.size(); ++a) {
         for (int k = 0; k < 4; ++k) {
           r.nodal_stress[nodes[a]][k] += element_stress[a][k];
@@ -106,8 +126,12 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
     }
   }
   for (int i = 0; i < n_nodes; ++i)
-    if (count[i] > 1)
+    if (count[i] > 1) {
       for (int k = 0; k < 4; ++k) r.nodal_stress[i][k] /= count[i], r.nodal_strain[i][k] /= count[i];
+      if (!plastic) continue;
+      r.nodal_peeq[i] /= count[i];
+      for (int k = 0; k < 4; ++k) r.nodal_plastic_strain[i][k] /= count[i];
+    }
   for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state, dofs));
   for (const auto& c : discretization.user_constraints()) r.multipliers.push_back(c->values(state));
   for (const auto& pair : discretization.contact_pairs()) r.contact.push_back(pair->values(state));

@@ -247,14 +247,28 @@ double ContinuumElement::strain_energy(const EvaluationState& s) const {
   return energy;
 }
 
-double ContinuumElement::plastic_dissipation() const {
+double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
+  if (n_state_ == 0) return 0;
+  Eigen::VectorXd ue(2 * n_nodes_);
+  gather(s.u, ue);
+  const bool from_records = committed_at(ue);
   const int record = kRecordState + n_state_;
+  MaterialPoint mp;
   PointGeometry g;
+  std::vector<double> trial(static_cast<std::size_t>(n_state_));
   double total = 0;
-  if (n_state_ == 0) return total;
-  for (int q = 0; q < n_points_; ++q) {
-    point_geometry(q, g);
-    total += history_[static_cast<std::size_t>(q * record + kRecordDissipation)] * g.dV;
+  try {
+    for (int q = 0; q < n_points_; ++q) {
+      point_geometry(q, g);
+      double density = history_[static_cast<std::size_t>(q * record + kRecordDissipation)];
+      if (!from_records) {
+        material_point(q, g, ue.data(), s.nlgeom, mp, trial);
+        density += mp.dissipation;
+      }
+      total += density * g.dV;
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
   }
   return total;
 }
@@ -374,6 +388,19 @@ void ContinuumElement::extrapolate_to_nodes(const std::vector<PointValues>& poin
         nodal_stress[a][c] += E(a, q) * points[q].stress[c];
         nodal_strain[a][c] += E(a, q) * points[q].strain[c];
       }
+}
+
+void ContinuumElement::extrapolate_plastic_to_nodes(const std::vector<PointValues>& points,
+                                                    std::vector<double>& nodal_peeq,
+                                                    std::vector<Tensor4>& nodal_plastic_strain) const {
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  nodal_peeq.assign(n_nodes_, 0.0);
+  nodal_plastic_strain.assign(n_nodes_, Tensor4{});
+  for (int a = 0; a < n_nodes_; ++a)
+    for (int q = 0; q < n_points_; ++q) {
+      nodal_peeq[a] += E(a, q) * points[q].peeq;
+      for (int c = 0; c < 4; ++c) nodal_plastic_strain[a][c] += E(a, q) * points[q].plastic_strain[c];
+    }
 }
 
 }  // namespace tether

@@ -73,9 +73,11 @@ class ContinuumElement final : public Contribution {
   void load_state(std::span<const double>& in) override;
   /// True when the material keeps a history at the integration points.
   [[nodiscard]] bool has_history() const { return n_state_ > 0; }
-  /// Plastic dissipation committed so far [energy] (total over 2 pi for
-  /// axisymmetry); 0 without history.
-  [[nodiscard]] double plastic_dissipation() const;
+  /// Plastic dissipation up to the state s [energy] (total over 2 pi for
+  /// axisymmetry): the committed records' when they were committed at s.u,
+  /// else theirs plus the increment to the trial state of s.u (as
+  /// point_values); 0 without history.
+  [[nodiscard]] double plastic_dissipation(const EvaluationState& s) const;
 
   [[nodiscard]] int label() const { return label_; }
   [[nodiscard]] const ElementType& type() const { return type_; }
@@ -107,6 +109,9 @@ class ContinuumElement final : public Contribution {
   /// ABAQUS-like (see fem/extrapolation.hpp). `points` has n_points() entries.
   void extrapolate_to_nodes(const std::vector<PointValues>& points, std::vector<Tensor4>& nodal_stress,
                             std::vector<Tensor4>& nodal_strain) const;
+  /// As extrapolate_to_nodes, for PEEQ and the plastic strain PE.
+  void extrapolate_plastic_to_nodes(const std::vector<PointValues>& points, std::vector<double>& nodal_peeq,
+                                    std::vector<Tensor4>& nodal_plastic_strain) const;
 
  private:
   /// Geometry of one integration point, recomputed from the reference

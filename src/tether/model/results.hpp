@@ -112,6 +112,11 @@ struct IncrementResults {
   std::vector<Eigen::Vector2d> reaction;      ///< per node: internal minus applied force at constrained dofs
   std::vector<Tensor4> nodal_stress;          ///< per node: average of extrapolated element values
   std::vector<Tensor4> nodal_strain;          ///< per node, as above
+  /// Plasticity (all empty / nullopt when no element keeps a material history):
+  std::vector<double> nodal_peeq;             ///< per node: PEEQ averaged as nodal_stress
+  std::vector<Tensor4> nodal_plastic_strain;  ///< per node: PE averaged as nodal_stress, tensor shear
+  std::vector<double> element_peeq;           ///< per element: mean PEEQ of its points
+  std::optional<double> plastic_dissipation;  ///< ALLPD: plastic dissipation of the model up to now [energy]
   std::vector<std::vector<PointValues>> points;  ///< per element, per integration point (empty when streamed)
   std::vector<Tensor4> element_stress;        ///< streamed only: per element, mean of its point stresses
   const ElementPointSource* point_source = nullptr;  ///< streamed only: computes points[e] on demand
