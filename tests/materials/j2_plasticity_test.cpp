@@ -46,7 +46,7 @@ State random_state(std::mt19937& gen, bool plane) {
 MaterialResponse respond(const J2Plasticity& m, Vec6 eps, bool plane, const State& old, State* next = nullptr) {
   State scratch(old.size());
   MaterialResponse r;
-  m.update_small_strain(eps, plane, old, next ? *next : scratch, r);
+  m.update_small_strain(eps, plane, old, next ? *next : scratch, {}, r);
   return r;
 }
 
@@ -109,7 +109,7 @@ struct UniaxialTest {
     MaterialResponse r;
     for (int it = 0; it < 30; ++it) {
       Vec6 e = eps;
-      m.update_small_strain(e, plane, state, next, r);
+      m.update_small_strain(e, plane, state, next, {}, r);
       if (plane) {
         eps(2) = e(2);
         if (std::abs(r.stress(1)) < 1e-11 * 200) break;
@@ -220,12 +220,12 @@ TEST(J2Plasticity, PlaneStressReturnEqualsTheGeneralReturnAtZeroOutOfPlaneStress
       State ps_next(old.size()), g_next(old.size());
       MaterialResponse ps, g;
       Vec6 e_ps = eps;
-      m.update_small_strain(e_ps, true, old, ps_next, ps);
+      m.update_small_strain(e_ps, true, old, ps_next, {}, ps);
       EXPECT_EQ(ps.stress(2), 0.0);
       // General return with Newton on eps_33 until sigma_33 = 0.
       Vec6 e = eps;
       for (int it = 0; it < 40; ++it) {
-        m.update_small_strain(e, false, old, g_next, g);
+        m.update_small_strain(e, false, old, g_next, {}, g);
         if (std::abs(g.stress(2)) < 1e-12 * 200) break;
         e(2) -= g.stress(2) / g.tangent(2, 2);
       }
@@ -243,7 +243,7 @@ TEST(J2Plasticity, UpdateLeavesTheCommittedStateAlone) {
   Vec6 eps = Vec6::Zero();
   eps(0) = 0.01;
   MaterialResponse r;
-  m.update_small_strain(eps, false, old, next, r);
+  m.update_small_strain(eps, false, old, next, {}, r);
   EXPECT_GT(next[12], 0);
   for (double v : old) EXPECT_EQ(v, 0.0);
 }

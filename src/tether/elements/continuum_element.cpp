@@ -98,6 +98,7 @@ double ContinuumElement::point_geometry(int q, PointGeometry& g) const {
   const double detJ = J.determinant();
   g.N = N;
   g.R = X.x();
+  g.Y = X.y();
   const bool axisymmetric = type_.family == Family::Axisymmetric;
   const double measure = axisymmetric ? 2 * std::numbers::pi * X.x() : thickness_;
   g.dV = shapes.weight[static_cast<std::size_t>(q)] * detJ * measure;
@@ -128,7 +129,19 @@ bool ContinuumElement::committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue)
   return true;
 }
 
-void ContinuumElement::material_point(int q, const PointGeometry& g, const double* ue, bool nlgeom,
+PointContext ContinuumElement::context(const EvaluationState& s, int q, const PointGeometry& g) const {
+  PointContext c;
+  c.element = label_;
+  c.point = q + 1;
+  c.x = g.R;
+  c.y = g.Y;
+  c.step_time = s.step_time;
+  c.total_time = s.total_time;
+  c.dt = s.dt;
+  return c;
+}
+
+void ContinuumElement::material_point(int q, const PointGeometry& g, const double* ue, const EvaluationState& s,
                                       MaterialPoint& mp, std::span<double> trial) const {
   const int n = n_nodes_;
   Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
@@ -141,15 +154,16 @@ void ContinuumElement::material_point(int q, const PointGeometry& g, const doubl
     ur += ue[2 * a] * g.N(a);
   }
   const double hoop = ur / g.R;
-  if (nlgeom)
-    finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, mp);
+  if (s.nlgeom)
+    finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
   else
-    small_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, mp);
+    small_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
 }
 
 template <int NN>
-void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalSystem& out,
+void ContinuumElement::evaluate_kernel(const double* ue_ptr, const EvaluationState& s, LocalSystem& out,
                                        bool need_tangent) const {
+  const bool nlgeom = s.nlgeom;
   constexpr int ND = 2 * NN;
   assert(out.residual.size() == ND && (!need_tangent || out.tangent.rows() == ND));
   using Nodal = Eigen::Matrix<double, NN, 1>;
@@ -170,9 +184,9 @@ void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalS
     H.col(1).noalias() = U * Gy;
     const double hoop = axisymmetric ? U.row(0).dot(N) / R : 0.0;
     if (nlgeom)
-      finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, mp);
+      finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
     else
-      small_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, mp);
+      small_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
 
     // B: rows (11, 22, 33, 2*12) of the strain variation; F = I for small strain.
     const Eigen::Matrix2d& F = mp.F;
@@ -212,10 +226,10 @@ void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool
   gather(s.u, ue);
   try {
     switch (type_.shape) {
-      case Shape::Tri3: evaluate_kernel<3>(ue.data(), s.nlgeom, out, need_tangent); break;
-      case Shape::Quad4: evaluate_kernel<4>(ue.data(), s.nlgeom, out, need_tangent); break;
-      case Shape::Tri6: evaluate_kernel<6>(ue.data(), s.nlgeom, out, need_tangent); break;
-      case Shape::Quad8: evaluate_kernel<8>(ue.data(), s.nlgeom, out, need_tangent); break;
+      case Shape::Tri3: evaluate_kernel<3>(ue.data(), s, out, need_tangent); break;
+      case Shape::Quad4: evaluate_kernel<4>(ue.data(), s, out, need_tangent); break;
+      case Shape::Tri6: evaluate_kernel<6>(ue.data(), s, out, need_tangent); break;
+      case Shape::Quad8: evaluate_kernel<8>(ue.data(), s, out, need_tangent); break;
     }
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
@@ -238,7 +252,7 @@ double ContinuumElement::strain_energy(const EvaluationState& s) const {
         energy += history_[static_cast<std::size_t>(q * record + kRecordEnergy)] * g.dV;
         continue;
       }
-      material_point(q, g, ue.data(), s.nlgeom, mp, trial);
+      material_point(q, g, ue.data(), s, mp, trial);
       energy += strain_energy_density(*material_, s.nlgeom, mp) * g.dV;
     }
   } catch (const ModelError& e) {
@@ -262,7 +276,7 @@ double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
       point_geometry(q, g);
       double density = history_[static_cast<std::size_t>(q * record + kRecordDissipation)];
       if (!from_records) {
-        material_point(q, g, ue.data(), s.nlgeom, mp, trial);
+        material_point(q, g, ue.data(), s, mp, trial);
         density += mp.dissipation;
       }
       total += density * g.dV;
@@ -285,7 +299,7 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
   try {
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
-      material_point(q, g, ue.data(), s.nlgeom, mp, trial);
+      material_point(q, g, ue.data(), s, mp, trial);
       std::span<const double> state = trial;
       if (from_records) {  // the committed values of this very state (equal to mp's up to round-off)
         const double* r = history_.data() + static_cast<std::ptrdiff_t>(q * record);
@@ -323,7 +337,7 @@ void ContinuumElement::commit(const EvaluationState& s) {
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
       double* r = next.data() + static_cast<std::ptrdiff_t>(q * record);
-      material_point(q, g, ue.data(), s.nlgeom, mp, std::span<double>(r + kRecordState, n_state_));
+      material_point(q, g, ue.data(), s, mp, std::span<double>(r + kRecordState, n_state_));
       Eigen::Map<Vec6>(r + kRecordStress) = mp.stress;
       Eigen::Map<Vec6>(r + kRecordStrain) = mp.strain;
       r[kRecordEnergy] = mp.elastic_energy;

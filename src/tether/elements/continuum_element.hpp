@@ -122,6 +122,7 @@ class ContinuumElement final : public Contribution {
     ShapeGradient G;  ///< dN/dX: column 0 = d/dX, column 1 = d/dY
     double dV = 0;    ///< weight * det J * (thickness, or 2 pi R)
     double R = 0;     ///< X of the point (the radius for axisymmetry)
+    double Y = 0;     ///< Y of the point
   };
   /// Fills `g` for integration point q; returns det J (checked > 0 at construction).
   double point_geometry(int q, PointGeometry& g) const;
@@ -129,14 +130,16 @@ class ContinuumElement final : public Contribution {
   void gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const;
   /// Evaluates point q (geometry g) from local displacements ue and its
   /// committed history; the trial state goes to `trial` (n_state_ values).
-  void material_point(int q, const PointGeometry& g, const double* ue, bool nlgeom, MaterialPoint& mp,
+  void material_point(int q, const PointGeometry& g, const double* ue, const EvaluationState& s, MaterialPoint& mp,
                       std::span<double> trial) const;
+  /// What the material is told about point q (geometry g) in state s.
+  [[nodiscard]] PointContext context(const EvaluationState& s, int q, const PointGeometry& g) const;
   /// Point q's material state in the committed records (empty without history).
   [[nodiscard]] std::span<const double> committed_state(int q) const;
   /// True when the committed records were committed at the local displacements ue.
   [[nodiscard]] bool committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue) const;
   template <int NN>
-  void evaluate_kernel(const double* ue, bool nlgeom, LocalSystem& out, bool need_tangent) const;
+  void evaluate_kernel(const double* ue, const EvaluationState& s, LocalSystem& out, bool need_tangent) const;
 
   /// Layout of a point's committed record: stress (6), strain (6), elastic
   /// energy density, accumulated dissipation density, material state.

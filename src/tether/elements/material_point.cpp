@@ -21,17 +21,17 @@ void take_response(const MaterialResponse& r, MaterialPoint& mp) {
 
 void small_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
                         double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
-                        MaterialPoint& mp) {
+                        const PointContext& where, MaterialPoint& mp) {
   mp.strain << H(0, 0), H(1, 1), family == Family::Axisymmetric ? hoop_strain : 0.0,
       H(0, 1) + H(1, 0), 0, 0;
   MaterialResponse r;
-  material.update_small_strain(mp.strain, family == Family::PlaneStress, old_state, new_state, r);
+  material.update_small_strain(mp.strain, family == Family::PlaneStress, old_state, new_state, where, r);
   take_response(r, mp);
 }
 
 void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
                          double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
-                         MaterialPoint& mp) {
+                         const PointContext& where, MaterialPoint& mp) {
   mp.F = Eigen::Matrix2d::Identity() + H;
   const double det2 = mp.F.determinant();
   mp.F33 = family == Family::Axisymmetric ? 1 + hoop_strain : 1.0;
@@ -43,7 +43,7 @@ void finite_strain_point(const ConstitutiveModel& material, Family family, const
   mp.C.topLeftCorner<2, 2>().noalias() = mp.F.transpose() * mp.F;
   mp.C(2, 2) = mp.F33 * mp.F33;
   MaterialResponse r;
-  material.update_finite_strain(mp.C, family == Family::PlaneStress, old_state, new_state, r);
+  material.update_finite_strain(mp.C, family == Family::PlaneStress, old_state, new_state, where, r);
   take_response(r, mp);
   if (family == Family::PlaneStress) mp.F33 = std::sqrt(mp.C(2, 2));
   mp.strain << 0.5 * (mp.C(0, 0) - 1), 0.5 * (mp.C(1, 1) - 1), 0.5 * (mp.C(2, 2) - 1), mp.C(0, 1), 0, 0;
@@ -56,7 +56,7 @@ double plane_stress_thickness_stretch(const ConstitutiveModel& material, const E
     throw ModelError("a load on the current area of a plane-stress face needs an elastic material (got " +
                      material.describe() + ")");
   MaterialPoint mp;
-  finite_strain_point(material, Family::PlaneStress, H, 0, {}, {}, mp);
+  finite_strain_point(material, Family::PlaneStress, H, 0, {}, {}, PointContext{}, mp);
   // S_33(E) = 0 holds for every in-plane E: dE33 = -(D_3k / D_33) dE_k over
   // k = 11, 22, 12 (engineering shear), with the uncondensed tangent.
   Vec6 S;

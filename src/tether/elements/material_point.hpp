@@ -29,11 +29,12 @@ struct MaterialPoint {
 /// Small strain from the displacement gradient H (H(i,j) = du_i/dx_j) and, for
 /// axisymmetry, the hoop strain u_r / r (ignored otherwise), starting from the
 /// committed history old_state; the trial history goes to new_state (both
-/// material.n_state() values; empty for elastic materials). Plane stress
+/// material.n_state() values; empty for elastic materials); `where` is handed
+/// to the material. Plane stress
 /// solves eps_33 so that sigma_33 = 0. Throws ModelError if that fails.
 void small_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
                         double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
-                        MaterialPoint& mp);
+                        const PointContext& where, MaterialPoint& mp);
 
 /// Finite strain (total Lagrangian) from H = dU/dX and, for axisymmetry,
 /// U_r / R (hoop stretch F33 = 1 + U_r/R); histories as in
@@ -42,7 +43,7 @@ void small_strain_point(const ConstitutiveModel& material, Family family, const 
 /// finite-strain form.
 void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
                          double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
-                         MaterialPoint& mp);
+                         const PointContext& where, MaterialPoint& mp);
 
 /// Plane stress under finite strain: the thickness stretch F33 = h/h0 at the
 /// in-plane displacement gradient H = dU/dX (S_33 = 0 solved as in

@@ -115,6 +115,21 @@ std::vector<KeywordSpec> build_table() {
                "the back stress grows with the table's slope (Prager-Ziegler, linear kinematic hardening for two "
                "rows); COMBINED is not supported yet.")},
        handle_plastic, ""},
+      {"USER MATERIAL", kMaterial,
+       "The material's mechanical behaviour from an ABAQUS UMAT in a shared library, loaded at run time (small "
+       "strain; src/tether/materials/user_material.h documents the arguments; a gfortran UMAT works as is).",
+       "CONSTANTS values (PROPS), up to 8 per line",
+       {{"CONSTANTS", PT::Integer, "", {}, true, "", "Number of constants (NPROPS)."},
+        {"LIBRARY", PT::Text, "", {}, true, "",
+         "tether extension: the shared library holding the routine (a path with '/' is relative to the working "
+         "directory; a bare name is searched by the dynamic loader)."},
+        {"SYMBOL", PT::Text, "", {}, false, "",
+         "tether extension: the routine's symbol (default umat_, gfortran's name of SUBROUTINE UMAT)."},
+        choice("TYPE", "MECHANICAL", {"MECHANICAL"}, "Only mechanical user materials are supported."),
+        flag("UNSYMM", "Accepted and ignored: tether never assumes a user material's tangent symmetric.")},
+       handle_user_material, ""},
+      {"DEPVAR", kMaterial, "Number of solution-dependent state variables (NSTATV) of a *USER MATERIAL.",
+       "`n` with n >= 0", {}, handle_depvar, ""},
       {"DENSITY", kMaterial,
        "Mass density, for the element masses (consistent or lumped; docs/theory/elements.md, section Mass). "
        "Optional: static steps do not use it; asking for the mass of an element whose material has none is an "

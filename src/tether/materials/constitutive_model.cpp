@@ -4,6 +4,7 @@
 #include "tether/materials/linear_elastic.hpp"
 #include "tether/materials/neo_hooke.hpp"
 #include "tether/materials/plane_stress.hpp"
+#include "tether/materials/user_material.hpp"
 
 namespace tether {
 
@@ -32,7 +33,7 @@ std::unique_ptr<ConstitutiveModel> make_plasticity(const MaterialData& data) {
 }  // namespace
 
 void ElasticModel::update_small_strain(Vec6& eps, bool plane_stress, std::span<const double>, std::span<double>,
-                                       MaterialResponse& out) const {
+                                       const PointContext&, MaterialResponse& out) const {
   if (plane_stress)
     plane_stress_small_strain(*this, eps, out.stress, out.tangent);
   else
@@ -42,7 +43,7 @@ void ElasticModel::update_small_strain(Vec6& eps, bool plane_stress, std::span<c
 }
 
 void ElasticModel::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double>,
-                                        std::span<double>, MaterialResponse& out) const {
+                                        std::span<double>, const PointContext&, MaterialResponse& out) const {
   if (plane_stress)
     plane_stress_finite_strain(*this, C, out.stress, out.tangent);
   else
@@ -51,7 +52,27 @@ void ElasticModel::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
   out.dissipation = 0;
 }
 
+namespace {
+
+std::unique_ptr<ConstitutiveModel> make_user_material(const MaterialData& data) {
+  const MaterialData::User& u = *data.user;
+  if (data.elastic || data.neo_hooke || data.plastic)
+    fail(data, "*USER MATERIAL (" + u.where.str() + ") defines the whole mechanical behaviour: remove *ELASTIC, "
+               "*HYPERELASTIC and *PLASTIC");
+  try {
+    return std::make_unique<UserMaterial>(data.name, u.library, u.symbol, u.constants, data.depvar.value_or(0));
+  } catch (const ModelError& e) {
+    throw ModelError(u.where.str() + ": material " + data.name + ": " + e.what());
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<ConstitutiveModel> make_constitutive_model(const MaterialData& data) {
+  if (data.user) return make_user_material(data);
+  if (data.depvar)
+    fail(data, "*DEPVAR (" + data.depvar_where.str() + ") without *USER MATERIAL: only user materials have "
+               "state variables in tether");
   if (data.elastic && data.neo_hooke)
     fail(data, "both *ELASTIC and *HYPERELASTIC are given; keep one");
   if (data.elastic) {

@@ -36,6 +36,17 @@ struct MaterialResponse {
   double dissipation = 0;       ///< plastic dissipation of the increment, >= 0 [energy/volume]
 };
 
+/// Where and when a point is updated: what a user material (UMAT) is told.
+/// Zeros where the caller does not know.
+struct PointContext {
+  int element = 0;                   ///< element label
+  int point = 0;                     ///< integration point, 1-based
+  double x = 0, y = 0;               ///< reference coordinates of the point [length]
+  double step_time = 0;              ///< step time at the end of the increment
+  double total_time = 0;             ///< total time at the end of the increment
+  double dt = 0;                     ///< increment size
+};
+
 /// A constitutive model with (possibly) history. The history of one
 /// integration point is n_state() doubles laid out as the model chooses; the
 /// caller owns them (committed state) and passes them in. An update never
@@ -56,10 +67,12 @@ class ConstitutiveModel {
   /// (engineering shear); with plane_stress, eps(2) is a starting guess on
   /// entry and holds eps_33 (with sigma_33 = 0) on exit. old_state: the
   /// committed state (n_state() values); new_state: receives the trial state
-  /// (same size, may not alias old_state). Throws ModelError when the update
-  /// fails (local iteration not converged).
+  /// (same size, may not alias old_state). `where`: the point and the times.
+  /// Throws ModelError when the update fails (local iteration not converged,
+  /// a user routine's NaN or request for a smaller increment).
   virtual void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
-                                   std::span<double> new_state, MaterialResponse& out) const = 0;
+                                   std::span<double> new_state, const PointContext& where,
+                                   MaterialResponse& out) const = 0;
 
   /// Finite strain (total Lagrangian) update from the right Cauchy-Green tensor
   /// C (symmetric, det C > 0); with plane_stress, C(2,2) is a starting guess
@@ -68,7 +81,8 @@ class ConstitutiveModel {
   /// as in update_small_strain. Throws ModelError when the model has no
   /// finite-strain form or the update fails.
   virtual void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
-                                    std::span<double> new_state, MaterialResponse& out) const = 0;
+                                    std::span<double> new_state, const PointContext& where,
+                                    MaterialResponse& out) const = 0;
 
   /// True when the small-strain stress is linear in the strain with a constant
   /// tangent (elasticity): a small-strain element of it is linear in u.
@@ -111,9 +125,11 @@ class ElasticModel : public ConstitutiveModel {
   [[nodiscard]] virtual double finite_strain_energy(const Eigen::Matrix3d& C) const = 0;
 
   void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
-                           std::span<double> new_state, MaterialResponse& out) const final;
+                           std::span<double> new_state, const PointContext& where,
+                           MaterialResponse& out) const final;
   void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
-                            std::span<double> new_state, MaterialResponse& out) const final;
+                            std::span<double> new_state, const PointContext& where,
+                            MaterialResponse& out) const final;
 };
 
 /// Builds the model of a `*MATERIAL`: `*ELASTIC` -> LinearElastic (St.Venant-

@@ -96,12 +96,13 @@ std::string J2Plasticity::describe() const {
 }
 
 void J2Plasticity::update_finite_strain(Eigen::Matrix3d&, bool, std::span<const double>, std::span<double>,
-                                        MaterialResponse&) const {
+                                        const PointContext&, MaterialResponse&) const {
   throw ModelError("*PLASTIC is small strain only in tether: run the step without NLGEOM");
 }
 
 void J2Plasticity::update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
-                                       std::span<double> new_state, MaterialResponse& out) const {
+                                       std::span<double> new_state, const PointContext&,
+                                       MaterialResponse& out) const {
   std::copy(old_state.begin(), old_state.end(), new_state.begin());
   if (plane_stress)
     plane_stress_return(eps, old_state, new_state, out);

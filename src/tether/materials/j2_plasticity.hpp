@@ -32,10 +32,12 @@ class J2Plasticity final : public ConstitutiveModel {
 
   [[nodiscard]] int n_state() const override { return kStateSize; }
   void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
-                           std::span<double> new_state, MaterialResponse& out) const override;
+                           std::span<double> new_state, const PointContext& where,
+                           MaterialResponse& out) const override;
   /// Throws ModelError: tether's plasticity is small strain only.
   void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
-                            std::span<double> new_state, MaterialResponse& out) const override;
+                            std::span<double> new_state, const PointContext& where,
+                            MaterialResponse& out) const override;
   [[nodiscard]] bool linear_small_strain() const override { return false; }
   [[nodiscard]] double equivalent_plastic_strain(std::span<const double> state) const override {
     return state[12];

@@ -74,6 +74,16 @@ struct MaterialData {
     SourceLocation where;                ///< the *PLASTIC line
   };
   std::optional<Plastic> plastic;
+  /// `*USER MATERIAL`: an ABAQUS UMAT loaded from a shared library.
+  struct User {
+    std::string library;             ///< LIBRARY= as written (a path with '/' is relative to the working directory)
+    std::string symbol;              ///< SYMBOL= ("" = umat_, gfortran's name of SUBROUTINE UMAT)
+    std::vector<double> constants;   ///< PROPS
+    SourceLocation where;            ///< the *USER MATERIAL line
+  };
+  std::optional<User> user;
+  std::optional<int> depvar;         ///< `*DEPVAR`: NSTATV, the UMAT's number of state variables
+  SourceLocation depvar_where;       ///< the *DEPVAR line
   std::optional<double> density;  ///< [mass/volume]
   SourceLocation where;
 
