@@ -237,3 +237,25 @@ TOP, 2, 2, -0.002
   EXPECT_NEAR(*end1->plastic_dissipation, volume * work1, 1e-10 * volume * work1);
   EXPECT_NEAR(*end2.plastic_dissipation, volume * (work1 + work2), 1e-10 * volume * (work1 + work2));
 }
+
+TEST(PlasticPunch, ForceAgainstIndentationMatchesCalculix) {
+  // CalculiX 2.20 on the same deck: total punch force at t = 0.1, 0.2, ..., 1.0.
+  const double ccx[] = {0.9303154, 1.113623, 1.17228, 1.215603, 1.254085,
+                        1.289807, 1.323976, 1.356508, 1.386587, 1.414843};
+  const tether::testing::Run run = tether::testing::run_deck_file(
+      (fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/plastic_punch.inp").string());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_EQ(run.recorder.results.size(), 10u);
+  double worst = 0;
+  for (std::size_t k = 0; k < 10; ++k) {
+    double force = 0;
+    for (int n : run.model.node_sets.at("PUSH")) force += run.recorder.results[k].reaction[static_cast<std::size_t>(n)].y();
+    worst = std::max(worst, std::abs(-force - ccx[k]) / ccx[k]);
+  }
+  std::printf("punch force against CalculiX: largest relative difference %.2e\n", worst);
+  EXPECT_LT(worst, 1e-3);
+  double peeq = 0;
+  for (const auto& element : run.last().points)
+    for (const PointValues& p : element) peeq = std::max(peeq, p.peeq);
+  EXPECT_NEAR(peeq, 0.02614461, 0.002 * 0.02614461);  // CalculiX: largest PEEQ at t = 1
+}
