@@ -272,3 +272,90 @@ TEST(J2Plasticity, FactoryRefusesNegativeYieldStressNamingTheMaterial) {
   d.plastic->yield_stress = {200};
   EXPECT_NE(dynamic_cast<J2Plasticity*>(make_constitutive_model(d).get()), nullptr);
 }
+
+namespace {
+
+/// Strains of the tension-shear stress path O -> A -> B -> C (sigma_11, sigma_12)
+/// for E = 195000, nu = 0.3, yield 181, tangent modulus 1930 (H = E Et / (E - Et)):
+/// the rate solution d eps_p = 3/2 (d q / H) s / q while q = max q grows,
+/// integrated with 20000 midpoint steps per leg. Returns (eps_11, gamma_12) at A, B, C.
+std::vector<Eigen::Vector2d> nonradial_reference(const std::vector<Eigen::Vector2d>& corners, double E, double nu,
+                                                 double y0, double H) {
+  const double mu = E / (2 * (1 + nu));
+  double ep11 = 0, gp12 = 0, q_max = y0;
+  std::vector<Eigen::Vector2d> out;
+  Eigen::Vector2d from(0, 0);
+  for (const Eigen::Vector2d& to : corners) {
+    const int n = 20000;
+    for (int k = 0; k < n; ++k) {
+      const Eigen::Vector2d s0 = from + (to - from) * (double(k) / n), s1 = from + (to - from) * (double(k + 1) / n);
+      const Eigen::Vector2d mid = 0.5 * (s0 + s1);
+      const double q1 = std::sqrt(s1(0) * s1(0) + 3 * s1(1) * s1(1));
+      const double qm = std::sqrt(mid(0) * mid(0) + 3 * mid(1) * mid(1));
+      if (q1 <= q_max) continue;
+      const double dq = q1 - std::max(q_max, std::sqrt(s0(0) * s0(0) + 3 * s0(1) * s0(1)));
+      q_max = q1;
+      ep11 += mid(0) * dq / (H * qm);      // 3/2 (dq/H) (2/3 sigma) / q
+      gp12 += 3 * mid(1) * dq / (H * qm);  // 2 * 3/2 (dq/H) tau / q
+    }
+    out.emplace_back(to(0) / E + ep11, to(1) / mu + gp12);
+    from = to;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(J2Plasticity, NonRadialTensionShearPathFollowsTheRateSolution) {
+  const double E = 195000, nu = 0.3, y0 = 181, Et = 1930, H = E * Et / (E - Et);
+  const std::vector<Eigen::Vector2d> corners = {{151.2, 93.1}, {257.3, 33.1}, {259.3, 0}};
+  const auto reference = nonradial_reference(corners, E, nu, y0, H);
+  const J2Plasticity m(E, nu, HardeningCurve({0, 1}, {y0, y0 + H}), J2Plasticity::Hardening::Isotropic);
+  // Stress control, n increments per leg: Newton on the strains for sigma = target (sigma_22 = sigma_33 = 0).
+  const auto largest_error = [&](bool plane, int n) {
+    State state(J2Plasticity::kStateSize, 0.0), next(state.size());
+    Vec6 eps = Vec6::Zero();
+    Eigen::Vector2d from(0, 0);
+    const std::vector<int> free = plane ? std::vector<int>{0, 1, 3} : std::vector<int>{0, 1, 2, 3};
+    double worst = 0;
+    for (std::size_t leg = 0; leg < corners.size(); ++leg) {
+      for (int k = 1; k <= n; ++k) {
+        const Eigen::Vector2d target = from + (corners[leg] - from) * (double(k) / n);
+        Vec6 goal = Vec6::Zero();
+        goal(0) = target(0), goal(3) = target(1);
+        MaterialResponse r;
+        for (int it = 0; it < 50; ++it) {
+          Vec6 e = eps;
+          m.update_small_strain(e, plane, state, next, {}, r);
+          if (plane) eps(2) = e(2);
+          Eigen::VectorXd residual(free.size());
+          Eigen::MatrixXd K(free.size(), free.size());
+          for (std::size_t a = 0; a < free.size(); ++a) {
+            residual(a) = r.stress(free[a]) - goal(free[a]);
+            for (std::size_t b = 0; b < free.size(); ++b) K(a, b) = r.tangent(free[a], free[b]);
+          }
+          if (residual.norm() < 1e-10 * y0) break;
+          const Eigen::VectorXd d = K.lu().solve(residual);
+          for (std::size_t a = 0; a < free.size(); ++a) eps(free[a]) -= d(a);
+        }
+        state = next;
+      }
+      const Eigen::Vector2d got(eps(0), eps(3));
+      const double error = (got - reference[leg]).norm() / reference[leg].norm();
+      std::printf("%s, %d increments per leg: corner %c: eps_11 %.6e gamma_12 %.6e, rate solution %.6e %.6e, "
+                  "relative error %.2e\n", plane ? "plane stress" : "3D", n, static_cast<char>('A' + leg), got(0),
+                  got(1), reference[leg](0), reference[leg](1), error);
+      if (leg == 0) EXPECT_LT(error, 1e-12);  // radial: backward Euler is exact for linear hardening
+      worst = std::max(worst, error);
+      from = corners[leg];
+    }
+    return worst;
+  };
+  for (bool plane : {false, true}) {
+    // Backward Euler is first order on the non-radial leg: 30 increments give
+    // 0.6 %, and four times as many a quarter of that.
+    const double coarse = largest_error(plane, 30), fine = largest_error(plane, 120);
+    EXPECT_LT(coarse, 1e-2);
+    EXPECT_LT(fine, 0.3 * coarse);
+  }
+}
