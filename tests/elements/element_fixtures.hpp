@@ -29,8 +29,8 @@ inline std::vector<ElementType> supported_types() {
 }
 
 /// One linear elastic (SVK under NLGEOM) and one neo-Hookean model.
-inline std::vector<std::unique_ptr<ConstitutiveModel>> test_materials() {
-  std::vector<std::unique_ptr<ConstitutiveModel>> m;
+inline std::vector<std::unique_ptr<ElasticModel>> test_materials() {
+  std::vector<std::unique_ptr<ElasticModel>> m;
   m.push_back(std::make_unique<LinearElastic>(210.0, 0.3));
   m.push_back(std::make_unique<NeoHooke>(40.0, 0.02));
   return m;

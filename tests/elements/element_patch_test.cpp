@@ -82,7 +82,7 @@ Patch make_patch(Shape shape, const Eigen::Vector2d& origin, bool curved, bool d
 
 /// Exact Cauchy stress (xx, yy, zz, xy) of the homogeneous deformation u = G X
 /// (+ hoop strain G(0,0) for axisymmetry).
-Eigen::Vector4d exact_stress(const ConstitutiveModel& m, Family family, const Eigen::Matrix2d& G, bool nlgeom) {
+Eigen::Vector4d exact_stress(const ElasticModel& m, Family family, const Eigen::Matrix2d& G, bool nlgeom) {
   const double hoop = family == Family::Axisymmetric ? G(0, 0) : 0.0;
   Vec6 stress;
   Mat6 D;

@@ -203,6 +203,18 @@ TEST(DeckErrors, HyperelasticNeedsNeoHookeAndCompressibility) {
   expect_deck_error_at(replaced(neo, ", NEO HOOKE", ""), "*HYPERELASTIC", {"without NEO HOOKE"});
 }
 
+TEST(DeckErrors, PlasticTableNamesTheBadLine) {
+  const std::string plastic = replaced(kDeck, "200e3, 0.3", "200e3, 0.3\n*PLASTIC\n250, 0\n300, 0.02\n320, 0.01");
+  expect_deck_error_at(plastic, "320, 0.01", {"*PLASTIC plastic strain 0.01", "greater than the previous"});
+  expect_deck_error_at(replaced(plastic, "250, 0\n", "-250, 0\n"), "-250, 0", {"yield stress > 0"});
+  expect_deck_error_at(replaced(plastic, "250, 0\n", "250, 0.001\n"), "250, 0.001", {"expected 0"});
+  expect_deck_error_at(replaced(plastic, "300, 0.02", "300, 0.02, 20"), "300, 0.02, 20", {"temperature"});
+  expect_deck_error_at(replaced(plastic, "*PLASTIC", "*PLASTIC, HARDENING=COMBINED"), "COMBINED",
+                       {"COMBINED", "not supported yet"});
+  expect_deck_error_at(replaced(plastic, "320, 0.01", "320, 0.04\n*PLASTIC\n1, 0"), "*PLASTIC\n1, 0",
+                       {"already has *PLASTIC"});
+}
+
 TEST(DeckErrors, SectionThicknessAndDensity) {
   expect_deck_error_at(replaced(kDeck, "MATERIAL=STEEL\n1.0", "MATERIAL=STEEL\n-1.0"), "-1.0", {"thickness > 0"});
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3\n*DENSITY\n0"), "\n0\n",

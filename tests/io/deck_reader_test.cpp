@@ -307,7 +307,7 @@ TEST(DeckReader, ReadsOutputRequestsForTheirStepOnly) {
   std::string deck = replaced(kDeck, "*END STEP", R"(*NODE PRINT, NSET=RIGHT, TOTALS=ONLY, FREQUENCY=2
 RF
 *EL PRINT, ELSET=E1
-S, E, PEEQ
+S, E, ENER, PEEQ
 *NODE FILE
 U
 *EL FILE, FREQUENCY=0
@@ -333,8 +333,8 @@ E
   EXPECT_TRUE(o[0].totals_only);
   EXPECT_EQ(o[0].variables, (std::vector<std::string>{"RF"}));
   EXPECT_EQ(o[1].kind, K::ElementPrint);
-  EXPECT_EQ(o[1].variables, (std::vector<std::string>{"S", "E"}));
-  EXPECT_TRUE(has_warning(warnings, "PEEQ", line_of(deck, "S, E, PEEQ")));
+  EXPECT_EQ(o[1].variables, (std::vector<std::string>{"S", "E", "PEEQ"}));
+  EXPECT_TRUE(has_warning(warnings, "ENER", line_of(deck, "S, E, ENER, PEEQ")));
   EXPECT_EQ(o[2].kind, K::NodeFile);
   EXPECT_EQ(o[2].set, "");
   EXPECT_EQ(o[3].kind, K::ElementFile);

@@ -13,8 +13,8 @@
 namespace tether::test {
 
 /// One linear elastic and one neo-Hookean model with comparable stiffness.
-inline std::vector<std::unique_ptr<ConstitutiveModel>> all_models() {
-  std::vector<std::unique_ptr<ConstitutiveModel>> m;
+inline std::vector<std::unique_ptr<ElasticModel>> all_models() {
+  std::vector<std::unique_ptr<ElasticModel>> m;
   m.push_back(std::make_unique<LinearElastic>(210.0, 0.3));
   m.push_back(std::make_unique<NeoHooke>(40.0, 0.02));
   return m;

@@ -12,7 +12,8 @@ Titles are the leading words of tether's block headers (tools/datfile.py
 splits them from the set and the time), as DatWriter documents them:
 *NODE PRINT U -> displacements, RF -> forces (and total force with
 TOTALS=YES; only total force with TOTALS=ONLY); *EL PRINT S -> stresses,
-E -> strains; *CONTACT PRINT CSTR/CSTRESS -> contact stress, CDIS/CDISP ->
+E -> strains, PEEQ -> equivalent plastic strain, PE -> plastic strains;
+*CONTACT PRINT CSTR/CSTRESS -> contact stress, CDIS/CDISP ->
 relative contact displacement (one block for all pairs, set ""), CFN/CFS ->
 total normal/shear contact force per pair (no variables: CSTR, CDIS), and
 the contact state block of every pair; *OUTPUT, HISTORY with *NODE OUTPUT / *ELEMENT OUTPUT (or
@@ -24,7 +25,8 @@ import os
 import re
 
 _NODE_TITLES = {"U": ["displacements"], "RF": ["forces"], "V": ["velocities"], "A": ["accelerations"]}
-_ELEMENT_TITLES = {"S": ["stresses"], "E": ["strains"]}
+_ELEMENT_TITLES = {"S": ["stresses"], "E": ["strains"], "PEEQ": ["equivalent plastic strain"],
+                   "PE": ["plastic strains"]}
 _CONTACT_TITLES = {"CSTR": "contact stress", "CSTRESS": "contact stress", "CDIS": "relative contact displacement",
                    "CDISP": "relative contact displacement"}
 _CONTACT_PAIR_TITLES = {"CFN": "total normal contact force", "CFS": "total shear contact force"}

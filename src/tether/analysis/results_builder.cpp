@@ -33,6 +33,31 @@ Eigen::VectorXd eliminated_multipliers(const EquationMap& equations, const Eigen
   return lambda;
 }
 
+/// Sizes the plastic arrays of `r` (zeroed) and sums ALLPD over the elements.
+void start_plastic_results(const Discretization& discretization, const EvaluationState& state, IncrementResults& r) {
+  const auto n_nodes = static_cast<std::size_t>(discretization.dofs().n_nodes());
+  r.nodal_peeq.assign(n_nodes, 0.0);
+  r.nodal_plastic_strain.assign(n_nodes, Tensor4{});
+  r.element_peeq.assign(discretization.elements().size(), 0.0);
+  double dissipation = 0;
+  for (const auto& e : discretization.elements()) dissipation += e->plastic_dissipation(state);
+  r.plastic_dissipation = dissipation;
+}
+
+/// Adds element e's PEEQ and PE extrapolations to the nodal sums and sets its mean PEEQ.
+void add_plastic_results(const ContinuumElement& element, int e, const std::vector<PointValues>& points,
+                         std::vector<double>& peeq, std::vector<Tensor4>& pe, IncrementResults& r) {
+  element.extrapolate_plastic_to_nodes(points, peeq, pe);
+  double mean = 0;
+  for (const PointValues& p : points) mean += p.peeq / static_cast<double>(points.size());
+  r.element_peeq[static_cast<std::size_t>(e)] = mean;
+  const auto& nodes = element.nodes();
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    r.nodal_peeq[nodes[a]] += peeq[a];
+    for (int k = 0; k < 4; ++k) r.nodal_plastic_strain[nodes[a]][k] += pe[a][k];
+  }
+}
+
 /// Elements whose points are alive at once when the results are streamed.
 constexpr int kPointBlock = 8192;
 
@@ -82,8 +107,11 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   // element by element (one element's extrapolation alive at a time).
   r.nodal_stress.assign(n_nodes, Tensor4{});
   r.nodal_strain.assign(n_nodes, Tensor4{});
+  const bool plastic = std::any_of(elements.begin(), elements.end(), [](const auto& e) { return e->has_history(); });
+  if (plastic) start_plastic_results(discretization, state, r);
   std::vector<int> count(n_nodes, 0);
-  std::vector<Tensor4> element_stress, element_strain;
+  std::vector<Tensor4> element_stress, element_strain, element_pe;
+  std::vector<double> element_peeq;
   for (int first = 0; first < n_elements; first += kPointBlock) {
     const int last = std::min(n_elements, first + kPointBlock);
     const auto points_of = [&](int e) -> std::vector<PointValues>& {
@@ -96,6 +124,7 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
       if (stream) r.element_stress[static_cast<std::size_t>(e)] = mean_stress(points);
       elements[e]->extrapolate_to_nodes(points, element_stress, element_strain);
       const auto& nodes = elements[e]->nodes();
+      if (plastic) add_plastic_results(*elements[e], e, points, element_peeq, element_pe, r);
       for (std::size_t a = 0; a < nodes.size(); ++a) {
         for (int k = 0; k < 4; ++k) {
           r.nodal_stress[nodes[a]][k] += element_stress[a][k];
@@ -106,8 +135,12 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
     }
   }
   for (int i = 0; i < n_nodes; ++i)
-    if (count[i] > 1)
+    if (count[i] > 1) {
       for (int k = 0; k < 4; ++k) r.nodal_stress[i][k] /= count[i], r.nodal_strain[i][k] /= count[i];
+      if (!plastic) continue;
+      r.nodal_peeq[i] /= count[i];
+      for (int k = 0; k < 4; ++k) r.nodal_plastic_strain[i][k] /= count[i];
+    }
   for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state, dofs));
   for (const auto& c : discretization.user_constraints()) r.multipliers.push_back(c->values(state));
   for (const auto& pair : discretization.contact_pairs()) r.contact.push_back(pair->values(state));

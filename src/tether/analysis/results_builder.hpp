@@ -9,8 +9,9 @@ namespace tether {
 
 /// The integration-point values of the discretization's elements in one
 /// state: the source of streamed results (IncrementResults::point_source).
-/// Borrows both; the elements keep no history, so the values depend only on
-/// the state's displacements.
+/// Borrows both. The values are the converged trial state of the state's
+/// displacements whether they are asked for before or after the elements
+/// commit it (see ContinuumElement::point_values).
 class DiscretizationPoints final : public ElementPointSource {
  public:
   DiscretizationPoints(const Discretization& discretization, const EvaluationState& state)

@@ -63,7 +63,9 @@ void StaticProcedure::complete(const IncrementAttempt& attempt, const IncrementP
   // Results first: they describe the increment (contact slip since the
   // last converged state), which commit() then makes history.
   // Streamed element values are computed from s.u during on_results,
-  // after commit(): elements keep no history, so they are the same.
+  // after commit(): an element with material history then reads the records
+  // commit() stamped with s.u (ContinuumElement::point_values), so both are
+  // the converged trial state of s.u, bit for bit.
   const DiscretizationPoints point_source(disc, s);
   IncrementResults results = build_results(disc, s, problem.full_residual(), system_.equations(),
                                            stream_results_ ? &point_source : nullptr);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <numbers>
 
+#include "tether/assembly/saved_state.hpp"
 #include "tether/fem/extrapolation.hpp"
 
 namespace tether {
@@ -45,7 +46,8 @@ ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vect
       material_data_(material_data),
       thickness_(thickness),
       rule_(default_rule(type)),
-      n_points_(static_cast<int>(quadrature_points(rule_).size())) {
+      n_points_(static_cast<int>(quadrature_points(rule_).size())),
+      n_state_(material.n_state()) {
   if (const std::string why = unsupported_reason(type); !why.empty())
     throw ModelError(describe() + ": " + why);
   if (static_cast<int>(nodes_.size()) != n_nodes_ || static_cast<int>(ref_coords_.size()) != n_nodes_)
@@ -53,6 +55,15 @@ ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vect
   const bool axisymmetric = type.family == Family::Axisymmetric;
   if (!axisymmetric && !(thickness > 0))
     throw ModelError(fmt::format("{}: thickness must be positive (got {:g})", describe(), thickness));
+
+  if (n_state_ > 0) {
+    const int record = kRecordState + n_state_;
+    history_.assign(static_cast<std::size_t>(n_points_ * record), 0.0);
+    for (int q = 0; q < n_points_; ++q)
+      material.initial_state(std::span<double>(history_).subspan(static_cast<std::size_t>(q * record + kRecordState),
+                                                                 static_cast<std::size_t>(n_state_)));
+    committed_u_.assign(static_cast<std::size_t>(2 * n_nodes_), 0.0);
+  }
 
   dofs_.reserve(2 * n_nodes_);
   for (int node : nodes_) {
@@ -87,6 +98,7 @@ double ContinuumElement::point_geometry(int q, PointGeometry& g) const {
   const double detJ = J.determinant();
   g.N = N;
   g.R = X.x();
+  g.Y = X.y();
   const bool axisymmetric = type_.family == Family::Axisymmetric;
   const double measure = axisymmetric ? 2 * std::numbers::pi * X.x() : thickness_;
   g.dV = shapes.weight[static_cast<std::size_t>(q)] * detJ * measure;
@@ -103,8 +115,34 @@ void ContinuumElement::gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::Vector
   for (int i = 0; i < 2 * n_nodes_; ++i) ue(i) = u(dofs_[i]);
 }
 
-void ContinuumElement::material_point(const PointGeometry& g, const double* ue, bool nlgeom,
-                                      MaterialPoint& mp) const {
+std::span<const double> ContinuumElement::committed_state(int q) const {
+  if (n_state_ == 0) return {};
+  const int record = kRecordState + n_state_;
+  return std::span<const double>(history_).subspan(static_cast<std::size_t>(q * record + kRecordState),
+                                                   static_cast<std::size_t>(n_state_));
+}
+
+bool ContinuumElement::committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue) const {
+  if (n_state_ == 0) return false;
+  for (int i = 0; i < 2 * n_nodes_; ++i)
+    if (ue(i) != committed_u_[static_cast<std::size_t>(i)]) return false;
+  return true;
+}
+
+PointContext ContinuumElement::context(const EvaluationState& s, int q, const PointGeometry& g) const {
+  PointContext c;
+  c.element = label_;
+  c.point = q + 1;
+  c.x = g.R;
+  c.y = g.Y;
+  c.step_time = s.step_time;
+  c.total_time = s.total_time;
+  c.dt = s.dt;
+  return c;
+}
+
+void ContinuumElement::material_point(int q, const PointGeometry& g, const double* ue, const EvaluationState& s,
+                                      MaterialPoint& mp, std::span<double> trial) const {
   const int n = n_nodes_;
   Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
   double ur = 0;
@@ -116,15 +154,16 @@ void ContinuumElement::material_point(const PointGeometry& g, const double* ue, 
     ur += ue[2 * a] * g.N(a);
   }
   const double hoop = ur / g.R;
-  if (nlgeom)
-    finite_strain_point(*material_, type_.family, H, hoop, mp);
+  if (s.nlgeom)
+    finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
   else
-    small_strain_point(*material_, type_.family, H, hoop, mp);
+    small_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
 }
 
 template <int NN>
-void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalSystem& out,
+void ContinuumElement::evaluate_kernel(const double* ue_ptr, const EvaluationState& s, LocalSystem& out,
                                        bool need_tangent) const {
+  const bool nlgeom = s.nlgeom;
   constexpr int ND = 2 * NN;
   assert(out.residual.size() == ND && (!need_tangent || out.tangent.rows() == ND));
   using Nodal = Eigen::Matrix<double, NN, 1>;
@@ -135,6 +174,7 @@ void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalS
   MaterialPoint mp;
   Eigen::Matrix<double, 4, ND> B;
   PointGeometry g;
+  std::vector<double> trial(static_cast<std::size_t>(n_state_));  // discarded: evaluate() commits nothing
   for (int q = 0; q < n_points_; ++q) {
     point_geometry(q, g);
     const Eigen::Map<const Nodal> N(g.N.data()), Gx(g.G.data()), Gy(g.G.data() + NN);
@@ -144,9 +184,9 @@ void ContinuumElement::evaluate_kernel(const double* ue_ptr, bool nlgeom, LocalS
     H.col(1).noalias() = U * Gy;
     const double hoop = axisymmetric ? U.row(0).dot(N) / R : 0.0;
     if (nlgeom)
-      finite_strain_point(*material_, type_.family, H, hoop, mp);
+      finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
     else
-      small_strain_point(*material_, type_.family, H, hoop, mp);
+      small_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
 
     // B: rows (11, 22, 33, 2*12) of the strain variation; F = I for small strain.
     const Eigen::Matrix2d& F = mp.F;
@@ -186,10 +226,10 @@ void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool
   gather(s.u, ue);
   try {
     switch (type_.shape) {
-      case Shape::Tri3: evaluate_kernel<3>(ue.data(), s.nlgeom, out, need_tangent); break;
-      case Shape::Quad4: evaluate_kernel<4>(ue.data(), s.nlgeom, out, need_tangent); break;
-      case Shape::Tri6: evaluate_kernel<6>(ue.data(), s.nlgeom, out, need_tangent); break;
-      case Shape::Quad8: evaluate_kernel<8>(ue.data(), s.nlgeom, out, need_tangent); break;
+      case Shape::Tri3: evaluate_kernel<3>(ue.data(), s, out, need_tangent); break;
+      case Shape::Quad4: evaluate_kernel<4>(ue.data(), s, out, need_tangent); break;
+      case Shape::Tri6: evaluate_kernel<6>(ue.data(), s, out, need_tangent); break;
+      case Shape::Quad8: evaluate_kernel<8>(ue.data(), s, out, need_tangent); break;
     }
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
@@ -199,13 +239,20 @@ void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool
 double ContinuumElement::strain_energy(const EvaluationState& s) const {
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
+  const bool from_records = committed_at(ue);
+  const int record = kRecordState + n_state_;
   MaterialPoint mp;
   PointGeometry g;
+  std::vector<double> trial(static_cast<std::size_t>(n_state_));
   double energy = 0;
   try {
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
-      material_point(g, ue.data(), s.nlgeom, mp);
+      if (from_records) {
+        energy += history_[static_cast<std::size_t>(q * record + kRecordEnergy)] * g.dV;
+        continue;
+      }
+      material_point(q, g, ue.data(), s, mp, trial);
       energy += strain_energy_density(*material_, s.nlgeom, mp) * g.dV;
     }
   } catch (const ModelError& e) {
@@ -214,16 +261,52 @@ double ContinuumElement::strain_energy(const EvaluationState& s) const {
   return energy;
 }
 
+double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
+  if (n_state_ == 0) return 0;
+  Eigen::VectorXd ue(2 * n_nodes_);
+  gather(s.u, ue);
+  const bool from_records = committed_at(ue);
+  const int record = kRecordState + n_state_;
+  MaterialPoint mp;
+  PointGeometry g;
+  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  double total = 0;
+  try {
+    for (int q = 0; q < n_points_; ++q) {
+      point_geometry(q, g);
+      double density = history_[static_cast<std::size_t>(q * record + kRecordDissipation)];
+      if (!from_records) {
+        material_point(q, g, ue.data(), s, mp, trial);
+        density += mp.dissipation;
+      }
+      total += density * g.dV;
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+  return total;
+}
+
 void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointValues>& out) const {
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
   out.resize(n_points_);
+  const bool from_records = committed_at(ue);
+  const int record = kRecordState + n_state_;
   MaterialPoint mp;
   PointGeometry g;
+  std::vector<double> trial(static_cast<std::size_t>(n_state_));
   try {
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
-      material_point(g, ue.data(), s.nlgeom, mp);
+      material_point(q, g, ue.data(), s, mp, trial);
+      std::span<const double> state = trial;
+      if (from_records) {  // the committed values of this very state (equal to mp's up to round-off)
+        const double* r = history_.data() + static_cast<std::ptrdiff_t>(q * record);
+        mp.stress = Eigen::Map<const Vec6>(r + kRecordStress);
+        mp.strain = Eigen::Map<const Vec6>(r + kRecordStrain);
+        state = committed_state(q);
+      }
       Eigen::Vector2d x = Eigen::Vector2d::Zero();
       for (int a = 0; a < n_nodes_; ++a)
         x += g.N(a) * (ref_coords_[a] + Eigen::Vector2d(ue(2 * a), ue(2 * a + 1)));
@@ -232,10 +315,66 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
       pv.x = x;
       pv.stress = {sigma(0), sigma(1), sigma(2), sigma(3)};
       pv.strain = {mp.strain(0), mp.strain(1), mp.strain(2), 0.5 * mp.strain(3)};
+      pv.peeq = material_->equivalent_plastic_strain(state);
+      const Vec6 pe = material_->plastic_strain(state);
+      pv.plastic_strain = {pe(0), pe(1), pe(2), 0.5 * pe(3)};
     }
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
   }
+}
+
+void ContinuumElement::commit(const EvaluationState& s) {
+  if (n_state_ == 0) return;
+  Eigen::VectorXd ue(2 * n_nodes_);
+  gather(s.u, ue);
+  if (committed_at(ue)) return;  // already the committed state of these displacements
+  const int record = kRecordState + n_state_;
+  std::vector<double> next(history_.size());
+  MaterialPoint mp;
+  PointGeometry g;
+  try {
+    for (int q = 0; q < n_points_; ++q) {
+      point_geometry(q, g);
+      double* r = next.data() + static_cast<std::ptrdiff_t>(q * record);
+      material_point(q, g, ue.data(), s, mp, std::span<double>(r + kRecordState, n_state_));
+      Eigen::Map<Vec6>(r + kRecordStress) = mp.stress;
+      Eigen::Map<Vec6>(r + kRecordStrain) = mp.strain;
+      r[kRecordEnergy] = mp.elastic_energy;
+      r[kRecordDissipation] = history_[static_cast<std::size_t>(q * record + kRecordDissipation)] + mp.dissipation;
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+  history_.swap(next);
+  committed_u_.assign(ue.data(), ue.data() + ue.size());
+}
+
+namespace {
+constexpr double kHistoryTag = 7301;  ///< first value of a ContinuumElement's saved state
+}  // namespace
+
+void ContinuumElement::save_state(std::vector<double>& out) const {
+  if (n_state_ == 0) return;
+  out.push_back(kHistoryTag);
+  out.push_back(n_points_);
+  out.push_back(kRecordState + n_state_);
+  out.insert(out.end(), history_.begin(), history_.end());
+  out.insert(out.end(), committed_u_.begin(), committed_u_.end());
+}
+
+void ContinuumElement::load_state(std::span<const double>& in) {
+  if (n_state_ == 0) return;
+  saved_state::expect_tag(in, kHistoryTag, "continuum element with material history");
+  saved_state::take_int(in, n_points_, n_points_, "number of integration points");
+  const int record = kRecordState + n_state_;
+  saved_state::take_int(in, record, record, "history record size");
+  const std::size_t n = history_.size() + committed_u_.size();
+  if (in.size() < n) throw std::runtime_error("its saved state is too short");
+  std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(history_.size()), history_.begin());
+  in = in.subspan(history_.size());
+  std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(committed_u_.size()), committed_u_.begin());
+  in = in.subspan(committed_u_.size());
 }
 
 void ContinuumElement::mass(MassKind kind, Eigen::MatrixXd& out) const {
@@ -263,6 +402,19 @@ void ContinuumElement::extrapolate_to_nodes(const std::vector<PointValues>& poin
         nodal_stress[a][c] += E(a, q) * points[q].stress[c];
         nodal_strain[a][c] += E(a, q) * points[q].strain[c];
       }
+}
+
+void ContinuumElement::extrapolate_plastic_to_nodes(const std::vector<PointValues>& points,
+                                                    std::vector<double>& nodal_peeq,
+                                                    std::vector<Tensor4>& nodal_plastic_strain) const {
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  nodal_peeq.assign(n_nodes_, 0.0);
+  nodal_plastic_strain.assign(n_nodes_, Tensor4{});
+  for (int a = 0; a < n_nodes_; ++a)
+    for (int q = 0; q < n_points_; ++q) {
+      nodal_peeq[a] += E(a, q) * points[q].peeq;
+      for (int c = 0; c < 4; ++c) nodal_plastic_strain[a][c] += E(a, q) * points[q].plastic_strain[c];
+    }
 }
 
 }  // namespace tether

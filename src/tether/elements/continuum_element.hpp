@@ -49,14 +49,35 @@ class ContinuumElement final : public Contribution {
 
   /// "element 12 (CPE4)".
   [[nodiscard]] std::string describe() const override;
-  /// true: every ConstitutiveModel is hyperelastic (a symmetric material
-  /// tangent D), and the geometric stiffness under NLGEOM is symmetric.
-  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return true; }
-  /// Small strain: every ConstitutiveModel's small-strain law is linear
-  /// (LinearElastic, and NeoHooke's initial elasticity), so the element is
-  /// linear; under NLGEOM it is not. A material with history (plasticity)
-  /// will have to be asked instead.
-  [[nodiscard]] bool linear_in_u(bool nlgeom) const override { return !nlgeom; }
+  /// The material's word (ConstitutiveModel::symmetric_tangent); the
+  /// geometric stiffness under NLGEOM is symmetric.
+  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return material_->symmetric_tangent(); }
+  /// Small strain with a material whose small-strain law is linear
+  /// (LinearElastic, NeoHooke's initial elasticity): linear. Under NLGEOM or
+  /// with a history (plasticity): not.
+  [[nodiscard]] bool linear_in_u(bool nlgeom) const override {
+    return !nlgeom && material_->linear_small_strain();
+  }
+
+  /// Material history. Each integration point owns a committed record
+  /// (stress, strain, elastic energy, accumulated dissipation and the
+  /// material's state); evaluate() computes the trial state from it and the
+  /// current displacements and stores nothing, so a cut-back needs no
+  /// restore. commit() evaluates the points at s.u and makes that trial state
+  /// the committed one, stamped with the element's displacements at s.u.
+  /// Nothing is kept for a material without history (n_state() == 0).
+  void commit(const EvaluationState& s) override;
+  /// Restart: a tag, the record sizes, the records and the stamp (nothing
+  /// without history).
+  void save_state(std::vector<double>& out) const override;
+  void load_state(std::span<const double>& in) override;
+  /// True when the material keeps a history at the integration points.
+  [[nodiscard]] bool has_history() const { return n_state_ > 0; }
+  /// Plastic dissipation up to the state s [energy] (total over 2 pi for
+  /// axisymmetry): the committed records' when they were committed at s.u,
+  /// else theirs plus the increment to the trial state of s.u (as
+  /// point_values); 0 without history.
+  [[nodiscard]] double plastic_dissipation(const EvaluationState& s) const;
 
   [[nodiscard]] int label() const { return label_; }
   [[nodiscard]] const ElementType& type() const { return type_; }
@@ -69,7 +90,11 @@ class ContinuumElement final : public Contribution {
 
   /// Values at the integration points, ABAQUS order: Cauchy stress; small
   /// strain, or Green-Lagrange strain under NLGEOM (tensor shear); current
-  /// position X + u.
+  /// position X + u; PEEQ and plastic strain. With a history they are the
+  /// converged trial state of s.u: read from the committed records when they
+  /// were committed at s.u (the element's displacements equal the stamp),
+  /// else evaluated from the committed history, as evaluate() does -- so
+  /// results built before and after commit() are the same, bit for bit.
   void point_values(const EvaluationState& s, std::vector<PointValues>& out) const;
 
   /// Mass matrix over dofs() [mass] (2n x 2n, local dof order; lumped: diagonal),
@@ -84,6 +109,9 @@ class ContinuumElement final : public Contribution {
   /// ABAQUS-like (see fem/extrapolation.hpp). `points` has n_points() entries.
   void extrapolate_to_nodes(const std::vector<PointValues>& points, std::vector<Tensor4>& nodal_stress,
                             std::vector<Tensor4>& nodal_strain) const;
+  /// As extrapolate_to_nodes, for PEEQ and the plastic strain PE.
+  void extrapolate_plastic_to_nodes(const std::vector<PointValues>& points, std::vector<double>& nodal_peeq,
+                                    std::vector<Tensor4>& nodal_plastic_strain) const;
 
  private:
   /// Geometry of one integration point, recomputed from the reference
@@ -94,15 +122,29 @@ class ContinuumElement final : public Contribution {
     ShapeGradient G;  ///< dN/dX: column 0 = d/dX, column 1 = d/dY
     double dV = 0;    ///< weight * det J * (thickness, or 2 pi R)
     double R = 0;     ///< X of the point (the radius for axisymmetry)
+    double Y = 0;     ///< Y of the point
   };
   /// Fills `g` for integration point q; returns det J (checked > 0 at construction).
   double point_geometry(int q, PointGeometry& g) const;
   /// Local displacement vector (u_0x, u_0y, u_1x, ...).
   void gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const;
-  /// Evaluates the point with geometry g from local displacements ue.
-  void material_point(const PointGeometry& g, const double* ue, bool nlgeom, MaterialPoint& mp) const;
+  /// Evaluates point q (geometry g) from local displacements ue and its
+  /// committed history; the trial state goes to `trial` (n_state_ values).
+  void material_point(int q, const PointGeometry& g, const double* ue, const EvaluationState& s, MaterialPoint& mp,
+                      std::span<double> trial) const;
+  /// What the material is told about point q (geometry g) in state s.
+  [[nodiscard]] PointContext context(const EvaluationState& s, int q, const PointGeometry& g) const;
+  /// Point q's material state in the committed records (empty without history).
+  [[nodiscard]] std::span<const double> committed_state(int q) const;
+  /// True when the committed records were committed at the local displacements ue.
+  [[nodiscard]] bool committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue) const;
   template <int NN>
-  void evaluate_kernel(const double* ue, bool nlgeom, LocalSystem& out, bool need_tangent) const;
+  void evaluate_kernel(const double* ue, const EvaluationState& s, LocalSystem& out, bool need_tangent) const;
+
+  /// Layout of a point's committed record: stress (6), strain (6), elastic
+  /// energy density, accumulated dissipation density, material state.
+  static constexpr int kRecordStress = 0, kRecordStrain = 6, kRecordEnergy = 12, kRecordDissipation = 13,
+                       kRecordState = 14;
 
   int label_;
   ElementType type_;
@@ -115,6 +157,9 @@ class ContinuumElement final : public Contribution {
   double thickness_;
   QuadratureRule rule_;
   int n_points_;
+  int n_state_;                        ///< material state values per point
+  std::vector<double> history_;        ///< committed records, n_points_ x (kRecordState + n_state_); empty without history
+  std::vector<double> committed_u_;    ///< local displacements of the committed records (the stamp)
 };
 
 }  // namespace tether

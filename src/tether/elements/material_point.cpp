@@ -8,18 +8,30 @@
 
 namespace tether {
 
+namespace {
+
+void take_response(const MaterialResponse& r, MaterialPoint& mp) {
+  mp.stress = r.stress;
+  mp.D = r.tangent;
+  mp.elastic_energy = r.elastic_energy;
+  mp.dissipation = r.dissipation;
+}
+
+}  // namespace
+
 void small_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
-                        double hoop_strain, MaterialPoint& mp) {
+                        double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
+                        const PointContext& where, MaterialPoint& mp) {
   mp.strain << H(0, 0), H(1, 1), family == Family::Axisymmetric ? hoop_strain : 0.0,
       H(0, 1) + H(1, 0), 0, 0;
-  if (family == Family::PlaneStress)
-    plane_stress_small_strain(material, mp.strain, mp.stress, mp.D);
-  else
-    material.small_strain(mp.strain, mp.stress, mp.D);
+  MaterialResponse r;
+  material.update_small_strain(mp.strain, family == Family::PlaneStress, old_state, new_state, where, r);
+  take_response(r, mp);
 }
 
 void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
-                         double hoop_strain, MaterialPoint& mp) {
+                         double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
+                         const PointContext& where, MaterialPoint& mp) {
   mp.F = Eigen::Matrix2d::Identity() + H;
   const double det2 = mp.F.determinant();
   mp.F33 = family == Family::Axisymmetric ? 1 + hoop_strain : 1.0;
@@ -30,24 +42,26 @@ void finite_strain_point(const ConstitutiveModel& material, Family family, const
   mp.C.setZero();
   mp.C.topLeftCorner<2, 2>().noalias() = mp.F.transpose() * mp.F;
   mp.C(2, 2) = mp.F33 * mp.F33;
-  if (family == Family::PlaneStress) {
-    plane_stress_finite_strain(material, mp.C, mp.stress, mp.D);
-    mp.F33 = std::sqrt(mp.C(2, 2));
-  } else {
-    material.finite_strain(mp.C, mp.stress, mp.D);
-  }
+  MaterialResponse r;
+  material.update_finite_strain(mp.C, family == Family::PlaneStress, old_state, new_state, where, r);
+  take_response(r, mp);
+  if (family == Family::PlaneStress) mp.F33 = std::sqrt(mp.C(2, 2));
   mp.strain << 0.5 * (mp.C(0, 0) - 1), 0.5 * (mp.C(1, 1) - 1), 0.5 * (mp.C(2, 2) - 1), mp.C(0, 1), 0, 0;
 }
 
 double plane_stress_thickness_stretch(const ConstitutiveModel& material, const Eigen::Matrix2d& H,
                                       Eigen::Matrix2d& dF33_dH) {
+  const auto* elastic = dynamic_cast<const ElasticModel*>(&material);
+  if (elastic == nullptr)
+    throw ModelError("a load on the current area of a plane-stress face needs an elastic material (got " +
+                     material.describe() + ")");
   MaterialPoint mp;
-  finite_strain_point(material, Family::PlaneStress, H, 0, mp);
+  finite_strain_point(material, Family::PlaneStress, H, 0, {}, {}, PointContext{}, mp);
   // S_33(E) = 0 holds for every in-plane E: dE33 = -(D_3k / D_33) dE_k over
   // k = 11, 22, 12 (engineering shear), with the uncondensed tangent.
   Vec6 S;
   Mat6 D;
-  material.finite_strain(mp.C, S, D);
+  elastic->finite_strain(mp.C, S, D);
   const double dE33_dE11 = -D(2, 0) / D(2, 2), dE33_dE22 = -D(2, 1) / D(2, 2), dE33_dG12 = -D(2, 3) / D(2, 2);
   // E11 = (F_i1 F_i1 - 1)/2, E22 = (F_i2 F_i2 - 1)/2, G12 = F_i1 F_i2, F = I + H;
   // E33 = (F33^2 - 1)/2, so dF33 = dE33 / F33.
@@ -60,8 +74,8 @@ double plane_stress_thickness_stretch(const ConstitutiveModel& material, const E
   return mp.F33;
 }
 
-double strain_energy_density(const ConstitutiveModel& material, bool nlgeom, const MaterialPoint& mp) {
-  return nlgeom ? material.finite_strain_energy(mp.C) : material.small_strain_energy(mp.strain);
+double strain_energy_density(const ConstitutiveModel& /*material*/, bool /*nlgeom*/, const MaterialPoint& mp) {
+  return mp.elastic_energy;
 }
 
 Eigen::Vector4d cauchy_stress(bool nlgeom, const MaterialPoint& mp) {

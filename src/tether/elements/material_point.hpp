@@ -7,6 +7,7 @@
 /// vectors) is z for plane problems and the hoop direction for axisymmetry.
 
 #include <Eigen/Core>
+#include <span>
 
 #include "tether/materials/constitutive_model.hpp"
 #include "tether/model/element_type.hpp"
@@ -21,30 +22,40 @@ struct MaterialPoint {
   Vec6 strain = Vec6::Zero();    ///< small strain or Green-Lagrange strain, engineering shear
   Vec6 stress = Vec6::Zero();    ///< Cauchy (small strain) or PK2 (finite strain) stress [force/area]
   Mat6 D = Mat6::Zero();         ///< d stress / d strain; plane stress: condensed (row/column 2 zero)
+  double elastic_energy = 0;     ///< elastic strain energy density [energy / reference volume]
+  double dissipation = 0;        ///< plastic dissipation of the increment [energy / reference volume]
 };
 
 /// Small strain from the displacement gradient H (H(i,j) = du_i/dx_j) and, for
-/// axisymmetry, the hoop strain u_r / r (ignored otherwise). Plane stress
+/// axisymmetry, the hoop strain u_r / r (ignored otherwise), starting from the
+/// committed history old_state; the trial history goes to new_state (both
+/// material.n_state() values; empty for elastic materials); `where` is handed
+/// to the material. Plane stress
 /// solves eps_33 so that sigma_33 = 0. Throws ModelError if that fails.
 void small_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
-                        double hoop_strain, MaterialPoint& mp);
+                        double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
+                        const PointContext& where, MaterialPoint& mp);
 
 /// Finite strain (total Lagrangian) from H = dU/dX and, for axisymmetry,
-/// U_r / R (hoop stretch F33 = 1 + U_r/R). Plane strain has F33 = 1; plane
-/// stress solves F33 so that S_33 = 0. Throws ModelError when det F <= 0.
+/// U_r / R (hoop stretch F33 = 1 + U_r/R); histories as in
+/// small_strain_point. Plane strain has F33 = 1; plane stress solves F33 so
+/// that S_33 = 0. Throws ModelError when det F <= 0 or the material has no
+/// finite-strain form.
 void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
-                         double hoop_strain, MaterialPoint& mp);
+                         double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
+                         const PointContext& where, MaterialPoint& mp);
 
 /// Plane stress under finite strain: the thickness stretch F33 = h/h0 at the
 /// in-plane displacement gradient H = dU/dX (S_33 = 0 solved as in
 /// finite_strain_point), and its derivative dF33/dH (2x2, entry (i,j) =
 /// dF33/dH_ij), from the implicit function S_33(C) = 0. Used by loads that act
 /// on the current area of a plane-stress face. Throws ModelError as
-/// finite_strain_point does.
+/// finite_strain_point does, and for a material with history (the thickness
+/// would depend on it).
 double plane_stress_thickness_stretch(const ConstitutiveModel& material, const Eigen::Matrix2d& H,
                                       Eigen::Matrix2d& dF33_dH);
 
-/// Strain energy density [energy / reference volume] of an evaluated point.
+/// Elastic strain energy density [energy / reference volume] of an evaluated point.
 double strain_energy_density(const ConstitutiveModel& material, bool nlgeom, const MaterialPoint& mp);
 
 /// Cauchy stress (xx, yy, zz, xy) of an evaluated point: sigma itself for small

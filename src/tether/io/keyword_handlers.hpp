@@ -22,6 +22,11 @@ TETHER_DECK_HANDLER(handle_material);
 TETHER_DECK_HANDLER(handle_elastic);
 TETHER_DECK_HANDLER(handle_hyperelastic);
 TETHER_DECK_HANDLER(handle_density);
+// plastic_keywords.cpp
+TETHER_DECK_HANDLER(handle_plastic);
+// user_material_keywords.cpp
+TETHER_DECK_HANDLER(handle_user_material);
+TETHER_DECK_HANDLER(handle_depvar);
 TETHER_DECK_HANDLER(handle_solid_section);
 // load_keywords.cpp
 TETHER_DECK_HANDLER(handle_amplitude);

@@ -105,6 +105,31 @@ std::vector<KeywordSpec> build_table() {
       {"HYPERELASTIC", kMaterial, "Compressible neo-Hookean hyperelasticity.", "`C10, D1` with C10 > 0, D1 > 0",
        {flag("NEO HOOKE", "Neo-Hookean strain energy (required; the only model supported).")},
        handle_hyperelastic, ""},
+      {"PLASTIC", kMaterial,
+       "Von Mises plasticity on the material's *ELASTIC range (small strain; docs/theory/plasticity.md): true yield "
+       "stress against equivalent plastic strain, piecewise linear, constant beyond the last row.",
+       "`yield stress, plastic strain` per line, yield stress > 0, plastic strain 0 on the first line and strictly "
+       "increasing (no temperature column)",
+       {choice("HARDENING", "ISOTROPIC", {"ISOTROPIC", "KINEMATIC", "COMBINED"},
+               "ISOTROPIC: the yield stress follows the table; KINEMATIC: the yield stress stays the first one and "
+               "the back stress grows with the table's slope (Prager-Ziegler, linear kinematic hardening for two "
+               "rows); COMBINED is not supported yet.")},
+       handle_plastic, ""},
+      {"USER MATERIAL", kMaterial,
+       "The material's mechanical behaviour from an ABAQUS UMAT in a shared library, loaded at run time (small "
+       "strain; src/tether/materials/user_material.h documents the arguments; a gfortran UMAT works as is).",
+       "CONSTANTS values (PROPS), up to 8 per line",
+       {{"CONSTANTS", PT::Integer, "", {}, true, "", "Number of constants (NPROPS)."},
+        {"LIBRARY", PT::Text, "", {}, true, "",
+         "tether extension: the shared library holding the routine (a path with '/' is relative to the working "
+         "directory; a bare name is searched by the dynamic loader)."},
+        {"SYMBOL", PT::Text, "", {}, false, "",
+         "tether extension: the routine's symbol (default umat_, gfortran's name of SUBROUTINE UMAT)."},
+        choice("TYPE", "MECHANICAL", {"MECHANICAL"}, "Only mechanical user materials are supported."),
+        flag("UNSYMM", "Accepted and ignored: tether never assumes a user material's tangent symmetric.")},
+       handle_user_material, ""},
+      {"DEPVAR", kMaterial, "Number of solution-dependent state variables (NSTATV) of a *USER MATERIAL.",
+       "`n` with n >= 0", {}, handle_depvar, ""},
       {"DENSITY", kMaterial,
        "Mass density, for the element masses (consistent or lumped; docs/theory/elements.md, section Mass). "
        "Optional: static steps do not use it; asking for the mass of an element whose material has none is an "
@@ -208,13 +233,15 @@ std::vector<KeywordSpec> build_table() {
        {name("NSET", "Node set (default: all nodes)."), frequency_param(),
         choice("TOTALS", "NO", {"YES", "ONLY", "NO"}, "Also (YES) or only (ONLY) print the sums over the set.")},
        handle_node_print, ""},
-      {"EL PRINT", kAnyStep, "Element integration-point values in the text report.", "variables: S, E",
+      {"EL PRINT", kAnyStep, "Element integration-point values in the text report.",
+       "variables: S, E, PEEQ (equivalent plastic strain), PE (plastic strain)",
        {name("ELSET", "Element set (default: all elements)."), frequency_param()}, handle_el_print, ""},
       {"NODE FILE", kAnyStep, "Nodal values in the result files (VTU; V and A are written in dynamic steps).", "variables: U, RF, V, A",
        {name("NSET", "Node set (default: all nodes)."), frequency_param(),
         name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
        handle_node_file, ""},
-      {"EL FILE", kAnyStep, "Element values in the result files (VTU).", "variables: S, E",
+      {"EL FILE", kAnyStep, "Element values in the result files (VTU; PEEQ, PE and ALLPD are written whenever a "
+       "material is plastic).", "variables: S, E, PEEQ, PE",
        {name("ELSET", "Element set (default: all elements)."), frequency_param(),
         name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
        handle_el_file, ""},
@@ -225,7 +252,7 @@ std::vector<KeywordSpec> build_table() {
        handle_output, ""},
       {"NODE OUTPUT", kAnyStep, "Nodal variables of the current *OUTPUT block.", "variables: U, RF",
        {name("NSET", "Node set (default: all nodes).")}, handle_node_output, ""},
-      {"ELEMENT OUTPUT", kAnyStep, "Element variables of the current *OUTPUT block.", "variables: S, E",
+      {"ELEMENT OUTPUT", kAnyStep, "Element variables of the current *OUTPUT block.", "variables: S, E, PEEQ, PE",
        {name("ELSET", "Element set (default: all elements).")}, handle_element_output, ""},
       // --- model data: constraints ---
       {"EQUATION", kModelData, "Linear constraint sum_i c_i u_i = 0 between dofs (ABAQUS syntax).",
@@ -341,7 +368,6 @@ std::vector<KeywordSpec> build_table() {
       {"CONTACT OUTPUT", kAnyStep, "Contact output request (ABAQUS).", "variables: CSTRESS, CDISP, CFN, CFS",
        {frequency_param()}, handle_contact_output, ""},
       // --- recognised, not supported yet: a clear error, never silently dropped ---
-      {"PLASTIC", kMaterial, "Metal plasticity.", "", {}, nullptr, "tether's materials are elastic only"},
       {"EXPANSION", kMaterial, "Thermal expansion.", "", {}, nullptr, "tether has no thermal analysis"},
       {"ORIENTATION", kModelData, "Local material directions.", "", {}, nullptr,
        "tether's materials are isotropic"},

@@ -80,9 +80,9 @@ void resolve_sections(DeckState& state) {
 
 void check_materials(const Model& m) {
   for (const MaterialData& md : m.materials)
-    if (!md.elastic && !md.neo_hooke)
-      throw InputError(md.where, "material " + md.name + " has no elastic data: expected *ELASTIC or "
-                                                          "*HYPERELASTIC, NEO HOOKE after *MATERIAL");
+    if (!md.elastic && !md.neo_hooke && !md.user)
+      throw InputError(md.where, "material " + md.name + " has no elastic data: expected *ELASTIC, "
+                                                          "*HYPERELASTIC, NEO HOOKE or *USER MATERIAL after *MATERIAL");
 }
 
 void check_geometry(const Model& m) {

@@ -1,7 +1,10 @@
 #include "tether/materials/constitutive_model.hpp"
 
+#include "tether/materials/j2_plasticity.hpp"
 #include "tether/materials/linear_elastic.hpp"
 #include "tether/materials/neo_hooke.hpp"
+#include "tether/materials/plane_stress.hpp"
+#include "tether/materials/user_material.hpp"
 
 namespace tether {
 
@@ -12,9 +15,64 @@ namespace {
   throw ModelError(where + "material " + data.name + ": " + what);
 }
 
+std::unique_ptr<ConstitutiveModel> make_plasticity(const MaterialData& data) {
+  const MaterialData::Plastic& p = *data.plastic;
+  for (double y : p.yield_stress)
+    if (!(y > 0)) fail(data, "*PLASTIC yield stress must be positive (got " + std::to_string(y) + ")");
+  try {
+    HardeningCurve curve(p.plastic_strain, p.yield_stress);
+    const auto hardening = p.hardening == MaterialData::Plastic::Hardening::Kinematic
+                               ? J2Plasticity::Hardening::Kinematic
+                               : J2Plasticity::Hardening::Isotropic;
+    return std::make_unique<J2Plasticity>(data.elastic->young, data.elastic->poisson, std::move(curve), hardening);
+  } catch (const std::invalid_argument& e) {
+    fail(data, std::string("*PLASTIC: ") + e.what());
+  }
+}
+
+}  // namespace
+
+void ElasticModel::update_small_strain(Vec6& eps, bool plane_stress, std::span<const double>, std::span<double>,
+                                       const PointContext&, MaterialResponse& out) const {
+  if (plane_stress)
+    plane_stress_small_strain(*this, eps, out.stress, out.tangent);
+  else
+    small_strain(eps, out.stress, out.tangent);
+  out.elastic_energy = small_strain_energy(eps);
+  out.dissipation = 0;
+}
+
+void ElasticModel::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double>,
+                                        std::span<double>, const PointContext&, MaterialResponse& out) const {
+  if (plane_stress)
+    plane_stress_finite_strain(*this, C, out.stress, out.tangent);
+  else
+    finite_strain(C, out.stress, out.tangent);
+  out.elastic_energy = finite_strain_energy(C);
+  out.dissipation = 0;
+}
+
+namespace {
+
+std::unique_ptr<ConstitutiveModel> make_user_material(const MaterialData& data) {
+  const MaterialData::User& u = *data.user;
+  if (data.elastic || data.neo_hooke || data.plastic)
+    fail(data, "*USER MATERIAL (" + u.where.str() + ") defines the whole mechanical behaviour: remove *ELASTIC, "
+               "*HYPERELASTIC and *PLASTIC");
+  try {
+    return std::make_unique<UserMaterial>(data.name, u.library, u.symbol, u.constants, data.depvar.value_or(0));
+  } catch (const ModelError& e) {
+    throw ModelError(u.where.str() + ": material " + data.name + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<ConstitutiveModel> make_constitutive_model(const MaterialData& data) {
+  if (data.user) return make_user_material(data);
+  if (data.depvar)
+    fail(data, "*DEPVAR (" + data.depvar_where.str() + ") without *USER MATERIAL: only user materials have "
+               "state variables in tether");
   if (data.elastic && data.neo_hooke)
     fail(data, "both *ELASTIC and *HYPERELASTIC are given; keep one");
   if (data.elastic) {
@@ -22,8 +80,10 @@ std::unique_ptr<ConstitutiveModel> make_constitutive_model(const MaterialData& d
     if (!(e.young > 0)) fail(data, "Young's modulus must be positive (got " + std::to_string(e.young) + ")");
     if (!(e.poisson > -1 && e.poisson < 0.5))
       fail(data, "Poisson's ratio must lie in (-1, 0.5) (got " + std::to_string(e.poisson) + ")");
+    if (data.plastic) return make_plasticity(data);
     return std::make_unique<LinearElastic>(e.young, e.poisson);
   }
+  if (data.plastic) fail(data, "*PLASTIC needs *ELASTIC (the elastic range of the plastic model)");
   if (data.neo_hooke) {
     const auto& n = *data.neo_hooke;
     if (!(n.c10 > 0)) fail(data, "NEO HOOKE C10 must be positive (got " + std::to_string(n.c10) + ")");

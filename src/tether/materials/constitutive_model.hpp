@@ -1,8 +1,9 @@
 #pragma once
 /// \file The interface every constitutive model implements.
 ///
-/// A constitutive model sees strains (or the right Cauchy-Green tensor) and
-/// returns stress, consistent tangent and strain energy; it never sees the mesh.
+/// A constitutive model sees strains (or the right Cauchy-Green tensor) and the
+/// committed history of the point, and returns stress, consistent tangent,
+/// energy and the trial history; it never sees the mesh.
 ///
 /// Voigt order everywhere: 11, 22, 33, 12, 23, 13. Strain vectors carry
 /// *engineering* shear (gamma_12 = 2 eps_12), stress vectors the tensor
@@ -11,7 +12,9 @@
 /// Units: stress and D in [force/area], energy density in [energy/volume].
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "tether/model/model.hpp"
@@ -23,11 +26,89 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 /// Voigt matrix, e.g. a material tangent.
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
-/// Stateless elastic constitutive law (small and finite strain).
+/// What a material returns for one integration point and one trial strain.
+struct MaterialResponse {
+  Vec6 stress = Vec6::Zero();   ///< Cauchy (small strain) or PK2 (finite strain) stress [force/area]
+  /// Consistent (algorithmic) tangent d stress / d strain of the update
+  /// (engineering shear); plane stress: condensed, row and column 2 zero.
+  Mat6 tangent = Mat6::Zero();
+  double elastic_energy = 0;    ///< elastic strain energy density [energy/volume]
+  double dissipation = 0;       ///< plastic dissipation of the increment, >= 0 [energy/volume]
+};
+
+/// Where and when a point is updated: what a user material (UMAT) is told.
+/// Zeros where the caller does not know.
+struct PointContext {
+  int element = 0;                   ///< element label
+  int point = 0;                     ///< integration point, 1-based
+  double x = 0, y = 0;               ///< reference coordinates of the point [length]
+  double step_time = 0;              ///< step time at the end of the increment
+  double total_time = 0;             ///< total time at the end of the increment
+  double dt = 0;                     ///< increment size
+};
+
+/// A constitutive model with (possibly) history. The history of one
+/// integration point is n_state() doubles laid out as the model chooses; the
+/// caller owns them (committed state) and passes them in. An update never
+/// changes the committed state: it returns the trial state of the end of the
+/// increment in `new_state`, which the caller commits once the increment is
+/// accepted. Models are immutable value types that never see the mesh.
 class ConstitutiveModel {
  public:
   virtual ~ConstitutiveModel() = default;
 
+  /// History values per integration point (0: no history, purely elastic).
+  [[nodiscard]] virtual int n_state() const { return 0; }
+
+  /// The state of a virgin integration point (n_state() values).
+  virtual void initial_state(std::span<double> state) const { std::fill(state.begin(), state.end(), 0.0); }
+
+  /// Small strain update. eps: total strain at the end of the increment
+  /// (engineering shear); with plane_stress, eps(2) is a starting guess on
+  /// entry and holds eps_33 (with sigma_33 = 0) on exit. old_state: the
+  /// committed state (n_state() values); new_state: receives the trial state
+  /// (same size, may not alias old_state). `where`: the point and the times.
+  /// Throws ModelError when the update fails (local iteration not converged,
+  /// a user routine's NaN or request for a smaller increment).
+  virtual void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
+                                   std::span<double> new_state, const PointContext& where,
+                                   MaterialResponse& out) const = 0;
+
+  /// Finite strain (total Lagrangian) update from the right Cauchy-Green tensor
+  /// C (symmetric, det C > 0); with plane_stress, C(2,2) is a starting guess
+  /// on entry and solved so that S_33 = 0 on exit (C(0,2) = C(1,2) = 0).
+  /// Stress: PK2 S; tangent dS/dE (E = (C - I)/2, engineering shear). States
+  /// as in update_small_strain. Throws ModelError when the model has no
+  /// finite-strain form or the update fails.
+  virtual void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
+                                    std::span<double> new_state, const PointContext& where,
+                                    MaterialResponse& out) const = 0;
+
+  /// True when the small-strain stress is linear in the strain with a constant
+  /// tangent (elasticity): a small-strain element of it is linear in u.
+  [[nodiscard]] virtual bool linear_small_strain() const { return true; }
+
+  /// True when every tangent the updates return is symmetric.
+  [[nodiscard]] virtual bool symmetric_tangent() const { return true; }
+
+  /// Equivalent plastic strain PEEQ [-] of a state (0 without plasticity).
+  [[nodiscard]] virtual double equivalent_plastic_strain(std::span<const double> /*state*/) const { return 0; }
+
+  /// Plastic strain PE of a state, Voigt with engineering shear [-] (zero
+  /// without plasticity).
+  [[nodiscard]] virtual Vec6 plastic_strain(std::span<const double> /*state*/) const { return Vec6::Zero(); }
+
+  /// Initial (small-strain) shear modulus mu [force/area].
+  [[nodiscard]] virtual double shear_modulus() const = 0;
+
+  /// Short description, e.g. "neo-Hookean (C10=1, D1=0.1)".
+  [[nodiscard]] virtual std::string describe() const = 0;
+};
+
+/// Stateless elastic (hyperelastic) constitutive law, small and finite
+/// strain; its updates ignore the (empty) state.
+class ElasticModel : public ConstitutiveModel {
+ public:
   /// Small strain: Cauchy stress sigma and tangent D = d sigma / d eps from the
   /// small strain eps (engineering shear).
   virtual void small_strain(const Vec6& eps, Vec6& sigma, Mat6& D) const = 0;
@@ -43,15 +124,17 @@ class ConstitutiveModel {
   /// Finite-strain energy density per reference volume W(C), S = 2 dW/dC.
   [[nodiscard]] virtual double finite_strain_energy(const Eigen::Matrix3d& C) const = 0;
 
-  /// Initial (small-strain) shear modulus mu [force/area].
-  [[nodiscard]] virtual double shear_modulus() const = 0;
-
-  /// Short description, e.g. "neo-Hookean (C10=1, D1=0.1)".
-  [[nodiscard]] virtual std::string describe() const = 0;
+  void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
+                           std::span<double> new_state, const PointContext& where,
+                           MaterialResponse& out) const final;
+  void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
+                            std::span<double> new_state, const PointContext& where,
+                            MaterialResponse& out) const final;
 };
 
 /// Builds the model of a `*MATERIAL`: `*ELASTIC` -> LinearElastic (St.Venant-
-/// Kirchhoff under NLGEOM), `*HYPERELASTIC, NEO HOOKE` -> NeoHooke.
+/// Kirchhoff under NLGEOM), `*HYPERELASTIC, NEO HOOKE` -> NeoHooke,
+/// `*ELASTIC` with `*PLASTIC` -> J2Plasticity (small strain only).
 /// Throws ModelError naming the material and its deck line when neither or
 /// both are given or the constants are out of range (E <= 0, nu outside
 /// (-1, 0.5), C10 <= 0, D1 <= 0).

@@ -9,7 +9,7 @@ namespace tether {
 /// Finite strain: St.Venant-Kirchhoff S = lambda tr(E) I + 2 mu E with the same
 /// constant D; note SVK softens and loses stability in strong compression
 /// (stretch below about 0.58 in uniaxial compression).
-class LinearElastic final : public ConstitutiveModel {
+class LinearElastic final : public ElasticModel {
  public:
   /// young = E > 0 [force/area], poisson = nu in (-1, 0.5).
   LinearElastic(double young, double poisson);

@@ -12,7 +12,7 @@ namespace tether {
 /// initial moduli mu and K (lambda = K - 2 mu / 3): the linearisation of W at
 /// the undeformed state. This matches the hyperelastic law to first order in
 /// the strain and keeps small-strain analyses linear.
-class NeoHooke final : public ConstitutiveModel {
+class NeoHooke final : public ElasticModel {
  public:
   /// c10 > 0 [force/area], d1 > 0 [area/force].
   NeoHooke(double c10, double d1);

@@ -22,7 +22,7 @@ void condense_out_of_plane(Mat6& D) {
   D.col(2).setZero();
 }
 
-void plane_stress_small_strain(const ConstitutiveModel& model, Vec6& eps, Vec6& sigma, Mat6& D) {
+void plane_stress_small_strain(const ElasticModel& model, Vec6& eps, Vec6& sigma, Mat6& D) {
   for (int it = 0; it < kMaxIterations; ++it) {
     model.small_strain(eps, sigma, D);
     if (!(D(2, 2) > 0)) break;
@@ -36,7 +36,7 @@ void plane_stress_small_strain(const ConstitutiveModel& model, Vec6& eps, Vec6& 
   throw ModelError("plane stress: the out-of-plane strain iteration did not converge");
 }
 
-void plane_stress_finite_strain(const ConstitutiveModel& model, Eigen::Matrix3d& C, Vec6& S, Mat6& D) {
+void plane_stress_finite_strain(const ElasticModel& model, Eigen::Matrix3d& C, Vec6& S, Mat6& D) {
   // Newton on E33 = (C33 - 1)/2; dS33/dE33 = D(2,2). Steps that would make C33 <= 0 are halved.
   for (int it = 0; it < kMaxIterations; ++it) {
     model.finite_strain(C, S, D);

@@ -1,5 +1,5 @@
 #pragma once
-/// \file Plane-stress condensation of a 3D constitutive model.
+/// \file Plane-stress condensation of a 3D elastic model.
 ///
 /// The out-of-plane normal stress is driven to zero by a local Newton
 /// iteration on the out-of-plane strain; the tangent returned is the
@@ -16,13 +16,13 @@ namespace tether {
 /// that sigma_33 = 0 to round-off, the stress (sigma(2) ~ 0) and the condensed
 /// tangent D (row and column 2 zero). Throws ModelError when the iteration does
 /// not converge in 50 steps.
-void plane_stress_small_strain(const ConstitutiveModel& model, Vec6& eps, Vec6& sigma, Mat6& D);
+void plane_stress_small_strain(const ElasticModel& model, Vec6& eps, Vec6& sigma, Mat6& D);
 
 /// Finite strain. In: C with the in-plane block set; C(2,2) is the starting
 /// guess for the squared out-of-plane stretch (1 is fine), C(0,2), C(1,2) must
 /// be zero. Out: C(2,2) with S_33 = 0 to round-off, S and the condensed tangent
 /// dS/dE (row and column 2 zero). Throws ModelError when the iteration fails.
-void plane_stress_finite_strain(const ConstitutiveModel& model, Eigen::Matrix3d& C, Vec6& S, Mat6& D);
+void plane_stress_finite_strain(const ElasticModel& model, Eigen::Matrix3d& C, Vec6& S, Mat6& D);
 
 /// Removes row and column 2 (the 33 direction) by static condensation, in place.
 void condense_out_of_plane(Mat6& D);

@@ -64,6 +64,26 @@ struct MaterialData {
   };
   std::optional<Elastic> elastic;
   std::optional<NeoHooke> neo_hooke;
+  /// `*PLASTIC`: von Mises plasticity, true yield stress against equivalent
+  /// plastic strain, piecewise linear and constant beyond the last row.
+  struct Plastic {
+    enum class Hardening { Isotropic, Kinematic };
+    Hardening hardening = Hardening::Isotropic;
+    std::vector<double> yield_stress;    ///< [stress], > 0, one per row
+    std::vector<double> plastic_strain;  ///< [-], 0 first, strictly increasing
+    SourceLocation where;                ///< the *PLASTIC line
+  };
+  std::optional<Plastic> plastic;
+  /// `*USER MATERIAL`: an ABAQUS UMAT loaded from a shared library.
+  struct User {
+    std::string library;             ///< LIBRARY= as written (a path with '/' is relative to the working directory)
+    std::string symbol;              ///< SYMBOL= ("" = umat_, gfortran's name of SUBROUTINE UMAT)
+    std::vector<double> constants;   ///< PROPS
+    SourceLocation where;            ///< the *USER MATERIAL line
+  };
+  std::optional<User> user;
+  std::optional<int> depvar;         ///< `*DEPVAR`: NSTATV, the UMAT's number of state variables
+  SourceLocation depvar_where;       ///< the *DEPVAR line
   std::optional<double> density;  ///< [mass/volume]
   /// `*DAMPING, ALPHA=, BETA=` (ABAQUS's Rayleigh damping of the material):
   /// in dynamic steps the element's damping matrix is C = alpha M + beta K.

@@ -21,6 +21,8 @@ struct PointValues {
   Eigen::Vector2d x{0, 0};  ///< current position
   Tensor4 stress{};         ///< Cauchy stress [force/area]
   Tensor4 strain{};         ///< small strain, or Green-Lagrange strain under NLGEOM; tensor shear
+  double peeq = 0;          ///< equivalent plastic strain PEEQ [-] (0 for elastic materials)
+  Tensor4 plastic_strain{}; ///< plastic strain PE, tensor shear [-] (zero for elastic materials)
 };
 
 /// The force a constraint exerts on one node: -sum_k lambda_k df_k/du over
@@ -132,6 +134,11 @@ struct IncrementResults {
   std::optional<EnergyTotals> energy;         ///< dynamic steps only
   std::vector<Tensor4> nodal_stress;          ///< per node: average of extrapolated element values
   std::vector<Tensor4> nodal_strain;          ///< per node, as above
+  /// Plasticity (all empty / nullopt when no element keeps a material history):
+  std::vector<double> nodal_peeq;             ///< per node: PEEQ averaged as nodal_stress
+  std::vector<Tensor4> nodal_plastic_strain;  ///< per node: PE averaged as nodal_stress, tensor shear
+  std::vector<double> element_peeq;           ///< per element: mean PEEQ of its points
+  std::optional<double> plastic_dissipation;  ///< ALLPD: plastic dissipation of the model up to now [energy]
   std::vector<std::vector<PointValues>> points;  ///< per element, per integration point (empty when streamed)
   std::vector<Tensor4> element_stress;        ///< streamed only: per element, mean of its point stresses
   const ElementPointSource* point_source = nullptr;  ///< streamed only: computes points[e] on demand

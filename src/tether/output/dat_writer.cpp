@@ -104,6 +104,29 @@ void write_points(Out out, const Model& model, const Selection& sel, const Incre
   }
 }
 
+/// PEEQ (ccx's block: no blank before "for set") or PE (tether's block, tensor shear like strains).
+void write_plastic_points(Out out, const Model& model, const Selection& sel, const IncrementResults& r, bool peeq) {
+  if (peeq)
+    fmt::format_to(out, "\n equivalent plastic strain (elem, integ.pnt.,pe)for set {}{}\n\n", sel.name,
+                   time_suffix(r.total_time));
+  else
+    write_header(out, "plastic strains (elem, integ.pnt.,pexx,peyy,pezz,pexy,pexz,peyz)", sel.name, r.total_time);
+  std::vector<PointValues> buffer;
+  for (const int e : sel.indices) {
+    const auto& points = element_points(r, static_cast<std::size_t>(e), buffer);
+    const int label = model.elements[static_cast<std::size_t>(e)].id;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if (peeq) {
+        fmt::format_to(out, "{:10d}{:4d} {:13.6E}\n", label, k + 1, unsigned_zero(points[k].peeq));
+        continue;
+      }
+      const Tensor4& t = points[k].plastic_strain;
+      fmt::format_to(out, "{:10d}{:4d} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}\n", label, k + 1,
+                     unsigned_zero(t[0]), unsigned_zero(t[1]), unsigned_zero(t[2]), unsigned_zero(t[3]), 0.0, 0.0);
+    }
+  }
+}
+
 // ---------------------------------------------------------------- contact
 
 bool closed(const ContactNodeValues& v) { return v.status != ContactNodeValues::Status::Open; }
@@ -329,10 +352,11 @@ void DatWriter::check(const Model& model, const OutputRequest& r) {
                                             r.set));
   }
   for (const auto& v : r.variables) {
-    const bool ok = nodal ? (v == "U" || v == "RF" || v == "V" || v == "A") : (v == "S" || v == "E");
+    const bool ok = nodal ? (v == "U" || v == "RF" || v == "V" || v == "A")
+                          : (v == "S" || v == "E" || v == "PEEQ" || v == "PE");
     if (!ok)
       throw InputError(r.where, fmt::format("{}: variable '{}' cannot be printed (tether prints {})", keyword, v,
-                                            nodal ? "U, RF, V and A" : "S and E"));
+                                            nodal ? "U, RF, V and A" : "S, E, PEEQ and PE"));
   }
 }
 
@@ -408,6 +432,8 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
                     results.total_time);
       else if (v == "S" || v == "E")
         write_points(out, model_, sel, results, v == "S");
+      else if (v == "PEEQ" || v == "PE")
+        write_plastic_points(out, model_, sel, results, v == "PEEQ");
     }
   }
   if (contact_due) write_contact_state_blocks(text, model_, results.contact, results.total_time);

@@ -266,6 +266,9 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   check_size(r.nodal_strain.size(), n_nodes, "nodal_strain");
   check_size(r.points.size(), n_elements, "points");
   check_size(r.element_stress.size(), n_elements, "element_stress");
+  check_size(r.nodal_peeq.size(), n_nodes, "nodal_peeq");
+  check_size(r.nodal_plastic_strain.size(), n_nodes, "nodal_plastic_strain");
+  check_size(r.element_peeq.size(), n_elements, "element_peeq");
 
   Sink sink(out);
   const auto enc = encoding_;
@@ -283,6 +286,9 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
                  r.step);
   fmt::format_to(out_it, "      <DataArray type=\"Int64\" Name=\"INCREMENT\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n",
                  r.increment);
+  if (r.plastic_dissipation)
+    fmt::format_to(out_it, "      <DataArray type=\"Float64\" Name=\"ALLPD\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n",
+                   *r.plastic_dissipation);
   fmt::format_to(std::back_inserter(sink.buffer()),
                  "    </FieldData>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n"
@@ -303,6 +309,9 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
                              indexed([&](std::size_t i) { return von_mises(r.nodal_stress[i]); }));
   }
   if (!r.nodal_strain.empty()) write_tensors6(sink, enc, kIndent, "E", r.nodal_strain);
+  if (!r.nodal_peeq.empty())
+    write_data_array<double>(sink, enc, kIndent, "PEEQ", 1, n_nodes, indexed([&](std::size_t i) { return r.nodal_peeq[i]; }));
+  if (!r.nodal_plastic_strain.empty()) write_tensors6(sink, enc, kIndent, "PE", r.nodal_plastic_strain);
   if (!r.multipliers.empty()) {
     SparseNodal<double> lambda;
     SparseNodal<Eigen::Vector3d> lambdas;  // constraints of 2 or 3 equations, at their first node
@@ -370,6 +379,10 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
     write_data_array<double>(sink, enc, kIndent, "S_Mises", 1, n_cells,
                              indexed([&](std::size_t c) { return von_mises(cell_stress(c)); }));
   }
+  if (!r.element_peeq.empty())
+    write_data_array<double>(sink, enc, kIndent, "PEEQ", 1, n_cells, indexed([&](std::size_t c) {
+                               return c < n_elements ? r.element_peeq[c] : 0.0;
+                             }));
   sink.append("      </CellData>\n      <Points>\n");
   write_data_array<double>(sink, enc, kIndent, "Points", 3, 3 * n_nodes,
                            tuples(3, [&](std::size_t i, double* t) { put_vector(t, model.coords[i]); }));

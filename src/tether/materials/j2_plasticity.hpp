@@ -1,0 +1,71 @@
+#pragma once
+/// \file `*PLASTIC`: small-strain von Mises plasticity with isotropic or
+/// kinematic piecewise-linear hardening. See docs/theory/plasticity.md.
+
+#include "tether/materials/constitutive_model.hpp"
+#include "tether/materials/hardening_curve.hpp"
+#include "tether/materials/linear_elastic.hpp"
+
+namespace tether {
+
+/// Von Mises (J2) elastoplasticity on isotropic linear elasticity, backward
+/// Euler: radial return in 3D (plane strain, axisymmetry) and the
+/// plane-stress return map (sigma_33 = 0 exactly) for plane stress, each with
+/// its consistent tangent (symmetric).
+///
+/// Hardening from the curve y(p) of the *PLASTIC table (true yield stress
+/// against equivalent plastic strain p):
+/// - Isotropic: the yield stress is y(p), no back stress;
+/// - Kinematic: the yield stress stays y(0) and the back stress moves by the
+///   Prager-Ziegler rule with the modulus dy/dp (linear kinematic hardening
+///   for a two-point table; piecewise in p for more rows).
+///
+/// State (13 values): plastic strain (Voigt, engineering shear), back stress
+/// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p.
+class J2Plasticity final : public ConstitutiveModel {
+ public:
+  enum class Hardening { Isotropic, Kinematic };
+  static constexpr int kStateSize = 13;
+
+  /// young > 0, poisson in (-1, 0.5), curve values > 0 (checked by the caller).
+  J2Plasticity(double young, double poisson, HardeningCurve curve, Hardening hardening);
+
+  [[nodiscard]] int n_state() const override { return kStateSize; }
+  void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
+                           std::span<double> new_state, const PointContext& where,
+                           MaterialResponse& out) const override;
+  /// Throws ModelError: tether's plasticity is small strain only.
+  void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
+                            std::span<double> new_state, const PointContext& where,
+                            MaterialResponse& out) const override;
+  [[nodiscard]] bool linear_small_strain() const override { return false; }
+  [[nodiscard]] double equivalent_plastic_strain(std::span<const double> state) const override {
+    return state[12];
+  }
+  [[nodiscard]] Vec6 plastic_strain(std::span<const double> state) const override;
+  [[nodiscard]] double shear_modulus() const override { return elastic_.mu(); }
+  [[nodiscard]] std::string describe() const override;
+
+  /// Radius of the yield surface at PEEQ p (as a uniaxial stress) [stress].
+  [[nodiscard]] double yield_radius(double p) const;
+  /// Kinematic part: the uniaxial back stress magnitude function H(p) [stress].
+  [[nodiscard]] double kinematic(double p) const;
+
+ private:
+  struct Hardened;  // K, H and slopes at one p
+  [[nodiscard]] Hardened hardened(double p) const;
+  /// Plastic work density of a return from PEEQ p_old by dp in the direction
+  /// n (unit deviatoric tensor), given alpha_n : n [energy/volume].
+  [[nodiscard]] double plastic_work(double p_old, double dp, double alpha_dot_n) const;
+  void general_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
+                      MaterialResponse& out) const;
+  void plane_stress_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
+                           MaterialResponse& out) const;
+
+  double young_, poisson_;
+  LinearElastic elastic_;
+  HardeningCurve curve_;
+  Hardening hardening_;
+};
+
+}  // namespace tether

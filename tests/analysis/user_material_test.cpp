@@ -1,0 +1,166 @@
+// *USER MATERIAL: an ABAQUS UMAT from a shared library. The worked J2 example
+// matches *PLASTIC, a Fortran UMAT built by gfortran matches *ELASTIC, PNEWDT
+// < 1 cuts the increment back, and bad input is refused naming the line,
+// the element and the point.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "run_deck.hpp"
+
+using namespace tether;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string cylinder_deck() {
+  std::ifstream in(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/plastic_cylinder.inp");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "deck has no '" << from << "'";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The plastic cylinder with linear hardening (H = 1000) and tight equilibrium tolerances.
+std::string hardening_cylinder(const std::string& material) {
+  std::string d = replaced(cylinder_deck(), "*ELASTIC\n200000, 0.3\n*PLASTIC\n240., 0.\n", material);
+  d = replaced(d, "BORE, P, 172.99", "BORE, P, 200.");
+  d = replaced(d, "0.1, 1., 1e-6, 0.1\n", "0.1, 1., 1e-6, 0.1\n*CONTROLS, PARAMETERS=FIELD\n1e-12, 1e-12\n");
+  return replaced(d, "*STATIC\n0.25, 1.\n", "*STATIC\n0.25, 1.\n*CONTROLS, PARAMETERS=FIELD\n1e-12, 1e-12\n");
+}
+
+double relative(double a, double b, double scale) { return std::abs(a - b) / scale; }
+
+std::string error_of(const std::string& deck) {
+  try {
+    const tether::testing::Run run = tether::testing::run_deck_text(deck);
+    return run.summary.completed ? "(completed)" : run.summary.message;
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+}  // namespace
+
+TEST(UserMaterial, J2ExampleMatchesPlastic) {
+  const auto builtin = tether::testing::run_deck_text(
+      hardening_cylinder("*ELASTIC\n200000, 0.3\n*PLASTIC\n240., 0.\n1240., 1.\n"));
+  const auto user = tether::testing::run_deck_text(hardening_cylinder(
+      std::string("*USER MATERIAL, CONSTANTS=4, LIBRARY=") + TETHER_J2_UMAT + "\n200000., 0.3, 240., 1000.\n"
+      "*DEPVAR\n5\n"));
+  ASSERT_TRUE(builtin.summary.completed) << builtin.summary.message;
+  ASSERT_TRUE(user.summary.completed) << user.summary.message;
+  ASSERT_EQ(builtin.recorder.results.size(), user.recorder.results.size());
+  double worst_u = 0, worst_s = 0, worst_w = 0;
+  for (std::size_t k = 0; k < user.recorder.results.size(); ++k) {
+    const IncrementResults &a = builtin.recorder.results[k], &b = user.recorder.results[k];
+    double u_scale = 0;
+    for (const auto& u : a.displacement) u_scale = std::max(u_scale, u.cwiseAbs().maxCoeff());
+    for (std::size_t n = 0; n < a.displacement.size(); ++n)
+      worst_u = std::max(worst_u, (a.displacement[n] - b.displacement[n]).cwiseAbs().maxCoeff() / u_scale);
+    for (std::size_t e = 0; e < a.points.size(); ++e)
+      for (std::size_t q = 0; q < a.points[e].size(); ++q)
+        for (int c = 0; c < 4; ++c) worst_s = std::max(worst_s, relative(a.points[e][q].stress[c], b.points[e][q].stress[c], 240));
+    ASSERT_TRUE(a.plastic_dissipation && b.plastic_dissipation);
+    worst_w = std::max(worst_w, relative(*a.plastic_dissipation, *b.plastic_dissipation,
+                                         std::max(*a.plastic_dissipation, 1e-30)));
+  }
+  std::printf("J2 UMAT against *PLASTIC: displacements %.2e, stresses %.2e, ALLPD %.2e (relative)\n", worst_u,
+              worst_s, worst_w);
+  EXPECT_LT(worst_u, 1e-10);
+  EXPECT_LT(worst_s, 1e-10);
+  EXPECT_LT(worst_w, 1e-10);
+  EXPECT_GT(*user.last().plastic_dissipation, 0);
+}
+
+#ifdef TETHER_FORTRAN_UMAT
+TEST(UserMaterial, FortranUmatBuiltByGfortranMatchesElastic) {
+  std::string deck = cylinder_deck();
+  deck = replaced(deck, "*MATERIAL, NAME=STEEL\n*ELASTIC\n200000, 0.3\n*PLASTIC\n240., 0.\n",
+                  std::string("*MATERIAL, NAME=FORTRAN\n*USER MATERIAL, CONSTANTS=2, LIBRARY=") + TETHER_FORTRAN_UMAT +
+                      "\n200000., 0.3\n");
+  deck = replaced(deck, "MATERIAL=STEEL", "MATERIAL=FORTRAN");
+  const auto user = tether::testing::run_deck_text(deck);
+  std::string elastic = replaced(cylinder_deck(), "*PLASTIC\n240., 0.\n", "");
+  const auto builtin = tether::testing::run_deck_text(elastic);
+  ASSERT_TRUE(user.summary.completed) << user.summary.message;
+  ASSERT_TRUE(builtin.summary.completed) << builtin.summary.message;
+  ASSERT_EQ(builtin.recorder.results.size(), user.recorder.results.size());
+  double worst = 0, scale = 0;
+  for (std::size_t k = 0; k < builtin.recorder.results.size(); ++k)
+    for (std::size_t n = 0; n < builtin.last().displacement.size(); ++n) {
+      const Eigen::Vector2d a = builtin.recorder.results[k].displacement[n], b = user.recorder.results[k].displacement[n];
+      scale = std::max(scale, a.cwiseAbs().maxCoeff());
+      worst = std::max(worst, (a - b).cwiseAbs().maxCoeff());
+    }
+  std::printf("Fortran elastic UMAT against *ELASTIC: displacements %.2e (relative)\n", worst / scale);
+  EXPECT_LT(worst, 1e-10 * scale);
+  // Named otherwise, the routine sees another CMNAME and returns NaN (already in the call when the model is built).
+  const std::string renamed = replaced(replaced(deck, "NAME=FORTRAN", "NAME=OTHER"), "MATERIAL=FORTRAN", "MATERIAL=OTHER");
+  const std::string message = error_of(renamed);
+  EXPECT_NE(message.find("test.inp:"), std::string::npos) << message;
+  EXPECT_NE(message.find("NaN"), std::string::npos) << message;
+  EXPECT_NE(message.find("zero strain"), std::string::npos) << message;
+}
+#endif
+
+TEST(UserMaterial, NanDuringTheAnalysisNamesTheElementAndPoint) {
+  // The J2 example handles NTENS = 4 only and returns NaN for plane stress.
+  std::string deck = replaced(cylinder_deck(), "*ELASTIC\n200000, 0.3\n*PLASTIC\n240., 0.\n",
+                              std::string("*USER MATERIAL, CONSTANTS=4, LIBRARY=") + TETHER_J2_UMAT +
+                                  "\n200000., 0.3, 240., 1000.\n*DEPVAR\n5\n");
+  deck = replaced(deck, "TYPE=CPE8R", "TYPE=CPS8R");
+  const auto run = tether::testing::run_deck_text(deck);
+  EXPECT_FALSE(run.summary.completed);
+  bool named = false;
+  for (const auto& m : run.recorder.messages) named = named || (m.find("NaN") != std::string::npos &&
+                                                               m.find("element 1 (CPS8R)") != std::string::npos &&
+                                                               m.find("integration point 1") != std::string::npos);
+  for (const auto& r : run.recorder.increments)
+    named = named || (r.note.find("NaN") != std::string::npos && r.note.find("element") != std::string::npos &&
+                      r.note.find("integration point") != std::string::npos);
+  EXPECT_TRUE(named) << run.summary.message;
+  std::printf("%s\n", run.summary.message.c_str());
+}
+
+TEST(UserMaterial, PnewdtBelowOneCutsTheIncrementBack) {
+  // One increment of the whole load would strain the bore by about 1e-3; the routine accepts 3e-4.
+  std::string deck = replaced(cylinder_deck(), "*ELASTIC\n200000, 0.3\n*PLASTIC\n240., 0.\n",
+                              std::string("*USER MATERIAL, CONSTANTS=3, LIBRARY=") + TETHER_PNEWDT_UMAT +
+                                  "\n200000., 0.3, 3e-4\n");
+  deck = replaced(deck, "0.1, 1., 1e-6, 0.1", "1., 1., 1e-6, 1.");
+  deck = deck.substr(0, deck.find("*STEP", deck.find("*END STEP")));
+  const auto run = tether::testing::run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  EXPECT_GT(run.summary.cutbacks, 0);
+  EXPECT_GT(run.summary.increments, 1);
+}
+
+TEST(UserMaterial, BadInputIsRefusedNamingTheLine) {
+  const std::string base = cylinder_deck();
+  const auto with = [&](const std::string& material) {
+    return replaced(base, "*ELASTIC\n200000, 0.3\n*PLASTIC\n240., 0.\n", material);
+  };
+  const std::string lib = TETHER_J2_UMAT;
+  std::string m = error_of(with("*USER MATERIAL, CONSTANTS=4, LIBRARY=" + lib + ", SYMBOL=nope\n1, 2, 3, 4\n"));
+  EXPECT_NE(m.find("test.inp:"), std::string::npos) << m;
+  EXPECT_NE(m.find("no routine 'nope'"), std::string::npos) << m;
+  m = error_of(with("*USER MATERIAL, CONSTANTS=4, LIBRARY=" + lib + "\n1, 2, 3\n"));
+  EXPECT_NE(m.find("3 constants: expected CONSTANTS=4"), std::string::npos) << m;
+  m = error_of(with("*USER MATERIAL, CONSTANTS=2, LIBRARY=./no_such_library.so\n1, 2\n"));
+  EXPECT_NE(m.find("no_such_library.so"), std::string::npos) << m;
+  m = error_of(with("*ELASTIC\n200000, 0.3\n*DEPVAR\n3\n"));
+  EXPECT_NE(m.find("*DEPVAR"), std::string::npos) << m;
+  EXPECT_NE(m.find("without *USER MATERIAL"), std::string::npos) << m;
+  m = error_of(with("*ELASTIC\n200000, 0.3\n*USER MATERIAL, CONSTANTS=4, LIBRARY=" + lib + "\n1, 2, 3, 4\n"));
+  EXPECT_NE(m.find("whole mechanical behaviour"), std::string::npos) << m;
+}
