@@ -134,7 +134,7 @@ void handle_contact_pair(DeckState& state, const KeywordBlock& block, const Para
                                  [&](const SurfaceInteraction& s) { return s.name == interaction; });
   if (!known)
     throw InputError(block.where, "undefined INTERACTION=" + interaction +
-                                      ": expected the name of a *SURFACE INTERACTION defined before");
+                                      ": expected the name of a *SURFACE INTERACTION");
   const std::string type = params.name("TYPE");
   if (type == "SURFACE TO SURFACE")
     throw InputError(block.where, "TYPE=SURFACE TO SURFACE is not supported: tether's contact is node to surface "

@@ -172,7 +172,7 @@ void handle_dsload(DeckState& state, const KeywordBlock& block, const ParameterV
     const auto f = data_fields(line, 3, 3, "`surface, P, magnitude`");
     const auto it = state.model.surfaces.find(to_upper(f[0]));
     if (it == state.model.surfaces.end())
-      throw InputError(at, "undefined surface '" + f[0] + "': expected a surface defined earlier by *SURFACE");
+      throw InputError(at, "undefined surface '" + f[0] + "': expected a surface defined by *SURFACE");
     if (it->second.kind != Surface::Kind::ElementFaces)
       throw InputError(at, "surface " + it->second.name + " is a node surface: expected an element-face surface "
                            "(TYPE=ELEMENT) for a pressure");
