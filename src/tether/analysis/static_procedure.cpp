@@ -73,6 +73,7 @@ void StaticProcedure::apply_loads(const IncrementTimes& t, Eigen::VectorXd& u) {
   for (const auto& [dof, v] : loads.forces) external_[dof] += magnitude(v);
   const auto& pressures = system_.pressures();
   for (std::size_t k = 0; k < pressures.size(); ++k) pressures[k]->set_pressure(magnitude(loads.pressure_values[k]));
+  system_.body_forces().set_time(t.step_time, t.period, t.total_time);
 }
 
 NewtonOutcome StaticProcedure::solve_with_acceptance(IncrementProblem& problem, int& iterations) {

@@ -136,8 +136,16 @@ std::vector<KeywordSpec> build_table() {
        handle_boundary, ""},
       {"CLOAD", kAnyStep, "Concentrated nodal forces.", "`node_or_nset, dof (1 or 2), magnitude`",
        {amplitude_param(), op_param()}, handle_cload, ""},
-      {"DLOAD", kAnyStep, "Pressure on element faces (positive pushes into the face).",
-       "`element_or_elset, P1..P4, magnitude` (Pn = pressure on face Sn)",
+      {"DLOAD", kAnyStep,
+       "Pressure on element faces (positive pushes into the face), and body loads per unit mass: gravity (GRAV) "
+       "and centrifugal (CENTRIF), which need the material's *DENSITY. Body loads act on the reference volume "
+       "(exact under NLGEOM too; a centrifugal load then follows the current positions). A later GRAV or CENTRIF "
+       "on the same element replaces the earlier one; a GRAV in another direction on an element that already has "
+       "one is refused (CalculiX adds the two, ABAQUS replaces).",
+       "`element_or_elset, P1..P4, magnitude` (Pn = pressure on face Sn); `element_or_elset, GRAV, g, dx, dy[, dz]` "
+       "(g [length/time^2] along the direction (dx, dy), normalized; dz must be 0); `element_or_elset, CENTRIF, "
+       "omega^2, px, py, pz, ax, ay, az` (omega^2 [1/time^2] >= 0, a point on the rotation axis and its "
+       "direction: the z axis for plane elements, the symmetry axis `0, y, 0` / `0, 1, 0` for axisymmetric ones)",
        {amplitude_param(), op_param()}, handle_dload, ""},
       {"DSLOAD", kAnyStep, "Pressure on an element-face surface (positive pushes into the face).",
        "`surface, P, magnitude`", {amplitude_param(), op_param()}, handle_dsload, ""},

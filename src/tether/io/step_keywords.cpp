@@ -182,6 +182,7 @@ void handle_end_step(DeckState& state, const KeywordBlock& block, const Paramete
   s.cloads = state.cloads;
   s.pressures = state.dloads;
   s.pressures.insert(s.pressures.end(), state.dsloads.begin(), state.dsloads.end());
+  s.body_loads = state.body_loads;
   s.restart_frequency = state.restart_frequency;
   state.in_step = false;
   state.output_active = false;
