@@ -9,6 +9,8 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -31,13 +33,13 @@ enum ExitCode { kOk = 0, kInput = 1, kNotCompleted = 2, kInternal = 3 };
 
 std::string warning_text(const DeckWarning& w) { return fmt::format("{}: warning: {}", w.where.str(), w.message); }
 
-int check(const std::string& deck) {
+int check(const std::string& deck, Dialect dialect) {
   std::vector<DeckWarning> warnings;
-  const Model model = read_deck(deck, &warnings);
+  const Model model = read_deck(deck, &warnings, dialect);
   for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
   Discretization discretization(model);  // materials and elements can be built
-  fmt::print("{}: OK: {} nodes, {} elements, {} step(s), {} dofs\n", deck, model.n_nodes(), model.n_elements(),
-             model.steps.size(), discretization.dofs().n_dofs());
+  fmt::print("{}: OK: {} nodes, {} elements, {} step(s), {} dofs (dialect {})\n", deck, model.n_nodes(),
+             model.n_elements(), model.steps.size(), discretization.dofs().n_dofs(), dialect_name(dialect));
   return kOk;
 }
 
@@ -125,10 +127,10 @@ std::string written_files(const ResultWriter& writer, const ProgressObserver& ob
 }
 
 int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
-        bool quiet, const std::string& restart, double memory_mb) {
+        bool quiet, const std::string& restart, double memory_mb, Dialect dialect) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<DeckWarning> warnings;
-  const Model model = read_deck(deck, &warnings);
+  const Model model = read_deck(deck, &warnings, dialect);
   if (!quiet)
     for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
   const std::string job = fs::path(deck).stem().string();
@@ -159,6 +161,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   }
   ProgressObserver observer(writer, !quiet && isatty(fileno(stdout)));
   relay.to = &observer;
+  observer.log(fmt::format("deck {} read in the {} dialect", deck, dialect_name(dialect)));
   for (const auto& w : warnings) observer.log(warning_text(w));
   if (!restart_file.empty()) observer.log("restart from " + restart_file + " into " + dir.string());
 
@@ -196,7 +199,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("tether ") + TETHER_VERSION);
   app.require_subcommand(1);
 
-  std::string deck, output_dir, solver = "auto", restart;
+  std::string deck, output_dir, solver = "auto", restart, dialect = "abaqus";
+  const std::string dialect_help =
+      "Where ABAQUS and CalculiX give the same deck data different meanings, read it as abaqus (default) or "
+      "calculix means it (docs/keywords.md, section Dialects)";
   bool ascii = false, quiet = false, no_condense = false;
   double memory_mb = 0;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
@@ -217,10 +223,14 @@ int main(int argc, char** argv) {
                       "temporary directory ($TMPDIR) and read back at each solve (slower); CHOLMOD and UMFPACK "
                       "ignore it; default: no limit, everything in core")
       ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--dialect", dialect, dialect_help)
+      ->check(CLI::IsMember({"abaqus", "calculix"}, CLI::ignore_case));
   run_cmd->add_flag("--ascii", ascii, "Write ASCII instead of binary VTU (for debugging)");
   run_cmd->add_flag("-q,--quiet", quiet, "Print nothing but errors");
   auto* check_cmd = app.add_subcommand("check", "Read and validate a deck without solving it");
   check_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
+  check_cmd->add_option("--dialect", dialect, dialect_help)
+      ->check(CLI::IsMember({"abaqus", "calculix"}, CLI::ignore_case));
   auto* keywords_cmd = app.add_subcommand("keywords", "Print the keyword reference (Markdown)");
 
   try {
@@ -235,8 +245,10 @@ int main(int argc, char** argv) {
       fmt::print("{}", keyword_reference_markdown());
       return kOk;
     }
-    if (*check_cmd) return check(deck);
-    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb);
+    std::transform(dialect.begin(), dialect.end(), dialect.begin(), [](unsigned char c) { return std::tolower(c); });
+    const Dialect chosen = parse_dialect(dialect).value_or(Dialect::Abaqus);  // CLI11 checked the name
+    if (*check_cmd) return check(deck, chosen);
+    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb, chosen);
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInput;

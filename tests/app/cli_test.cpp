@@ -515,3 +515,32 @@ TEST(Cli, TerminalAndMessageLogSayEachThingOnce) {
   EXPECT_EQ(count(tty.out, "s: contact search"), 1) << tty.out;
   EXPECT_EQ(count(tty.out, "no convergence in 2 iterations"), cutbacks) << tty.out;
 }
+
+TEST(Cli, DialectIsChosenOnTheCommandLineAndNamedInTheLogs) {
+  const fs::path dir = scratch("dialect");
+  std::string deck = kGoodDeck;
+  // NLGEOM=NO after an NLGEOM step: ABAQUS keeps NLGEOM on (warning), CalculiX turns it off.
+  deck.replace(deck.find("*STEP\n"), 6, "*STEP, NLGEOM\n");
+  deck += "*STEP, NLGEOM=NO\n*STATIC\n*END STEP\n";
+  write(dir / "plate.inp", deck);
+  const auto read_file = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  for (const std::string dialect : {"abaqus", "calculix"}) {
+    const auto run = tether("run " + (dir / "plate.inp").string() + " --dialect " + dialect + " -o " +
+                            (dir / dialect).string());
+    EXPECT_EQ(run.code, 0) << run.out;
+    EXPECT_EQ(run.out.find("stays on") != std::string::npos, dialect == "abaqus") << run.out;
+    EXPECT_NE(read_file(dir / dialect / "plate.sta").find("job plate  dialect " + dialect), std::string::npos);
+    EXPECT_NE(read_file(dir / dialect / "plate.msg").find("read in the " + dialect + " dialect"), std::string::npos);
+  }
+  const auto check = tether("check --dialect CalculiX " + (dir / "plate.inp").string());
+  EXPECT_EQ(check.code, 0) << check.out;
+  EXPECT_NE(check.out.find("(dialect calculix)"), std::string::npos) << check.out;
+  const auto plain = tether("check " + (dir / "plate.inp").string());
+  EXPECT_NE(plain.out.find("(dialect abaqus)"), std::string::npos) << plain.out;
+  const auto bad = tether("check --dialect nastran " + (dir / "plate.inp").string());
+  EXPECT_EQ(bad.code, 1) << bad.out;
+  EXPECT_NE(bad.out.find("nastran"), std::string::npos) << bad.out;
+}

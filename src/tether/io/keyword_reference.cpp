@@ -26,6 +26,32 @@ std::string type_text(const deck::ParameterSpec& p) {
   return "";
 }
 
+/// Where ABAQUS and CalculiX read the same data differently, and what tether does.
+std::string dialects_section() {
+  return "## Dialects\n\n"
+         "`tether run|check --dialect abaqus|calculix` (default abaqus) chooses the meaning where ABAQUS and "
+         "CalculiX give the same data different meanings; the `.msg` and `.sta` name the dialect. tether never "
+         "picks the other meaning silently: a case whose meaning in the chosen dialect tether does not model is "
+         "refused with a file:line error.\n\n"
+         "| data | abaqus | calculix |\n| --- | --- | --- |\n"
+         "| *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL `c0, p0` | p = p0/(e-1) (h/c0+1)(exp(h/c0+1)-1) "
+         "for h > -c0, else 0 | p = p0 exp(ln(100) h/c0) at every clearance (1 % of p0 at h = -c0) |\n"
+         "| PRESSURE-OVERCLOSURE=LINEAR | `K` only: p = K h; further fields (CalculiX's sigma_inf, c0) are refused "
+         "| CalculiX's law p = K h (1/2 + atan(h/eps)/pi), eps = pi sigma_inf/K, tension up to sigma_inf (E/70000 "
+         "when not given) at open gaps within c0 sqrt(slave area): not modelled, refused |\n"
+         "| PRESSURE-OVERCLOSURE=HARD | exact (multipliers) | exact (multipliers), with a warning: CalculiX "
+         "itself uses its LINEAR penalty with K = 50 E, sigma_inf = E/70000 |\n"
+         "| *STEP, NLGEOM=NO after a step with NLGEOM | stays on, with a warning | turned off |\n\n"
+         "The same in both dialects: names may be used before their definition (CalculiX's reading order, see "
+         "above); a second GRAV in another direction on an element is refused (CalculiX adds the two, ABAQUS "
+         "replaces the first).\n\n"
+         "Known differences not switched by the dialect yet (tether follows ABAQUS in both): the area given to "
+         "each node of a node-based slave surface (1 unless `*SURFACE, TYPE=NODE` gives it); reaction and "
+         "concentrated forces on axisymmetric elements (totals over the full circle; CalculiX's `.dat` reports "
+         "its expanded segment); `FREQUENCY` of print requests (per request; CalculiX uses one value for the "
+         "step).\n\n";
+}
+
 }  // namespace
 
 std::string keyword_reference_markdown() {
@@ -63,6 +89,7 @@ std::string keyword_reference_markdown() {
          << p.description << " |\n";
     md << "\n";
   }
+  md << dialects_section();
   md << "## Recognised but not supported yet\n\n"
      << "These keywords stop the reader with a file:line error instead of being silently dropped.\n\n"
      << "| keyword | what it is | status |\n| --- | --- | --- |\n";

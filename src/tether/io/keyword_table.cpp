@@ -288,10 +288,12 @@ std::vector<KeywordSpec> build_table() {
       {"SURFACE INTERACTION", kModelData, "Starts a contact property; *SURFACE BEHAVIOR and *FRICTION follow it.", "",
        {name("NAME", "Name of the interaction.", true)}, handle_surface_interaction, ""},
       {"SURFACE BEHAVIOR", kInteraction, "Pressure-overclosure law of the interaction (default HARD).",
-       "HARD: none; LINEAR: `K[, sigma_inf, c0]` (CalculiX); EXPONENTIAL: `c0, p0`; TABULAR: pairs `pressure, "
+       "HARD: none; LINEAR: `K` (abaqus dialect: p = K h; CalculiX's `K, sigma_inf, c0` law is refused); "
+       "EXPONENTIAL: `c0, p0` (ABAQUS's or CalculiX's function, by dialect); TABULAR: pairs `pressure, "
        "overclosure` with overclosure increasing",
        {{"PRESSURE-OVERCLOSURE", PT::Choice, "HARD", {"HARD", "LINEAR", "EXPONENTIAL", "TABULAR"}, false, "",
-         "HARD contact is enforced exactly (by multipliers, not CalculiX's K = 50 E penalty)."},
+         "HARD contact is enforced exactly (by multipliers, not CalculiX's K = 50 E penalty) in both dialects; the "
+         "calculix dialect says so in a warning."},
         choice("ENFORCEMENT", "LAGRANGE", {"LAGRANGE", "PENALTY", "AUGMENTED"},
                "tether extension, HARD only: LAGRANGE multipliers (exact; regularised with EPSILON), PENALTY "
                "(N = PENALTY x overclosure) or AUGMENTED Lagrangian (penalty plus Uzawa updates until the largest "

@@ -16,6 +16,7 @@
 
 #include "tether/core/error.hpp"
 #include "tether/model/body_load.hpp"
+#include "tether/model/dialect.hpp"
 #include "tether/model/constraint_data.hpp"
 #include "tether/model/contact_data.hpp"
 #include "tether/model/element_type.hpp"
@@ -184,6 +185,7 @@ struct RestartRead {
 struct Model {
   std::string heading;
   std::string deck_path;  ///< path of the main deck
+  Dialect dialect = Dialect::Abaqus;  ///< the meaning the deck was read with
 
   // --- mesh ---
   std::vector<int> node_ids;              ///< label of node i
