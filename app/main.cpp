@@ -9,16 +9,20 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include "progress_observer.hpp"
 #include "tether/analysis/static_analysis.hpp"
 #include "tether/core/error.hpp"
 #include "tether/io/deck_reader.hpp"
+#include "tether/io/deck_survey.hpp"
 #include "tether/output/restart_file.hpp"
 #include "tether/output/result_writer.hpp"
 
@@ -31,14 +35,98 @@ enum ExitCode { kOk = 0, kInput = 1, kNotCompleted = 2, kInternal = 3 };
 
 std::string warning_text(const DeckWarning& w) { return fmt::format("{}: warning: {}", w.where.str(), w.message); }
 
-int check(const std::string& deck) {
+int check(const std::string& deck, Dialect dialect) {
   std::vector<DeckWarning> warnings;
-  const Model model = read_deck(deck, &warnings);
+  const Model model = read_deck(deck, &warnings, dialect);
   for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
   Discretization discretization(model);  // materials and elements can be built
-  fmt::print("{}: OK: {} nodes, {} elements, {} step(s), {} dofs\n", deck, model.n_nodes(), model.n_elements(),
-             model.steps.size(), discretization.dofs().n_dofs());
+  fmt::print("{}: OK: {} nodes, {} elements, {} step(s), {} dofs (dialect {})\n", deck, model.n_nodes(),
+             model.n_elements(), model.steps.size(), discretization.dofs().n_dofs(), dialect_name(dialect));
   return kOk;
+}
+
+/// The .inp decks of `paths`: files as given, folders searched recursively
+/// (sorted). InputError for a path that does not exist.
+std::vector<std::string> decks_of(const std::vector<std::string>& paths) {
+  std::vector<std::string> decks;
+  for (const std::string& p : paths) {
+    if (fs::is_directory(p)) {
+      std::vector<std::string> found;
+      for (const auto& entry : fs::recursive_directory_iterator(p))
+        if (entry.is_regular_file() && entry.path().extension() == ".inp") found.push_back(entry.path().string());
+      std::sort(found.begin(), found.end());
+      decks.insert(decks.end(), found.begin(), found.end());
+    } else if (fs::exists(p)) {
+      decks.push_back(p);
+    } else {
+      throw InputError(SourceLocation{p, 0}, "no such deck or folder '" + p + "'");
+    }
+  }
+  return decks;
+}
+
+/// One deck of a survey: its refusals, or the first error of reading it when
+/// the keyword table refuses nothing ("" when it reads).
+struct SurveyedDeck {
+  std::vector<Refusal> refusals;
+  std::string error;
+};
+
+SurveyedDeck survey(const std::string& deck, Dialect dialect) {
+  SurveyedDeck s{survey_deck(deck), ""};
+  if (s.refusals.size() == 1 && s.refusals[0].kind == Refusal::Kind::Unreadable)
+    return {{}, s.refusals[0].what};  // an error, not something the deck needs
+  if (!s.refusals.empty()) return s;
+  try {
+    const Model model = read_deck(deck, nullptr, dialect);
+    Discretization discretization(model);
+  } catch (const InputError& e) {
+    s.error = e.what();
+  } catch (const std::exception& e) {
+    s.error = deck + ": error: " + e.what();
+  }
+  return s;
+}
+
+/// `tether check` over several decks: one line per deck, then one table of
+/// what tether refused (kind, what, decks, occurrences), most decks first.
+int check_many(const std::vector<std::string>& decks, Dialect dialect) {
+  std::map<std::pair<Refusal::Kind, std::string>, std::pair<int, int>> table;  // -> (decks, occurrences)
+  int ok = 0, other_errors = 0;
+  for (const std::string& deck : decks) {
+    const SurveyedDeck s = survey(deck, dialect);
+    if (s.refusals.empty() && s.error.empty()) {
+      fmt::print("{}: OK\n", deck);
+      ++ok;
+      continue;
+    }
+    if (!s.error.empty()) {
+      fmt::print("{}\n", s.error.substr(0, s.error.find('\n')));
+      ++other_errors;
+      continue;
+    }
+    std::map<std::pair<Refusal::Kind, std::string>, int> here;
+    for (const Refusal& r : s.refusals) ++here[{r.kind, r.what}];
+    std::string list;
+    for (const auto& [key, n] : here) {
+      list += (list.empty() ? "" : ", ") + key.second + (n > 1 ? fmt::format(" ({}x)", n) : "");
+      table[key].first += 1;
+      table[key].second += n;
+    }
+    fmt::print("{}: refused: {}\n", deck, list);
+  }
+  std::vector<std::pair<std::pair<Refusal::Kind, std::string>, std::pair<int, int>>> rows(table.begin(), table.end());
+  std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.second.first > b.second.first; });
+  fmt::print("\n{} deck(s): {} read, {} refused by the keyword table, {} with other errors (dialect {})\n",
+             decks.size(), ok, decks.size() - ok - other_errors, other_errors, dialect_name(dialect));
+  if (!rows.empty()) {
+    fmt::print("\nWhat the decks need (refused by tether):\n{:<16} {:<48} {:>6} {:>11}\n", "kind", "what", "decks",
+               "occurrences");
+    for (const auto& [key, counts] : rows)
+      fmt::print("{:<16} {:<48} {:>6} {:>11}\n", refusal_kind_name(key.first), key.second, counts.first,
+                 counts.second);
+  }
+  return ok == static_cast<int>(decks.size()) ? kOk : kInput;
 }
 
 /// Forwards the analysis' reports to an observer set later (the result
@@ -125,10 +213,10 @@ std::string written_files(const ResultWriter& writer, const ProgressObserver& ob
 }
 
 int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
-        bool quiet, const std::string& restart, double memory_mb) {
+        bool quiet, const std::string& restart, double memory_mb, Dialect dialect) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<DeckWarning> warnings;
-  const Model model = read_deck(deck, &warnings);
+  const Model model = read_deck(deck, &warnings, dialect);
   if (!quiet)
     for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
   const std::string job = fs::path(deck).stem().string();
@@ -159,6 +247,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   }
   ProgressObserver observer(writer, !quiet && isatty(fileno(stdout)));
   relay.to = &observer;
+  observer.log(fmt::format("deck {} read in the {} dialect", deck, dialect_name(dialect)));
   for (const auto& w : warnings) observer.log(warning_text(w));
   if (!restart_file.empty()) observer.log("restart from " + restart_file + " into " + dir.string());
 
@@ -196,7 +285,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("tether ") + TETHER_VERSION);
   app.require_subcommand(1);
 
-  std::string deck, output_dir, solver = "auto", restart;
+  std::string deck, output_dir, solver = "auto", restart, dialect = "abaqus";
+  const std::string dialect_help =
+      "Where ABAQUS and CalculiX give the same deck data different meanings, read it as abaqus (default) or "
+      "calculix means it (docs/keywords.md, section Dialects)";
   bool ascii = false, quiet = false, no_condense = false;
   double memory_mb = 0;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
@@ -217,10 +309,19 @@ int main(int argc, char** argv) {
                       "temporary directory ($TMPDIR) and read back at each solve (slower); CHOLMOD and UMFPACK "
                       "ignore it; default: no limit, everything in core")
       ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--dialect", dialect, dialect_help)
+      ->check(CLI::IsMember({"abaqus", "calculix"}, CLI::ignore_case));
   run_cmd->add_flag("--ascii", ascii, "Write ASCII instead of binary VTU (for debugging)");
   run_cmd->add_flag("-q,--quiet", quiet, "Print nothing but errors");
   auto* check_cmd = app.add_subcommand("check", "Read and validate a deck without solving it");
-  check_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
+  std::vector<std::string> check_paths;
+  check_cmd->add_option("deck", check_paths,
+                        "Input deck (.inp); with several decks or a folder (searched for .inp files), one line per "
+                        "deck and a table of what tether refused in them (keywords, procedures, parameters, values, "
+                        "element types), with counts")
+      ->required();
+  check_cmd->add_option("--dialect", dialect, dialect_help)
+      ->check(CLI::IsMember({"abaqus", "calculix"}, CLI::ignore_case));
   auto* keywords_cmd = app.add_subcommand("keywords", "Print the keyword reference (Markdown)");
 
   try {
@@ -235,8 +336,16 @@ int main(int argc, char** argv) {
       fmt::print("{}", keyword_reference_markdown());
       return kOk;
     }
-    if (*check_cmd) return check(deck);
-    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb);
+    std::transform(dialect.begin(), dialect.end(), dialect.begin(), [](unsigned char c) { return std::tolower(c); });
+    const Dialect chosen = parse_dialect(dialect).value_or(Dialect::Abaqus);  // CLI11 checked the name
+    if (*check_cmd) {
+      if (check_paths.size() == 1 && !fs::is_directory(check_paths[0])) {
+        deck = check_paths[0];
+        return check(deck, chosen);
+      }
+      return check_many(decks_of(check_paths), chosen);
+    }
+    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb, chosen);
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInput;

@@ -7,7 +7,8 @@
 
 The deck (and the files it *INCLUDEs) is copied into DIR/ccx/ and DIR/tether/
 (ccx writes fixed-name scratch files, so each job has its own directory); ccx
-runs as `ccx -i JOB`, tether as `tether run JOB.inp -o DIR/tether`, each under
+runs as `ccx -i JOB`, tether as `tether run JOB.inp -o DIR/tether --dialect calculix`
+(the deck is read with CalculiX's meanings where ABAQUS's differ), each under
 `/usr/bin/time -v` (peak memory) with a time limit. Both .dat files are parsed
 with tools/datfile.py; blocks are matched by (kind, set, time) -- all common
 times, or the last time of each when none is common -- and rows by node id
@@ -616,7 +617,8 @@ def run(args, deck, tether_deck, job, work, ccx, tether):
 
     runs = {}
     runs["ccx"] = run_timed(["timeout", str(int(args.timeout) + 5), ccx, "-i", job], ccx_dir, args.timeout, env)
-    runs["tether"] = run_timed([tether, "run", job + ".inp", "-o", tet_dir, "-q"], tet_dir, args.timeout, env)
+    runs["tether"] = run_timed([tether, "run", job + ".inp", "-o", tet_dir, "-q", "--dialect", "calculix"], tet_dir,
+                               args.timeout, env)
     failed = []
     if runs["ccx"]["rc"] != 0 or "Job finished" not in runs["ccx"]["stdout"]:
         failed.append(f"ccx failed (exit {runs['ccx']['rc']}{', timed out' if runs['ccx']['timed_out'] else ''}); "

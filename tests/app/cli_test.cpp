@@ -515,3 +515,69 @@ TEST(Cli, TerminalAndMessageLogSayEachThingOnce) {
   EXPECT_EQ(count(tty.out, "s: contact search"), 1) << tty.out;
   EXPECT_EQ(count(tty.out, "no convergence in 2 iterations"), cutbacks) << tty.out;
 }
+
+TEST(Cli, DialectIsChosenOnTheCommandLineAndNamedInTheLogs) {
+  const fs::path dir = scratch("dialect");
+  std::string deck = kGoodDeck;
+  // NLGEOM=NO after an NLGEOM step: ABAQUS keeps NLGEOM on (warning), CalculiX turns it off.
+  deck.replace(deck.find("*STEP\n"), 6, "*STEP, NLGEOM\n");
+  deck += "*STEP, NLGEOM=NO\n*STATIC\n*END STEP\n";
+  write(dir / "plate.inp", deck);
+  const auto read_file = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  for (const std::string dialect : {"abaqus", "calculix"}) {
+    const auto run = tether("run " + (dir / "plate.inp").string() + " --dialect " + dialect + " -o " +
+                            (dir / dialect).string());
+    EXPECT_EQ(run.code, 0) << run.out;
+    EXPECT_EQ(run.out.find("stays on") != std::string::npos, dialect == "abaqus") << run.out;
+    EXPECT_NE(read_file(dir / dialect / "plate.sta").find("job plate  dialect " + dialect), std::string::npos);
+    EXPECT_NE(read_file(dir / dialect / "plate.msg").find("read in the " + dialect + " dialect"), std::string::npos);
+  }
+  const auto check = tether("check --dialect CalculiX " + (dir / "plate.inp").string());
+  EXPECT_EQ(check.code, 0) << check.out;
+  EXPECT_NE(check.out.find("(dialect calculix)"), std::string::npos) << check.out;
+  const auto plain = tether("check " + (dir / "plate.inp").string());
+  EXPECT_NE(plain.out.find("(dialect abaqus)"), std::string::npos) << plain.out;
+  const auto bad = tether("check --dialect nastran " + (dir / "plate.inp").string());
+  EXPECT_EQ(bad.code, 1) << bad.out;
+  EXPECT_NE(bad.out.find("nastran"), std::string::npos) << bad.out;
+}
+
+TEST(Cli, CheckOverSeveralDecksTabulatesWhatTheyNeed) {
+  const fs::path dir = scratch("survey");
+  fs::create_directories(dir / "more");
+  write(dir / "good.inp", kGoodDeck);
+  std::string dynamic = kGoodDeck;
+  dynamic.replace(dynamic.find("*STATIC"), 7, "*DYNAMIC");
+  write(dir / "more" / "dynamic.inp", dynamic);
+  std::string needs = kGoodDeck;
+  needs.replace(needs.find("TYPE=CPE4"), 9, "TYPE=C3D8");
+  needs.replace(needs.find("*NSET, NSET=LEFT"), 16, "*NSET, NSET=LEFT, UNSORTED");
+  needs.replace(needs.find("*STATIC"), 7, "*DYNAMIC");
+  write(dir / "needs.inp", needs);
+  std::string broken = kGoodDeck;
+  broken.replace(broken.find("1000, 0.3"), 9, "1000, 0.3x");
+  write(dir / "broken.inp", broken);
+  const auto r = tether("check " + (dir / "good.inp").string() + " " + (dir / "needs.inp").string() + " " +
+                        (dir / "broken.inp").string() + " " + (dir / "more").string());
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("good.inp: OK"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("needs.inp: refused: *DYNAMIC, *NSET, UNSORTED, C3D8"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("broken.inp:14: error: bad number"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("4 deck(s): 1 read, 2 refused by the keyword table, 1 with other errors"), std::string::npos)
+      << r.out;
+  // The table: *DYNAMIC in two decks first, then the rest once each.
+  const auto row = r.out.find("procedure        *DYNAMIC");
+  ASSERT_NE(row, std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("     2           2", row), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("element type     C3D8"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("parameter        *NSET, UNSORTED"), std::string::npos) << r.out;
+  EXPECT_LT(row, r.out.find("element type     C3D8")) << r.out;
+  const auto all_good = tether("check " + (dir / "good.inp").string() + " " + (dir / "good.inp").string());
+  EXPECT_EQ(all_good.code, 0) << all_good.out;
+  const auto missing = tether("check " + (dir / "good.inp").string() + " " + (dir / "nope").string());
+  EXPECT_EQ(missing.code, 1) << missing.out;
+  EXPECT_NE(missing.out.find("no such deck or folder"), std::string::npos) << missing.out;
+}

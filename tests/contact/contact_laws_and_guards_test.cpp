@@ -36,6 +36,20 @@ TEST(PressureOverclosureLaw, ValuesAndSlopes) {
   EXPECT_THROW(contact_pressure(hard(), 0.1), std::invalid_argument);
 }
 
+TEST(PressureOverclosureLaw, CalculixExponentialIsOnePercentOfP0AtTheClearanceC0) {
+  PressureOverclosure e = exponential_law();  // c0 = 0.2, p0 = 3
+  e.meaning = Dialect::Calculix;
+  EXPECT_NEAR(contact_pressure(e, 0).p, 3.0, 1e-14);
+  EXPECT_NEAR(contact_pressure(e, -0.2).p, 0.03, 1e-15);  // p0 exp(-ln 100)
+  EXPECT_NEAR(contact_pressure(e, -0.4).p, 3e-4, 1e-16);  // never zero: no cut-off
+  EXPECT_NEAR(contact_pressure(e, 0.2).p, 300, 1e-11);
+  for (double h : {-0.5, -0.1, 0.0, 0.07}) {
+    const double d = 1e-7;
+    const double fd = (contact_pressure(e, h + d).p - contact_pressure(e, h - d).p) / (2 * d);
+    EXPECT_NEAR(contact_pressure(e, h).dp_dh, fd, 1e-6 * std::max(1.0, std::abs(fd))) << h;
+  }
+}
+
 
 // Re-pairing guard: over a concave kink (node 2 pulled down to y = -0.2, both
 // faces sloping 0.1 towards it) a slave that goes A -> B -> A -> B within one

@@ -70,6 +70,12 @@ TEST(DeckErrors, BadNumberNamesTheToken) {
   expect_deck_error_at(replaced(kDeck, "2, 1, 0\n", "2, 1.0.0, 0\n"), "1.0.0", {"bad number '1.0.0'", "x coordinate"});
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, abc"), "abc", {"bad number 'abc'"});
   expect_deck_error_at(replaced(kDeck, "RIGHT, 1, 10", "RIGHT, 1, 1e999"), "1e999", {"bad number '1e999'"});
+  // Control bytes are escaped (a NUL would end the message) and long tokens cut,
+  // so the message still says what was expected.
+  expect_deck_error_at(replaced(kDeck, "2, 1, 0\n", std::string("2, \0\x01z, 0\n", 10)), "z, 0",
+                       {"bad number '\\x00\\x01z' for x coordinate: expected a real number"});
+  expect_deck_error_at(replaced(kDeck, "2, 1, 0\n", "2, " + std::string(100, '7') + "x, 0\n"), "7777",
+                       {"bad number '" + std::string(40, '7') + "... (101 characters)' for x coordinate"});
 }
 
 TEST(DeckErrors, NodeLabelsMustBePositiveAndFitInt) {
@@ -85,7 +91,7 @@ TEST(DeckErrors, DuplicateAndMissingNodes) {
                        {"element 2 references undefined node 66"});
   expect_deck_error_at(replaced(kDeck, "LEFT, 1, 2", "44, 1, 2"), "44, 1, 2", {"undefined node 44"});
   expect_deck_error_at(replaced(kDeck, "1, 4\n*NSET", "1, 4, 9\n*NSET"), "1, 4, 9", {"undefined node 9"});
-  expect_deck_error_at(replaced(kDeck, "1, 0, 0\n", "1, 0\n"), "1, 0\n", {"expected `label, x, y[, z]`"});
+  expect_deck_error_at(replaced(kDeck, "1, 0, 0\n", "1, 0, 0, 0, 7\n"), "1, 0, 0, 0, 7", {"expected `label, x, y[, z]`"});
 }
 
 TEST(DeckErrors, WrongNodeCountForTheType) {
@@ -189,7 +195,9 @@ TEST(DeckErrors, ElasticConstantsOutOfRange) {
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "-5, 0.3"), "-5, 0.3", {"E > 0"});
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3, 20\n100e3, 0.3, 300"), "100e3, 0.3, 300",
                        {"more than one data line", "temperature"});
-  expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3, 20"), "200e3, 0.3, 20", {"temperature"});
+  expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3, hot"), "200e3, 0.3, hot", {"temperature"});
+  expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3, 20, 1"), "200e3, 0.3, 20, 1",
+                       {"expected `E, nu`[, temperature]"});
   expect_deck_error_at(replaced(kDeck, "*ELASTIC\n", "*ELASTIC\n*DENSITY\n"), "*ELASTIC",
                        {"*ELASTIC needs a data line", "`E, nu`"});
 }

@@ -54,7 +54,7 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
   setup.smoothing = data.smoothing;
   if (setup.law.law == PressureOverclosure::Law::Linear && setup.law.sigma_inf > 0)
     throw ModelError("PRESSURE-OVERCLOSURE=LINEAR with a tension sigma_inf > 0 (*SURFACE BEHAVIOR at " +
-                     interaction->where.str() + ") is not modelled by tether; give 'K' or 'K, 0, c0'");
+                     interaction->where.str() + ") is CalculiX's law, which tether does not model; ABAQUS's LINEAR is 'K' alone");
   if (setup.friction && setup.friction->mu > 0 && setup.friction->stick_slope > 0 && setup.friction->elastic_slip > 0)
     throw ModelError("*FRICTION of " + interaction->name + " gives both a stick slope and ELASTIC SLIP; give one");
 

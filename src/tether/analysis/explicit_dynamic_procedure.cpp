@@ -139,7 +139,7 @@ void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
     scatter(*el, local_.residual, 1, residual_);
   }
   external_ = cloads_;
-  for (const auto& p : system_.pressures()) {
+  for (const Contribution* p : system_.load_contributions()) {  // pressures and body forces
     local_.reset(static_cast<Eigen::Index>(p->dofs().size()));
     p->evaluate(s, local_, false);
     scatter(*p, local_.residual, -1, external_);

@@ -128,7 +128,7 @@ Eigen::VectorXd ImplicitDynamicProcedure::inertia_force(const EvaluationState& s
 Eigen::VectorXd ImplicitDynamicProcedure::work_force(const EvaluationState& s, const Eigen::VectorXd& reaction) const {
   Eigen::VectorXd force = cloads_;
   LocalSystem local;
-  for (const auto& p : system_.pressures()) {
+  for (const Contribution* p : system_.load_contributions()) {  // pressures and body forces
     local.reset(static_cast<Eigen::Index>(p->dofs().size()));
     p->evaluate(s, local, false);
     scatter(*p, -local.residual, force);

@@ -1,6 +1,7 @@
 #include "tether/analysis/step_system.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/constraint_checks.hpp"
@@ -18,6 +19,13 @@ namespace {
 constexpr int kMaxCondensedEquations = 3000;
 constexpr int kMinCondensationRatio = 20;
 
+/// Index of `step` in model.steps (a StepSystem is built for a step of its model).
+int step_index(const Model& model, const Step& step) {
+  for (std::size_t k = 0; k < model.steps.size(); ++k)
+    if (&model.steps[k] == &step) return static_cast<int>(k);
+  throw std::logic_error("StepSystem: the step is not one of the model's steps");
+}
+
 }  // namespace
 
 StepSystem::StepSystem(const Discretization& discretization, const Step& step, StepLoads loads,
@@ -26,6 +34,7 @@ StepSystem::StepSystem(const Discretization& discretization, const Step& step, S
     : discretization_(discretization), step_(step), settings_(settings), loads_(std::move(loads)) {
   pressures_ = discretization_.make_pressures(loads_.pressures);
   make_inertia();
+  body_forces_ = std::make_unique<StepBodyForces>(discretization_, step_index(discretization_.model(), step_));
   gather_contributions();
   const std::vector<bool> prescribed = prescribed_dofs();
   if (unused_nodes_ > 0 && message)
@@ -60,6 +69,7 @@ void StepSystem::apply_loads(const IncrementTimes& t, Eigen::VectorXd& u, Eigen:
   forces.setZero(discretization_.dofs().n_dofs());
   for (const auto& [dof, v] : loads_.forces) forces[dof] += magnitude(v);
   for (std::size_t k = 0; k < pressures_.size(); ++k) pressures_[k]->set_pressure(magnitude(loads_.pressure_values[k]));
+  body_forces_->set_time(t.step_time, t.period, t.total_time);
 }
 
 void StepSystem::make_inertia() {
@@ -94,6 +104,7 @@ void StepSystem::gather_contributions() {
   for (const auto& p : pressures_) contributions_.push_back(p.get()), load_contributions_.push_back(p.get());
   if (step_.procedure == StepProcedure::ImplicitDynamic)
     for (const auto& m : inertia_) contributions_.push_back(m.get());
+  for (const auto& b : body_forces_->forces()) contributions_.push_back(b.get()), load_contributions_.push_back(b.get());
 
   const auto linear = [&](const Contribution* c) { return c->linear_in_u(step_.nlgeom); };
   const auto contact_begin = contributions_.begin() + static_cast<std::ptrdiff_t>(n_bulk);

@@ -19,6 +19,7 @@
 
 #include "tether/analysis/discretization.hpp"
 #include "tether/analysis/increment_controller.hpp"
+#include "tether/analysis/step_body_forces.hpp"
 #include "tether/analysis/step_loads.hpp"
 #include "tether/assembly/assembler.hpp"
 #include "tether/elements/element_inertia.hpp"
@@ -58,11 +59,14 @@ class StepSystem {
   [[nodiscard]] const StepLoads& loads() const { return loads_; }
   /// One per loads().pressures, in that order (magnitudes set by the procedure).
   [[nodiscard]] const std::vector<std::unique_ptr<FacePressure>>& pressures() const { return pressures_; }
+  /// The step's body loads (*DLOAD GRAV, CENTRIF; magnitudes set by the procedure with set_time).
+  [[nodiscard]] StepBodyForces& body_forces() { return *body_forces_; }
+  [[nodiscard]] const StepBodyForces& body_forces() const { return *body_forces_; }
   /// Everything assembled, in assembly order: elements, constraints, user
-  /// constraints, each contact pair followed by its nodes, pressures, and in
+  /// constraints, each contact pair followed by its nodes, pressures, body forces, and in
   /// an implicit dynamic step the elements' inertia.
   [[nodiscard]] const std::vector<Contribution*>& contributions() const { return contributions_; }
-  /// The load contributions (the pressures): they size Newton's force scale.
+  /// The load contributions (pressures, body forces): they size Newton's force scale.
   [[nodiscard]] const std::vector<const Contribution*>& load_contributions() const { return load_contributions_; }
 
   /// Dynamic steps: one per element, in the order of the discretization's
@@ -111,6 +115,7 @@ class StepSystem {
   std::vector<std::unique_ptr<FacePressure>> pressures_;
   NewmarkIncrement newmark_;
   std::vector<std::unique_ptr<ElementInertia>> inertia_;
+  std::unique_ptr<StepBodyForces> body_forces_;
   std::vector<Contribution*> contributions_;
   std::vector<const Contribution*> load_contributions_;
   std::unique_ptr<Assembler> assembler_;

@@ -16,6 +16,11 @@ ContactPressure contact_pressure(const PressureOverclosure& law, double h) {
       return {law.stiffness * x, law.stiffness};
     }
     case PressureOverclosure::Law::Exponential: {
+      if (law.meaning == Dialect::Calculix) {  // p = p0 exp(beta h), beta = ln(100) / c0: no cut-off
+        const double beta = std::log(100.0) / law.c0;
+        const double p = law.p0 * std::exp(beta * h);
+        return {p, beta * p};
+      }
       const double x = h / law.c0 + 1;  // 0 at h = -c0, 1 at h = 0
       if (x <= 0) return {};
       const double scale = law.p0 / (std::numbers::e - 1);

@@ -6,11 +6,12 @@
 /// contact pressure p(h) [force/area] >= 0. HARD contact has no function: it
 /// is enforced exactly by a multiplier (contact_node.hpp).
 ///
-/// - LINEAR (CalculiX `K, σ∞, c0`): p = K (h + c0) for h >= -c0, else 0
-///   (c0 = 0 unless given). σ∞ (tension at large clearance) is not modelled:
-///   a nonzero σ∞ is refused where the pair is built.
+/// - LINEAR (ABAQUS `K`): p = K h for h >= 0, else 0 (c0 = 0: the reader
+///   refuses CalculiX's σ∞ and c0, whose law is not modelled).
 /// - EXPONENTIAL (ABAQUS `c0, p0`): p = p0/(e - 1) (h/c0 + 1)(exp(h/c0 + 1) - 1)
 ///   for h > -c0, else 0; p(0) = p0, and p = p' = 0 at h = -c0 (C¹).
+///   With CalculiX's meaning (dialect calculix): p = p0 exp(ln(100) h / c0),
+///   positive at every clearance (1 % of p0 at h = -c0).
 /// - TABULAR: piecewise linear through (p_i, h_i); p = 0 left of h_1 when
 ///   p_1 = 0, otherwise extended with the first slope; extended with the last
 ///   slope right of the table.

@@ -72,6 +72,10 @@ void handle_surface_behavior(DeckState& state, const KeywordBlock& block, const 
       throw InputError(block.where, "ENFORCEMENT=" + method + " needs PENALTY=rho > 0 (force per unit overclosure)");
     if (params.given("EPSILON") && e.method != Enforcement::Method::Lagrange)
       throw InputError(block.where, "EPSILON applies to ENFORCEMENT=LAGRANGE only");
+    if (state.model.dialect == Dialect::Calculix && e.method == Enforcement::Method::Lagrange)
+      state.warn(block.where, "PRESSURE-OVERCLOSURE=HARD is enforced exactly (Lagrange multipliers) in the calculix "
+                              "dialect too; CalculiX itself turns it into its LINEAR penalty law (K = 50 E, sigma_inf "
+                              "= E/70000), so its results show a small penetration that tether's do not");
     return;
   }
   if (enforcement_given)
@@ -80,12 +84,18 @@ void handle_surface_behavior(DeckState& state, const KeywordBlock& block, const 
   if (rows.empty()) throw InputError(block.where, "PRESSURE-OVERCLOSURE=" + law + " needs a data line");
   if (law == "LINEAR") {
     b.law = PressureOverclosure::Law::Linear;
+    if (state.model.dialect == Dialect::Calculix)
+      throw InputError(block.where, "PRESSURE-OVERCLOSURE=LINEAR means CalculiX's law in the calculix dialect: "
+                                    "p = K h (1/2 + atan(h/eps)/pi), eps = pi sigma_inf/K, a tension up to sigma_inf "
+                                    "(E/70000 when not given) at open gaps within c0 sqrt(slave area), which tether "
+                                    "does not model yet; read the deck with --dialect abaqus for ABAQUS's p = K h");
     const auto& r = rows.front();
     b.stiffness = r.at(0);
-    b.sigma_inf = r.size() > 1 ? r[1] : 0.0;
-    b.c0 = r.size() > 2 ? r[2] : 0.0;
+    if (r.size() > 1)
+      throw InputError(at, "LINEAR takes the slope K only in the abaqus dialect; sigma_inf and c0 are CalculiX's "
+                           "fields (a smooth law with tension at open gaps, not an offset), which tether does not "
+                           "model: give `K`");
     if (!(b.stiffness > 0)) throw InputError(at, "LINEAR: the slope K must be > 0 (pressure per unit overclosure)");
-    if (b.sigma_inf < 0 || b.c0 < 0) throw InputError(at, "LINEAR: sigma_inf and c0 must be >= 0");
   } else if (law == "EXPONENTIAL") {
     b.law = PressureOverclosure::Law::Exponential;
     const auto& r = rows.front();
@@ -93,6 +103,7 @@ void handle_surface_behavior(DeckState& state, const KeywordBlock& block, const 
                                            "at zero clearance)");
     b.c0 = r[0];
     b.p0 = r[1];
+    b.meaning = state.model.dialect;
     if (!(b.c0 > 0) || !(b.p0 > 0)) throw InputError(at, "EXPONENTIAL: c0 and p0 must be > 0");
   } else {  // TABULAR
     b.law = PressureOverclosure::Law::Tabular;
@@ -134,7 +145,7 @@ void handle_contact_pair(DeckState& state, const KeywordBlock& block, const Para
                                  [&](const SurfaceInteraction& s) { return s.name == interaction; });
   if (!known)
     throw InputError(block.where, "undefined INTERACTION=" + interaction +
-                                      ": expected the name of a *SURFACE INTERACTION defined before");
+                                      ": expected the name of a *SURFACE INTERACTION");
   const std::string type = params.name("TYPE");
   if (type == "SURFACE TO SURFACE")
     throw InputError(block.where, "TYPE=SURFACE TO SURFACE is not supported: tether's contact is node to surface "

@@ -6,6 +6,7 @@
 #include "tether/io/keyword_table.hpp"
 #include "tether/io/line_reader.hpp"
 #include "tether/io/model_checks.hpp"
+#include "tether/io/reading_order.hpp"
 
 namespace tether {
 
@@ -15,20 +16,46 @@ using deck::DeckState;
 using deck::KeywordBlock;
 using deck::KeywordSpec;
 
-bool allowed_here(const DeckState& s, unsigned where) {
-  return ((where & deck::kMaterial) && s.material >= 0) || ((where & deck::kInteraction) && s.interaction >= 0) ||
+/// Where the reader stands in the deck, in deck order: what decides whether a
+/// keyword may appear where it is written (the handlers run later, in
+/// reading order, see reading_order.hpp).
+struct DeckPosition {
+  bool material = false;     ///< directly after *MATERIAL or a material option
+  bool interaction = false;  ///< directly after *SURFACE INTERACTION or one of its options
+  bool in_step = false;
+  bool seen_step = false;
+  std::string step_name;
+  SourceLocation step_where;
+  int n_steps = 0;
+
+  /// Moves past `block` (already checked).
+  void advance(const KeywordSpec& spec, const KeywordBlock& block, const deck::ParameterValues& params) {
+    material = block.keyword == "MATERIAL" || (material && (spec.where & deck::kMaterial));
+    interaction = block.keyword == "SURFACE INTERACTION" || (interaction && (spec.where & deck::kInteraction));
+    if (block.keyword == "STEP") {
+      in_step = seen_step = true;
+      ++n_steps;
+      step_name = params.given("NAME") ? params.text("NAME") : "Step-" + std::to_string(n_steps);
+      step_where = block.where;
+    }
+    if (block.keyword == "END STEP") in_step = false;
+  }
+};
+
+bool allowed_here(const DeckPosition& s, unsigned where) {
+  return ((where & deck::kMaterial) && s.material) || ((where & deck::kInteraction) && s.interaction) ||
          ((where & deck::kModelData) && !s.seen_step) ||
          ((where & deck::kStep) && s.in_step) || ((where & deck::kBetweenSteps) && s.seen_step && !s.in_step);
 }
 
-std::string position_text(DeckState& s) {
-  if (s.in_step) return "inside step " + s.step().name + " (started at " + s.step().where.str() + ")";
+std::string position_text(const DeckPosition& s) {
+  if (s.in_step) return "inside step " + s.step_name + " (started at " + s.step_where.str() + ")";
   if (s.seen_step) return "between steps";
-  if (s.material >= 0) return "in model data after *MATERIAL";
+  if (s.material) return "in model data after *MATERIAL";
   return "in model data";
 }
 
-[[noreturn]] void unknown_keyword(const DeckState& s, const KeywordBlock& block) {
+[[noreturn]] void unknown_keyword(const DeckPosition& s, const KeywordBlock& block) {
   std::string allowed;
   for (const KeywordSpec& k : deck::keyword_table())
     if (k.handler && allowed_here(s, k.where)) allowed += (allowed.empty() ? "*" : ", *") + std::string(k.name);
@@ -36,7 +63,7 @@ std::string position_text(DeckState& s) {
                                     allowed + " (docs/keywords.md lists all)");
 }
 
-void check_position(DeckState& s, const KeywordSpec& spec, const KeywordBlock& block) {
+void check_position(const DeckPosition& s, const KeywordSpec& spec, const KeywordBlock& block) {
   if (allowed_here(s, spec.where)) return;
   std::string hint;
   if (s.in_step && !(spec.where & deck::kStep)) hint = "; is *END STEP missing?";
@@ -48,26 +75,58 @@ void check_position(DeckState& s, const KeywordSpec& spec, const KeywordBlock& b
                                     ": it belongs to " + deck::context_text(spec.where) + hint);
 }
 
+/// A lone `*` line: CalculiX skips it with a warning, and so does tether; data
+/// lines under it would be dropped, so they are an error.
+bool skip_lone_star(const DeckState& state, const KeywordBlock& block) {
+  if (!block.keyword.empty()) return false;
+  if (!block.data.empty())
+    throw InputError(block.data.front().where(), "data line under a lone '*' line: expected a keyword name after "
+                                                 "the '*' (e.g. *NODE) or no data lines");
+  state.warn(block.where, "a lone '*' line is ignored (as CalculiX does)");
+  return true;
+}
+
+/// Every keyword known, supported, allowed where it is written and with valid
+/// parameters, checked in deck order; returns the specs (nullptr: skipped).
+std::vector<const KeywordSpec*> check_blocks(const DeckState& state, const std::vector<KeywordBlock>& blocks) {
+  std::vector<const KeywordSpec*> specs;
+  DeckPosition position;
+  for (const KeywordBlock& block : blocks) {
+    if (skip_lone_star(state, block)) {
+      specs.push_back(nullptr);
+      continue;
+    }
+    const KeywordSpec* spec = deck::lookup_keyword(block.keyword);
+    if (!spec) unknown_keyword(position, block);
+    if (!spec->handler)
+      throw InputError(block.where, "*" + block.keyword + " is not supported yet: " + std::string(spec->not_supported));
+    check_position(position, *spec, block);
+    position.advance(*spec, block, deck::ParameterValues(*spec, block));
+    specs.push_back(spec);
+  }
+  if (position.in_step)
+    throw InputError(position.step_where, "step " + position.step_name +
+                                              " is not closed: expected *END STEP before the end of the deck");
+  return specs;
+}
+
 Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& deck_path,
-                  std::vector<DeckWarning>* warnings) {
+                  std::vector<DeckWarning>* warnings, Dialect dialect) {
   if (blocks.empty()) throw InputError({deck_path, 0}, "the deck is empty: expected keyword lines such as *NODE");
   DeckState state;
   state.warnings = warnings;
   state.model.deck_path = deck_path;
-  for (const KeywordBlock& block : blocks) {
-    const KeywordSpec* spec = deck::lookup_keyword(block.keyword);
-    if (!spec) unknown_keyword(state, block);
-    if (!spec->handler)
-      throw InputError(block.where, "*" + block.keyword + " is not supported yet: " + std::string(spec->not_supported));
-    check_position(state, *spec, block);
+  state.model.dialect = dialect;
+  const std::vector<const KeywordSpec*> specs = check_blocks(state, blocks);
+  for (const std::size_t i : deck::reading_order(blocks)) {
+    const KeywordSpec* spec = specs[i];
+    if (!spec) continue;
+    const KeywordBlock& block = blocks[i];
     const deck::ParameterValues params(*spec, block);
     if (!(spec->where & deck::kMaterial)) state.material = -1;
     if (!(spec->where & deck::kInteraction)) state.interaction = -1;
     spec->handler(state, block, params);
   }
-  if (state.in_step)
-    throw InputError(state.step().where, "step " + state.step().name +
-                                             " is not closed: expected *END STEP before the end of the deck");
   if (state.model.steps.empty())
     state.warn({deck_path, 0}, "the deck has no *STEP: nothing will be solved");
   deck::check_model(state);
@@ -78,12 +137,13 @@ Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& de
 
 }  // namespace
 
-Model read_deck(const std::string& path, std::vector<DeckWarning>* warnings) {
-  return read_blocks(deck::lex_deck_file(path), path, warnings);
+Model read_deck(const std::string& path, std::vector<DeckWarning>* warnings, Dialect dialect) {
+  return read_blocks(deck::lex_deck_file(path), path, warnings, dialect);
 }
 
-Model read_deck_string(const std::string& text, const std::string& name, std::vector<DeckWarning>* warnings) {
-  return read_blocks(deck::lex_deck_text(text, name, ""), name, warnings);
+Model read_deck_string(const std::string& text, const std::string& name, std::vector<DeckWarning>* warnings,
+                       Dialect dialect) {
+  return read_blocks(deck::lex_deck_text(text, name, ""), name, warnings, dialect);
 }
 
 }  // namespace tether

@@ -23,14 +23,16 @@ struct DeckWarning {
 };
 
 /// Reads and validates the deck at `path` (includes resolved relative to the
-/// including file). Throws InputError (file:line + what was expected) on any
-/// error. Warnings are appended to `*warnings` when it is given.
-Model read_deck(const std::string& path, std::vector<DeckWarning>* warnings = nullptr);
+/// including file) with the meanings of `dialect` where ABAQUS and CalculiX
+/// differ (Model::dialect records it). Throws InputError (file:line + what was
+/// expected) on any error. Warnings are appended to `*warnings` when it is given.
+Model read_deck(const std::string& path, std::vector<DeckWarning>* warnings = nullptr,
+                Dialect dialect = Dialect::Abaqus);
 
 /// Same as read_deck(), from a string; `name` is the file name used in
 /// messages and `*INCLUDE` paths are relative to the current directory.
 Model read_deck_string(const std::string& text, const std::string& name,
-                       std::vector<DeckWarning>* warnings = nullptr);
+                       std::vector<DeckWarning>* warnings = nullptr, Dialect dialect = Dialect::Abaqus);
 
 /// Markdown reference of every keyword and parameter the reader knows,
 /// generated from the reader's own declaration table (docs/keywords.md).

@@ -29,7 +29,8 @@ const std::vector<int>& DeckState::node_set(std::string_view name, const SourceL
   const auto it = model.node_sets.find(to_upper(name));
   if (it == model.node_sets.end())
     throw InputError(where, "undefined node set '" + std::string(name) +
-                                "': expected a node label or a set defined earlier by *NSET or NSET=");
+                                "': expected a node label or a set defined by *NSET or NSET= (a set named inside "
+                                "another set comes first)");
   return it->second;
 }
 
@@ -37,7 +38,8 @@ const std::vector<int>& DeckState::element_set(std::string_view name, const Sour
   const auto it = model.element_sets.find(to_upper(name));
   if (it == model.element_sets.end())
     throw InputError(where, "undefined element set '" + std::string(name) +
-                                "': expected an element label or a set defined earlier by *ELSET or ELSET=");
+                                "': expected an element label or a set defined by *ELSET or ELSET= (a set named "
+                                "inside another set comes first)");
   return it->second;
 }
 
@@ -57,7 +59,7 @@ int DeckState::amplitude(std::string_view name, const SourceLocation& where) con
   for (std::size_t i = 0; i < model.amplitudes.size(); ++i)
     if (model.amplitudes[i].name == key) return static_cast<int>(i);
   throw InputError(where, "undefined amplitude '" + std::string(name) +
-                              "': expected the name of an *AMPLITUDE defined earlier in the deck");
+                              "': expected the name of an *AMPLITUDE in the model data");
 }
 
 std::vector<std::string> data_fields(const DataLine& line, std::size_t min_fields, std::size_t max_fields,

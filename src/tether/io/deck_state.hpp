@@ -30,6 +30,7 @@ struct DeckState {
   std::vector<ConcentratedLoad> cloads;
   std::vector<PressureLoad> dloads;   ///< from *DLOAD
   std::vector<PressureLoad> dsloads;  ///< from *DSLOAD
+  std::vector<BodyLoad> body_loads;   ///< from *DLOAD GRAV / CENTRIF
   Controls controls;                  ///< carried from step to step until *CONTROLS, RESET
   int restart_frequency = 0;          ///< *RESTART, WRITE in force (0 = none), carried to later steps
   /// Kinds ("BOUNDARY", "CLOAD", ...) already cleared by OP=NEW in the current step.

@@ -74,7 +74,8 @@ std::vector<KeywordSpec> build_table() {
       {"HEADING", kModelData, "Title of the analysis; the data lines are kept as the model heading.",
        "free text lines", {}, handle_heading, ""},
       {"NODE", kModelData, "Defines nodes by label and coordinates.",
-       "`label, x, y[, z]` ((r, z) for axisymmetric models; a non-zero z is ignored with a warning)",
+       "`label, x, y[, z]` ((r, z) for axisymmetric models; a non-zero z is ignored with a warning; empty or "
+       "missing coordinates are 0, as in CalculiX)",
        {name("NSET", "Also add the nodes to this node set.")}, handle_node, ""},
       {"ELEMENT", kModelData, "Defines 2D continuum elements of one type.",
        "`label, n1, n2, ...` in ABAQUS node order; a line ending with ',' continues on the next",
@@ -99,10 +100,11 @@ std::vector<KeywordSpec> build_table() {
       {"MATERIAL", kModelData, "Starts a material; the material options (*ELASTIC, ...) follow it.", "",
        {name("NAME", "Name of the material.", true)}, handle_material, ""},
       {"ELASTIC", kMaterial, "Isotropic linear elasticity (small strain; St. Venant-Kirchhoff under NLGEOM).",
-       "`E, nu` with E > 0 and -1 < nu < 0.5",
+       "one line `E, nu[, temperature]` with E > 0 and -1 < nu < 0.5 (a single line holds at every temperature; "
+       "more lines, a temperature table, are refused)",
        {choice("TYPE", "ISOTROPIC", {"ISOTROPIC"}, "Only isotropic elasticity is supported.")}, handle_elastic,
        ""},
-      {"HYPERELASTIC", kMaterial, "Compressible neo-Hookean hyperelasticity.", "`C10, D1` with C10 > 0, D1 > 0",
+      {"HYPERELASTIC", kMaterial, "Compressible neo-Hookean hyperelasticity.", "`C10, D1[, temperature]` with C10 > 0, D1 > 0",
        {flag("NEO HOOKE", "Neo-Hookean strain energy (required; the only model supported).")},
        handle_hyperelastic, ""},
       {"PLASTIC", kMaterial,
@@ -134,7 +136,8 @@ std::vector<KeywordSpec> build_table() {
        "Mass density, for the element masses (consistent or lumped; docs/theory/elements.md, section Mass). "
        "Optional: static steps do not use it; asking for the mass of an element whose material has none is an "
        "error naming the material.",
-       "`rho` with rho > 0 [mass/volume]", {}, handle_density, ""},
+       "one line `rho[, temperature]` with rho > 0 [mass/volume] (a single line holds at every temperature)", {},
+       handle_density, ""},
       {"DAMPING", kMaterial,
        "Rayleigh damping of the material in dynamic steps: C = ALPHA M + BETA K (K the element's tangent).",
        "",
@@ -145,7 +148,8 @@ std::vector<KeywordSpec> build_table() {
       {"SOLID SECTION", kModelData, "Assigns a material (and thickness) to an element set.",
        "optional `thickness` (default 1; ignored for axisymmetric elements)",
        {name("ELSET", "Element set the section applies to.", true),
-        name("MATERIAL", "Name of the material.", true)},
+        name("MATERIAL", "Name of the material.", true),
+        real("OFFSET", "0", "Accepted for CalculiX compatibility: only 0 (a solid section has no offset).")},
        handle_solid_section, ""},
       {"AMPLITUDE", kModelData | kStep, "Piecewise-linear time function, constant beyond its ends.",
        "pairs `t, a` (any number per line, over as many lines as needed), times strictly increasing",
@@ -164,8 +168,16 @@ std::vector<KeywordSpec> build_table() {
        handle_boundary, ""},
       {"CLOAD", kAnyStep, "Concentrated nodal forces.", "`node_or_nset, dof (1 or 2), magnitude`",
        {amplitude_param(), op_param()}, handle_cload, ""},
-      {"DLOAD", kAnyStep, "Pressure on element faces (positive pushes into the face).",
-       "`element_or_elset, P1..P4, magnitude` (Pn = pressure on face Sn)",
+      {"DLOAD", kAnyStep,
+       "Pressure on element faces (positive pushes into the face), and body loads per unit mass: gravity (GRAV) "
+       "and centrifugal (CENTRIF), which need the material's *DENSITY. Body loads act on the reference volume "
+       "(exact under NLGEOM too; a centrifugal load then follows the current positions). A later GRAV or CENTRIF "
+       "on the same element replaces the earlier one; a GRAV in another direction on an element that already has "
+       "one is refused (CalculiX adds the two, ABAQUS replaces).",
+       "`element_or_elset, P1..P4, magnitude` (Pn = pressure on face Sn); `element_or_elset, GRAV, g, dx, dy[, dz]` "
+       "(g [length/time^2] along the direction (dx, dy), normalized; dz must be 0); `element_or_elset, CENTRIF, "
+       "omega^2, px, py, pz, ax, ay, az` (omega^2 [1/time^2] >= 0, a point on the rotation axis and its "
+       "direction: the z axis for plane elements, the symmetry axis `0, y, 0` / `0, 1, 0` for axisymmetric ones)",
        {amplitude_param(), op_param()}, handle_dload, ""},
       {"DSLOAD", kAnyStep, "Pressure on an element-face surface (positive pushes into the face).",
        "`surface, P, magnitude`", {amplitude_param(), op_param()}, handle_dsload, ""},
@@ -328,10 +340,12 @@ std::vector<KeywordSpec> build_table() {
       {"SURFACE INTERACTION", kModelData, "Starts a contact property; *SURFACE BEHAVIOR and *FRICTION follow it.", "",
        {name("NAME", "Name of the interaction.", true)}, handle_surface_interaction, ""},
       {"SURFACE BEHAVIOR", kInteraction, "Pressure-overclosure law of the interaction (default HARD).",
-       "HARD: none; LINEAR: `K[, sigma_inf, c0]` (CalculiX); EXPONENTIAL: `c0, p0`; TABULAR: pairs `pressure, "
+       "HARD: none; LINEAR: `K` (abaqus dialect: p = K h; CalculiX's `K, sigma_inf, c0` law is refused); "
+       "EXPONENTIAL: `c0, p0` (ABAQUS's or CalculiX's function, by dialect); TABULAR: pairs `pressure, "
        "overclosure` with overclosure increasing",
        {{"PRESSURE-OVERCLOSURE", PT::Choice, "HARD", {"HARD", "LINEAR", "EXPONENTIAL", "TABULAR"}, false, "",
-         "HARD contact is enforced exactly (by multipliers, not CalculiX's K = 50 E penalty)."},
+         "HARD contact is enforced exactly (by multipliers, not CalculiX's K = 50 E penalty) in both dialects; the "
+         "calculix dialect says so in a warning."},
         choice("ENFORCEMENT", "LAGRANGE", {"LAGRANGE", "PENALTY", "AUGMENTED"},
                "tether extension, HARD only: LAGRANGE multipliers (exact; regularised with EPSILON), PENALTY "
                "(N = PENALTY x overclosure) or AUGMENTED Lagrangian (penalty plus Uzawa updates until the largest "

@@ -36,6 +36,7 @@ KeywordBlock parse_keyword_line(std::string_view text, SourceLocation where) {
   const DataFields split = split_data_line(trim(text).substr(1));
   KeywordBlock block;
   block.where = std::move(where);
+  if (split.fields.size() == 1 && split.fields[0].empty()) return block;  // a lone '*': the reader skips it
   if (split.fields.empty() || split.fields[0].empty())
     throw InputError(block.where, "empty keyword: expected a keyword name after '*', e.g. *NODE");
   block.keyword = normalize_name(split.fields[0]);

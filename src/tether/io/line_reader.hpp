@@ -34,7 +34,7 @@ struct DataLine {
 
 /// A keyword line (continuations joined) and the data lines that follow it.
 struct KeywordBlock {
-  std::string keyword;               ///< upper case without '*', inner blanks collapsed: "SOLID SECTION"
+  std::string keyword;               ///< upper case without '*', inner blanks collapsed: "SOLID SECTION"; empty for a lone '*' line
   std::vector<Parameter> parameters; ///< in the order written
   SourceLocation where;              ///< the keyword line (its first line)
   std::vector<DataLine> data;

@@ -1,5 +1,6 @@
 // *AMPLITUDE, *BOUNDARY, *CLOAD, *DLOAD, *DSLOAD and the OP=MOD/NEW bookkeeping.
 #include <algorithm>
+#include <cmath>
 #include <unordered_map>
 
 #include "tether/io/deck_state.hpp"
@@ -10,29 +11,38 @@ namespace tether::deck {
 
 namespace {
 
-/// Merges `added` into the list in force: OP=NEW (once per step) clears what
-/// was inherited, then entries with the same key are replaced, others appended.
-template <class T, class KeyFn>
+/// Merges `added` into the list in force: OP=NEW (once per step and `kind`,
+/// default the keyword) clears what was inherited, then entries with the same
+/// key are replaced (after `check_replace(old, new)`, which may throw), others appended.
+template <class T, class KeyFn, class CheckFn>
 void merge(DeckState& state, std::vector<T>& list, std::vector<T> added, const KeywordBlock& block,
-           const ParameterValues& params, KeyFn key) {
+           const ParameterValues& params, KeyFn key, CheckFn check_replace, const std::string& kind) {
   if (params.name("OP") == "NEW") {
     if (!state.in_step) {
       state.warn(block.where, "OP=NEW has no effect in model data");
-    } else if (std::find(state.cleared_this_step.begin(), state.cleared_this_step.end(), block.keyword) ==
+    } else if (std::find(state.cleared_this_step.begin(), state.cleared_this_step.end(), kind) ==
                state.cleared_this_step.end()) {
       list.clear();
-      state.cleared_this_step.push_back(block.keyword);
+      state.cleared_this_step.push_back(kind);
     }
   }
   std::unordered_map<long long, std::size_t> index;
   for (std::size_t i = 0; i < list.size(); ++i) index[key(list[i])] = i;
   for (T& a : added) {
     const auto [it, inserted] = index.emplace(key(a), list.size());
-    if (inserted)
+    if (inserted) {
       list.push_back(std::move(a));
-    else
+    } else {
+      check_replace(list[it->second], a);
       list[it->second] = std::move(a);
+    }
   }
+}
+
+template <class T, class KeyFn>
+void merge(DeckState& state, std::vector<T>& list, std::vector<T> added, const KeywordBlock& block,
+           const ParameterValues& params, KeyFn key) {
+  merge(state, list, std::move(added), block, params, key, [](const T&, const T&) {}, block.keyword);
 }
 
 long long node_dof_key(int node, int dof) { return 8LL * node + dof; }
@@ -70,6 +80,87 @@ std::vector<int> boundary_range_dofs(DeckState& state, const std::vector<std::st
   std::vector<int> dofs;
   for (int d = first; d <= std::min(last, 2); ++d) dofs.push_back(d - 1);
   return dofs;
+}
+
+long long body_key(const BodyLoad& b) { return 2LL * b.element + static_cast<int>(b.kind); }
+
+/// tether keeps one gravity per element: a second one in another direction
+/// is refused (CalculiX would add the two, ABAQUS replace the first).
+void check_gravity_replacement(const BodyLoad& old, const BodyLoad& added) {
+  if (added.kind != BodyLoad::Kind::Gravity || (old.direction - added.direction).norm() <= 1e-12) return;
+  throw InputError(added.where, "GRAV in another direction on an element that already carries GRAV (from " +
+                                    old.where.str() + "): tether keeps one gravity load per element (CalculiX adds "
+                                    "the two, ABAQUS replaces the first); write the resultant on one line, or "
+                                    "remove the first with OP=NEW");
+}
+
+/// Three components starting at field `first` (empty or missing: 0).
+Eigen::Vector3d vector_fields(const std::vector<std::string>& f, std::size_t first, const SourceLocation& at,
+                              const std::string& what) {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < 3; ++i)
+    if (first + i < f.size() && !f[first + i].empty())
+      v[static_cast<Eigen::Index>(i)] = parse_real(f[first + i], at, what + " component " + std::to_string(i + 1));
+  return v;
+}
+
+/// The elements' families allow this body load: a rotation axis along z for
+/// plane elements, the symmetry axis (y through r = 0) for axisymmetric ones.
+void check_body_load_geometry(const DeckState& state, const BodyLoad& b, const std::string& token) {
+  const Element& e = state.model.elements[static_cast<std::size_t>(b.element)];
+  const bool axisymmetric = e.type.family == Family::Axisymmetric;
+  constexpr double kTol = 1e-12;
+  const std::string elem = "element " + std::to_string(e.id) + " (" + std::string(e.type.name) + ") of " + token;
+  if (b.kind == BodyLoad::Kind::Gravity) {
+    if (std::abs(b.direction.z()) > kTol)
+      throw InputError(b.where, "GRAV direction has an out-of-plane (z) component: " + elem +
+                                    " is 2D; expected a direction in the x-y plane, e.g. `0, -1, 0`");
+    return;
+  }
+  if (!axisymmetric && (std::abs(b.direction.x()) > kTol || std::abs(b.direction.y()) > kTol))
+    throw InputError(b.where, "CENTRIF axis must be the z axis (0, 0, 1) for " + elem +
+                                  ": a plane model rotates in its plane");
+  if (axisymmetric && (std::abs(b.direction.x()) > kTol || std::abs(b.direction.z()) > kTol ||
+                       std::abs(b.point.x()) > kTol * (1 + b.point.norm())))
+    throw InputError(b.where, "CENTRIF on " + elem + " must spin about the symmetry axis: expected the point "
+                                  "`0, y, 0` and the axis `0, 1, 0`");
+}
+
+/// The GRAV or CENTRIF loads of one *DLOAD data line, one per element:
+/// `elset, GRAV, g, dx, dy[, dz]` or `elset, CENTRIF, omega^2, px, py, pz, ax, ay, az`.
+std::vector<BodyLoad> body_loads_of_line(DeckState& state, const std::vector<std::string>& f,
+                                         const SourceLocation& at, int amplitude) {
+  BodyLoad b;
+  b.where = at;
+  b.amplitude = amplitude;
+  const std::string type = to_upper(f[1]);
+  if (type == "GRAV") {
+    if (f.size() < 5 || f.size() > 6)
+      throw InputError(at, "expected `element_or_elset, GRAV, g, dx, dy[, dz]` (magnitude and direction)");
+    b.magnitude = parse_real(f[2], at, "gravity magnitude");
+    b.direction = vector_fields(f, 3, at, "gravity direction");
+  } else {
+    if (f.size() != 9)
+      throw InputError(at, "expected `element_or_elset, CENTRIF, omega^2, px, py, pz, ax, ay, az` (omega^2, a "
+                           "point on the axis and the axis direction)");
+    b.kind = BodyLoad::Kind::Centrifugal;
+    b.magnitude = parse_real(f[2], at, "CENTRIF magnitude omega^2");
+    if (b.magnitude < 0)
+      throw InputError(at, "CENTRIF magnitude " + f[2] + ": expected omega^2 >= 0 (the square of the angular speed)");
+    b.point = vector_fields(f, 3, at, "CENTRIF point");
+    b.direction = vector_fields(f, 6, at, "CENTRIF axis");
+  }
+  if (!(b.direction.norm() > 0))
+    throw InputError(at, std::string(type == "GRAV" ? "GRAV direction" : "CENTRIF axis") +
+                             " is zero: expected a non-zero vector (it is normalized)");
+  b.direction.normalize();
+  std::vector<BodyLoad> out;
+  for (int e : state.elements_of(f[0], at)) {
+    b.element = e;
+    check_body_load_geometry(state, b, f[0]);
+    out.push_back(b);
+  }
+  return out;
 }
 
 }  // namespace
@@ -152,9 +243,18 @@ void handle_cload(DeckState& state, const KeywordBlock& block, const ParameterVa
 void handle_dload(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   const int amplitude = state.amplitude(params.name("AMPLITUDE"), block.where);
   std::vector<PressureLoad> added;
+  std::vector<BodyLoad> body;
   for (const DataLine& line : block.data) {
     const SourceLocation at = line.where();
-    const auto f = data_fields(line, 3, 3, "`element_or_elset, P1..P4, magnitude`");
+    const auto f = data_fields(line, 3, 0, "`element_or_elset, P1..P4, magnitude` or a GRAV or CENTRIF load");
+    const std::string type = to_upper(f[1]);
+    if (type == "GRAV" || type == "CENTRIF") {
+      for (BodyLoad& b : body_loads_of_line(state, f, at, amplitude)) body.push_back(std::move(b));
+      continue;
+    }
+    if (f.size() > 3)
+      throw InputError(at, "expected `element_or_elset, P1..P4, magnitude` (or GRAV, CENTRIF) but found '" +
+                               line.text + "'");
     const double magnitude = parse_real(f[2], at, "pressure magnitude");
     for (int e : state.elements_of(f[0], at)) {
       const int face = parse_face_id(f[1], state.model.elements[static_cast<std::size_t>(e)], at, 'P');
@@ -162,6 +262,8 @@ void handle_dload(DeckState& state, const KeywordBlock& block, const ParameterVa
     }
   }
   merge(state, state.dloads, std::move(added), block, params, [](const PressureLoad& p) { return face_key(p.face); });
+  merge(state, state.body_loads, std::move(body), block, params, body_key, check_gravity_replacement,
+        "DLOAD BODY");
 }
 
 void handle_dsload(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
@@ -172,7 +274,7 @@ void handle_dsload(DeckState& state, const KeywordBlock& block, const ParameterV
     const auto f = data_fields(line, 3, 3, "`surface, P, magnitude`");
     const auto it = state.model.surfaces.find(to_upper(f[0]));
     if (it == state.model.surfaces.end())
-      throw InputError(at, "undefined surface '" + f[0] + "': expected a surface defined earlier by *SURFACE");
+      throw InputError(at, "undefined surface '" + f[0] + "': expected a surface defined by *SURFACE");
     if (it->second.kind != Surface::Kind::ElementFaces)
       throw InputError(at, "surface " + it->second.name + " is a node surface: expected an element-face surface "
                            "(TYPE=ELEMENT) for a pressure");

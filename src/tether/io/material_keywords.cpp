@@ -11,9 +11,10 @@ MaterialData& current_material(DeckState& state) {
   return state.model.materials[static_cast<std::size_t>(state.material)];
 }
 
-/// The single data line of a material option: `n_values` numbers (blank = 0).
-/// A further field (temperature) or a second line means temperature dependence,
-/// which tether does not have.
+/// The single data line of a material option: `n_values` numbers (blank = 0),
+/// optionally followed by a temperature. One line holds at every temperature
+/// (as in ABAQUS and CalculiX), so its temperature is checked and not used; a
+/// second line means temperature dependence, which tether does not have.
 std::vector<double> material_values(const KeywordBlock& block, std::size_t n_values, std::string_view what) {
   require_data(block, what);
   if (block.data.size() > 1)
@@ -21,11 +22,8 @@ std::vector<double> material_values(const KeywordBlock& block, std::size_t n_val
                                             "line " + std::string(what) +
                                             " (temperature-dependent data is not supported)");
   const DataLine& line = block.data[0];
-  const auto f = data_fields(line, 1, n_values + 1, what);
-  if (f.size() == n_values + 1 && !f[n_values].empty())
-    throw InputError(line.where(), "*" + block.keyword + " gives a temperature (" + f[n_values] +
-                                       "): expected " + std::string(what) +
-                                       " (temperature-dependent data is not supported)");
+  const auto f = data_fields(line, 1, n_values + 1, std::string(what) + "[, temperature]");
+  if (f.size() == n_values + 1 && !f[n_values].empty()) (void)parse_real(f[n_values], line.where(), "temperature");
   std::vector<double> values(n_values, 0.0);
   for (std::size_t i = 0; i < n_values && i < f.size(); ++i)
     if (!f[i].empty()) values[i] = parse_real(f[i], line.where(), "*" + block.keyword + " value " + std::to_string(i + 1));
@@ -93,6 +91,9 @@ void handle_solid_section(DeckState& state, const KeywordBlock& block, const Par
   (void)state.element_set(s.elset, block.where);  // must exist
   if (block.data.size() > 1)
     throw InputError(block.data[1].where(), "*SOLID SECTION has one optional data line: expected `thickness`");
+  if (params.real("OFFSET") != 0)
+    throw InputError(block.where, "OFFSET=" + params.text("OFFSET") + ": a solid section has no offset (it is a "
+                                  "shell parameter); expected OFFSET=0 or none");
   if (!block.data.empty()) {
     const auto f = data_fields(block.data[0], 0, 1, "`thickness`");
     if (!f.empty() && !f[0].empty()) s.thickness = parse_real(f[0], block.data[0].where(), "thickness");

@@ -32,10 +32,11 @@ void handle_node(DeckState& state, const KeywordBlock& block, const ParameterVal
   bool warned_z = false;
   for (const DataLine& line : block.data) {
     const SourceLocation at = line.where();
-    const auto f = data_fields(line, 3, 4, "`label, x, y[, z]`");
+    // Empty or missing coordinates are 0, as CalculiX reads them.
+    const auto f = data_fields(line, 1, 4, "`label, x, y[, z]`");
     const int label = parse_label(f[0], at, "node label");
-    const double x = f[1].empty() ? 0.0 : parse_real(f[1], at, "x coordinate");
-    const double y = f[2].empty() ? 0.0 : parse_real(f[2], at, "y coordinate");
+    const double x = f.size() < 2 || f[1].empty() ? 0.0 : parse_real(f[1], at, "x coordinate");
+    const double y = f.size() < 3 || f[2].empty() ? 0.0 : parse_real(f[2], at, "y coordinate");
     if (f.size() == 4 && !f[3].empty() && parse_real(f[3], at, "z coordinate") != 0.0 && !warned_z) {
       state.warn(at, "non-zero z coordinate ignored: tether models are 2D (x, y)");
       warned_z = true;
@@ -87,7 +88,7 @@ void handle_element(DeckState& state, const KeywordBlock& block, const Parameter
       const int label = parse_label(fields[i], first, "node label");
       if (!m.node_index.count(label))
         throw InputError(first, "element " + std::to_string(e.id) + " references undefined node " +
-                                    std::to_string(label) + ": expected nodes defined by *NODE before *ELEMENT");
+                                    std::to_string(label) + ": expected nodes defined by *NODE");
       e.nodes.push_back(m.node_index.at(label));
     }
     if (m.element_index.count(e.id))

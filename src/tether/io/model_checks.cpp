@@ -109,6 +109,21 @@ void check_geometry(const Model& m) {
   }
 }
 
+/// Every element a body load acts on has a density (its material's *DENSITY).
+void check_body_load_densities(const Model& m) {
+  for (const Step& step : m.steps)
+    for (const BodyLoad& b : step.body_loads) {
+      const Element& e = m.elements[static_cast<std::size_t>(b.element)];
+      const MaterialData& material =
+          m.materials[static_cast<std::size_t>(m.sections[static_cast<std::size_t>(e.section)].material)];
+      if (!material.density)
+        throw InputError(b.where, std::string(b.kind == BodyLoad::Kind::Gravity ? "GRAV" : "CENTRIF") +
+                                      " on element " + std::to_string(e.id) + " needs the density of its material " +
+                                      material.name + ": expected *DENSITY under *MATERIAL, NAME=" + material.name +
+                                      " (" + material.where.str() + ")");
+    }
+}
+
 }  // namespace
 
 std::vector<double> corner_jacobians(const Model& model, const Element& e) {
@@ -130,6 +145,7 @@ std::vector<double> corner_jacobians(const Model& model, const Element& e) {
 void check_model(DeckState& state) {
   check_materials(state.model);
   resolve_sections(state);
+  check_body_load_densities(state.model);
   check_geometry(state.model);
 }
 

@@ -9,8 +9,8 @@ namespace tether::deck {
 
 /// Resolves section materials, assigns a section to every element and
 /// validates the model (every element in exactly one section, every material
-/// with elastic data, no inverted or degenerate element, r >= 0 for
-/// axisymmetric elements).
+/// with elastic data, a density wherever a body load acts, no inverted or
+/// degenerate element, r >= 0 for axisymmetric elements).
 void check_model(DeckState& state);
 
 /// ADJUST= of *CONTACT PAIR: moves the slave nodes whose gap is at most the

@@ -10,9 +10,29 @@ namespace tether::deck {
 
 namespace {
 
+/// The token as a message shows it: at most 40 characters, control and
+/// non-ASCII bytes as \xNN (a NUL byte would end the message on a terminal).
+std::string printable(std::string_view token) {
+  constexpr std::size_t kShown = 40;
+  std::string out;
+  for (std::size_t i = 0; i < token.size() && i < kShown; ++i) {
+    const auto c = static_cast<unsigned char>(token[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+      continue;
+    }
+    constexpr char kHex[] = "0123456789ABCDEF";
+    out += "\\x";
+    out += kHex[c >> 4];
+    out += kHex[c & 0xf];
+  }
+  if (token.size() > kShown) out += "... (" + std::to_string(token.size()) + " characters)";
+  return out;
+}
+
 [[noreturn]] void bad_number(std::string_view token, const SourceLocation& where, std::string_view what,
                              std::string_view expected) {
-  throw InputError(where, "bad number '" + std::string(token) + "' for " + std::string(what) + ": expected " +
+  throw InputError(where, "bad number '" + printable(token) + "' for " + std::string(what) + ": expected " +
                               std::string(expected));
 }
 
@@ -44,7 +64,7 @@ int parse_int(std::string_view token, const SourceLocation& where, std::string_v
 int parse_label(std::string_view token, const SourceLocation& where, std::string_view what) {
   const int value = parse_int(token, where, what);
   if (value <= 0)
-    throw InputError(where, "bad " + std::string(what) + " '" + std::string(token) +
+    throw InputError(where, "bad " + std::string(what) + " '" + printable(token) +
                                 "': expected a positive integer label");
   return value;
 }

@@ -82,16 +82,17 @@ void read_time_controls(DeckState& state, const KeywordBlock& block, Controls& c
 }
 
 /// NLGEOM of a new step. As in ABAQUS and CalculiX, a step without the
-/// parameter keeps the previous step's setting: once geometric nonlinearity is
-/// on it stays on. ABAQUS does not turn it off again, so NLGEOM=NO after a step
-/// with NLGEOM keeps it on with a warning (CalculiX would turn it off there).
+/// parameter keeps the previous step's setting. ABAQUS does not turn it off
+/// again, so in that dialect NLGEOM=NO after a step with NLGEOM keeps it on
+/// with a warning; the calculix dialect turns it off, as CalculiX does.
 bool step_nlgeom(const DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   const bool before = !state.model.steps.empty() && state.model.steps.back().nlgeom;
   if (!params.given("NLGEOM")) return before;
   const bool asked = params.name("NLGEOM") == "YES";
+  if (state.model.dialect == Dialect::Calculix) return asked;
   if (before && !asked)
     state.warn(block.where, "NLGEOM=NO after a step with NLGEOM: geometric nonlinearity stays on, as in ABAQUS, "
-                            "which never turns it off again (CalculiX would turn it off here)");
+                            "which never turns it off again (CalculiX would turn it off here: --dialect calculix)");
   return before || asked;
 }
 
@@ -241,6 +242,7 @@ void handle_end_step(DeckState& state, const KeywordBlock& block, const Paramete
   s.cloads = state.cloads;
   s.pressures = state.dloads;
   s.pressures.insert(s.pressures.end(), state.dsloads.begin(), state.dsloads.end());
+  s.body_loads = state.body_loads;
   s.restart_frequency = state.restart_frequency;
   state.in_step = false;
   state.output_active = false;

@@ -34,7 +34,7 @@ const Surface& surface(const DeckState& state, const std::string& token, const S
   const auto it = state.model.surfaces.find(to_upper(token));
   if (it == state.model.surfaces.end())
     throw InputError(at, "undefined " + std::string(role) + " surface '" + token +
-                             "': expected a surface defined earlier by *SURFACE");
+                             "': expected a surface defined by *SURFACE");
   return it->second;
 }
 

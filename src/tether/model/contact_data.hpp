@@ -9,6 +9,7 @@
 
 #include "tether/core/error.hpp"
 #include "tether/model/constraint_data.hpp"
+#include "tether/model/dialect.hpp"
 
 namespace tether {
 
@@ -26,6 +27,9 @@ struct PressureOverclosure {
   double sigma_inf = 0;  ///< Linear (CalculiX): tension at large clearance [pressure], 0 = none
   double c0 = 0;         ///< Linear (CalculiX) / Exponential: clearance at which pressure starts [length]
   double p0 = 0;         ///< Exponential: pressure at zero clearance [pressure]
+  /// Exponential: whose function `c0, p0` define: ABAQUS's (above), or
+  /// CalculiX's p = p0 exp(ln(100) h / c0) (1 % of p0 at the clearance c0).
+  Dialect meaning = Dialect::Abaqus;
   std::vector<std::pair<double, double>> table;  ///< Tabular: (pressure, overclosure), overclosure increasing
   /// Hard: how the normal constraint g >= 0 is enforced (tether extension):
   /// Lagrange (exact; regularised g + epsilon*N >= 0 when epsilon > 0, epsilon

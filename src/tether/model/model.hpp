@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "tether/core/error.hpp"
+#include "tether/model/body_load.hpp"
+#include "tether/model/dialect.hpp"
 #include "tether/model/constraint_data.hpp"
 #include "tether/model/contact_data.hpp"
 #include "tether/model/element_type.hpp"
@@ -214,6 +216,7 @@ struct Step {
   std::vector<Prescribed> boundary;
   std::vector<ConcentratedLoad> cloads;
   std::vector<PressureLoad> pressures;
+  std::vector<BodyLoad> body_loads;  ///< *DLOAD GRAV / CENTRIF
   std::vector<OutputRequest> outputs;
   /// `*RESTART, WRITE, FREQUENCY=n` in force: the restart state is written
   /// after every n-th converged increment and at the end of the step; 0 = not written.
@@ -233,6 +236,7 @@ struct RestartRead {
 struct Model {
   std::string heading;
   std::string deck_path;  ///< path of the main deck
+  Dialect dialect = Dialect::Abaqus;  ///< the meaning the deck was read with
 
   // --- mesh ---
   std::vector<int> node_ids;              ///< label of node i

@@ -62,7 +62,7 @@ ResultWriter::ResultWriter(const Model& model, const std::filesystem::path& dire
       vtu_(model, options.encoding),
       pvd_(directory_ / (job + ".pvd")),
       dat_(model, directory_ / (job + ".dat")),
-      status_(directory_ / (job + ".sta"), job) {}
+      status_(directory_ / (job + ".sta"), job, dialect_name(model.dialect)) {}
 
 std::filesystem::path ResultWriter::vtu_path(int step, int increment) const {
   return directory_ / fmt::format("{}_{}_{}.vtu", job_, step, increment);

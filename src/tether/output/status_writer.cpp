@@ -19,10 +19,11 @@ std::string e13(double v) { return fmt::format("{:>13}", fortran_e(v, 6)); }
 
 }  // namespace
 
-StatusWriter::StatusWriter(std::filesystem::path file, const std::string& job)
+StatusWriter::StatusWriter(std::filesystem::path file, const std::string& job, std::string_view dialect)
     : file_(std::move(file)), out_(file_, std::ios::binary | std::ios::trunc) {
   if (!out_) throw std::runtime_error("cannot create '" + file_.string() + "'");
-  out_ << fmt::format(" tether {}  job {}\n SUMMARY OF JOB INFORMATION:\n", TETHER_VERSION, job)
+  out_ << fmt::format(" tether {}  job {}{}\n SUMMARY OF JOB INFORMATION:\n", TETHER_VERSION, job,
+                      dialect.empty() ? std::string() : fmt::format("  dialect {}", dialect))
        << "  STEP   INC  ATT  ITRS  TOTITRS      TOT TIME     STEP TIME      INC TIME      RESIDUAL\n";
   out_.flush();
 }

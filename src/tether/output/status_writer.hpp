@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 
 namespace tether {
 
@@ -37,9 +38,10 @@ struct IncrementStatus {
 /// or `THE ANALYSIS HAS NOT BEEN COMPLETED: <reason>`.
 class StatusWriter {
  public:
-  /// Creates (truncates) `file` and writes the header. Throws
-  /// std::runtime_error when the file cannot be created.
-  StatusWriter(std::filesystem::path file, const std::string& job);
+  /// Creates (truncates) `file` and writes the header, which names the
+  /// dialect the deck was read in when one is given ("abaqus", "calculix").
+  /// Throws std::runtime_error when the file cannot be created.
+  StatusWriter(std::filesystem::path file, const std::string& job, std::string_view dialect = "");
 
   /// Appends one line and flushes.
   void write(const IncrementStatus& status);
