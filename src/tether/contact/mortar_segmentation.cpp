@@ -92,6 +92,28 @@ std::optional<T> solve_scalar(double start, double limit, DoubleResidual residua
   return t;
 }
 
+/// The overlap [ξ_lo, ξ_hi] on slave segment x of master segment y: the
+/// slave points whose normal ray meets y. Its ends are slave ends whose
+/// nodal normal ray meets y (|η| <= 1) and projections of master ends that
+/// fall on the slave (|ξ| <= 1). None when that leaves no interval.
+template <class T>
+std::optional<std::array<T, 2>> overlap_of(std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals,
+                                           std::span<const Vec2T<T>> y) {
+  constexpr double inside = 1 + 1e-12;
+  std::vector<T> ends;
+  for (int end = 0; end < 2; ++end) {
+    const std::optional<T> eta = project_onto_master<T>(x[static_cast<std::size_t>(end)],
+                                                        normals[static_cast<std::size_t>(end)], y);
+    if (eta && std::abs(value_of(*eta)) <= inside) ends.push_back(T(end == 0 ? -1.0 : 1.0));
+    const std::optional<T> xi = project_along_slave_normals<T>(y[static_cast<std::size_t>(end)], x, normals);
+    if (xi && std::abs(value_of(*xi)) <= inside) ends.push_back(std::max(T(-1.0), std::min(T(1.0), *xi)));
+  }
+  if (ends.size() < 2) return std::nullopt;
+  const auto [lo, hi] = std::minmax_element(ends.begin(), ends.end());
+  if (!(value_of(*hi) - value_of(*lo) > 1e-14)) return std::nullopt;
+  return std::array<T, 2>{*lo, *hi};
+}
+
 }  // namespace
 
 template <class T>
@@ -204,12 +226,10 @@ SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const 
       for (auto& m : row) m = T(0.0);
     const std::span<const Vec2T<T>> y(masters[f]);
     if (!(dot(values(y[1]) - values(y[0]), slave_dir) < 0)) continue;  // not facing the slave
-    const std::optional<T> a = project_along_slave_normals<T>(y[0], x, normals);
-    const std::optional<T> b = project_along_slave_normals<T>(y[1], x, normals);
-    if (!a || !b) continue;
-    // Exact segmentation: the overlap of [-1, 1] with the projected master segment.
-    const T lo = std::max(T(-1.0), std::min(*a, *b)), hi = std::min(T(1.0), std::max(*a, *b));
-    if (!(value_of(hi) - value_of(lo) > 1e-14)) continue;
+    const std::optional<std::array<T, 2>> range = overlap_of<T>(x, normals, y);
+    if (!range) continue;
+    const T& lo = (*range)[0];
+    const T& hi = (*range)[1];
     out.overlap[f] = {value_of(lo), value_of(hi)};
     const T half = 0.5 * (hi - lo), centre = 0.5 * (hi + lo);
     for (const LinePoint& q : gauss) {

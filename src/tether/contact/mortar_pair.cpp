@@ -1,0 +1,211 @@
+#include "tether/contact/mortar_pair.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tether/contact/mortar_node.hpp"
+#include "tether/contact/mortar_segmentation.hpp"
+#include "tether/dofs/dof_map.hpp"
+#include "tether/fem/quadrature.hpp"
+#include "tether/fem/shape_functions.hpp"
+
+namespace tether {
+
+namespace {
+
+Vec2T<double> current(const std::vector<Eigen::Vector2d>& reference, const Eigen::VectorXd& u, int node) {
+  const Eigen::Vector2d& X = reference[static_cast<std::size_t>(node)];
+  return {X.x() + u[DofMap::displacement(node, 0)], X.y() + u[DofMap::displacement(node, 1)]};
+}
+
+/// Axis-aligned bounding box of some points: {min x, min y, max x, max y}.
+std::array<double, 4> box_of(const std::vector<Vec2T<double>>& p) {
+  std::array<double, 4> b{p[0].x, p[0].y, p[0].x, p[0].y};
+  for (const auto& q : p) b = {std::min(b[0], q.x), std::min(b[1], q.y), std::max(b[2], q.x), std::max(b[3], q.y)};
+  return b;
+}
+
+double box_distance(const std::array<double, 4>& a, const std::array<double, 4>& b) {
+  const double dx = std::max({0.0, a[0] - b[2], b[0] - a[2]});
+  const double dy = std::max({0.0, a[1] - b[3], b[1] - a[3]});
+  return std::hypot(dx, dy);
+}
+
+}  // namespace
+
+std::vector<int> MortarPair::slave_nodes_of(const std::vector<std::vector<int>>& faces) {
+  std::vector<int> nodes;
+  for (const auto& f : faces) nodes.insert(nodes.end(), f.begin(), f.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+MortarPair::MortarPair(MortarPairSetup setup, const std::vector<Eigen::Vector2d>& reference, int first_multiplier)
+    : setup_(std::move(setup)), reference_(reference) {
+  faces_of_node_.assign(reference_.size(), {});
+  for (std::size_t e = 0; e < setup_.slave_faces.size(); ++e)
+    for (std::size_t k = 0; k < setup_.slave_faces[e].size(); ++k)
+      faces_of_node_[static_cast<std::size_t>(setup_.slave_faces[e][k])].emplace_back(static_cast<int>(e),
+                                                                                     static_cast<int>(k));
+  const std::vector<int> nodes = slave_nodes_of(setup_.slave_faces);
+  slaves_.resize(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    MortarSlave& s = slaves_[i];
+    s.node = nodes[i];
+    s.multiplier = first_multiplier + static_cast<int>(i);
+    s.faces = faces_of_node_[static_cast<std::size_t>(s.node)];
+  }
+  // Reference areas A_j = ∫ N_j dA over the slave faces.
+  std::vector<double> area(reference_.size(), 0.0);
+  for (std::size_t e = 0; e < setup_.slave_faces.size(); ++e) {
+    const std::vector<int>& face = setup_.slave_faces[e];
+    const int m = static_cast<int>(face.size());
+    for (const LinePoint& q : line_points(3)) {
+      Eigen::Vector3d N, dN;
+      face_shape_functions(m, q.s, N, dN);
+      Eigen::Vector2d dx(0, 0);
+      for (int a = 0; a < m; ++a) dx += dN[a] * reference_[static_cast<std::size_t>(face[static_cast<std::size_t>(a)])];
+      for (int a = 0; a < m; ++a)
+        area[static_cast<std::size_t>(face[static_cast<std::size_t>(a)])] +=
+            N[a] * q.weight * dx.norm() * setup_.slave_thickness[e];
+    }
+  }
+  for (MortarSlave& s : slaves_) s.area = area[static_cast<std::size_t>(s.node)];
+  overlapped_.assign(setup_.slave_faces.size(), {});
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    rebuild_dofs(slaves_[i]);
+    nodes_.push_back(std::make_unique<MortarNode>(*this, static_cast<int>(i)));
+  }
+}
+
+MortarPair::~MortarPair() = default;
+
+std::vector<Contribution*> MortarPair::nodes() const {
+  std::vector<Contribution*> out;
+  out.reserve(nodes_.size());
+  for (const auto& n : nodes_) out.push_back(n.get());
+  return out;
+}
+
+bool MortarPair::find_overlaps(const Eigen::VectorXd& u) {
+  const auto positions_of = [&](const std::vector<int>& nodes) {
+    std::vector<Vec2T<double>> x;
+    for (int n : nodes) x.push_back(current(reference_, u, n));
+    return x;
+  };
+  std::vector<std::vector<Vec2T<double>>> master_x;
+  std::vector<std::array<double, 4>> master_box;
+  for (const auto& f : setup_.master_faces) {
+    master_x.push_back(positions_of(f));
+    master_box.push_back(box_of(master_x.back()));
+  }
+  bool changed = false;
+  for (std::size_t e = 0; e < setup_.slave_faces.size(); ++e) {
+    const std::vector<int>& face = setup_.slave_faces[e];
+    const std::vector<Vec2T<double>> x = positions_of(face);
+    std::vector<Vec2T<double>> normals;
+    for (int q : face) {
+      std::vector<std::vector<Vec2T<double>>> around;
+      std::vector<int> at;
+      for (const auto& [e2, k2] : faces_of_node_[static_cast<std::size_t>(q)]) {
+        around.push_back(positions_of(setup_.slave_faces[static_cast<std::size_t>(e2)]));
+        at.push_back(k2);
+      }
+      normals.push_back(nodal_normal<double>(around, at));
+    }
+    const std::array<double, 4> box = box_of(x);
+    std::vector<int> candidates;
+    std::vector<std::vector<Vec2T<double>>> candidate_x;
+    for (std::size_t f = 0; f < master_x.size(); ++f)
+      if (box_distance(box, master_box[f]) <= setup_.search_radius) {
+        candidates.push_back(static_cast<int>(f));
+        candidate_x.push_back(master_x[f]);
+      }
+    const SegmentMortar<double> m = integrate_segment<double>(x, normals, candidate_x, 1.0, 1);
+    std::vector<int> overlapped;
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      if (m.overlap[c][0] < m.overlap[c][1]) overlapped.push_back(candidates[c]);
+    if (overlapped != overlapped_[e]) {
+      changed = true;
+      ++statistics_.repaired;
+      overlapped_[e] = std::move(overlapped);
+    }
+  }
+  return changed;
+}
+
+void MortarPair::rebuild_dofs(MortarSlave& s) {
+  s.nodes.clear();
+  const auto add = [&s](int node) {
+    if (std::find(s.nodes.begin(), s.nodes.end(), node) == s.nodes.end()) s.nodes.push_back(node);
+  };
+  add(s.node);
+  for (const auto& [e, k] : s.faces)
+    for (int q : setup_.slave_faces[static_cast<std::size_t>(e)]) {
+      add(q);
+      for (const auto& [e2, k2] : faces_of_node_[static_cast<std::size_t>(q)])
+        for (int r : setup_.slave_faces[static_cast<std::size_t>(e2)]) add(r);
+    }
+  s.n_slave_nodes = static_cast<int>(s.nodes.size());
+  for (const auto& [e, k] : s.faces)
+    for (int f : overlapped_[static_cast<std::size_t>(e)])
+      for (int q : setup_.master_faces[static_cast<std::size_t>(f)]) add(q);
+  s.dofs.clear();
+  for (int n : s.nodes)
+    for (int c = 0; c < kDofsPerNode; ++c) s.dofs.push_back(DofMap::displacement(n, c));
+  s.dofs.push_back(s.multiplier);
+}
+
+bool MortarPair::update_connectivity(const EvaluationState& state) {
+  statistics_ = {};
+  bool changed = find_overlaps(state.u);
+  if (changed || !searched_once_) {
+    for (MortarSlave& s : slaves_) {
+      const std::vector<int> previous = s.dofs;
+      rebuild_dofs(s);
+      if (s.dofs != previous) changed = true;
+    }
+  }
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    const bool closed = nodes_[i]->closed(state);
+    if (searched_once_ && closed != slaves_[i].closed) ++statistics_.status_changes;
+    slaves_[i].closed = closed;
+    if (closed) ++statistics_.closed;
+  }
+  searched_once_ = true;
+  return changed;
+}
+
+ContactPairValues MortarPair::values(const EvaluationState& state) const {
+  ContactPairValues out;
+  out.name = setup_.name;
+  std::vector<Eigen::Vector2d> force(reference_.size(), Eigen::Vector2d::Zero());
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    const Eigen::VectorXd f = nodes_[i]->forces(state);
+    for (std::size_t a = 0; a < slaves_[i].nodes.size(); ++a)
+      force[static_cast<std::size_t>(slaves_[i].nodes[a])] += f.segment<2>(static_cast<Eigen::Index>(2 * a));
+  }
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    const MortarSlave& s = slaves_[i];
+    const MortarNode::Gap g = nodes_[i]->gap(state.u);
+    ContactNodeValues v;
+    v.node = s.node;
+    v.status = nodes_[i]->closed(state) ? ContactNodeValues::Status::Slip : ContactNodeValues::Status::Open;
+    v.gap = g.covered ? g.gap / g.D : 0.0;
+    v.pressure = state.u[s.multiplier];
+    v.normal_force = g.covered ? v.pressure * g.D : 0.0;
+    v.force = force[static_cast<std::size_t>(s.node)];
+    for (const auto& [e, k] : s.faces)
+      if (!overlapped_[static_cast<std::size_t>(e)].empty() && v.master_element == 0) {
+        const auto& label = setup_.master_face_labels[static_cast<std::size_t>(overlapped_[static_cast<std::size_t>(e)].front())];
+        v.master_element = label.first;
+        v.master_face = label.second;
+      }
+    out.total_force += v.force;
+    out.nodes.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace tether
