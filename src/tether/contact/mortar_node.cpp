@@ -11,6 +11,10 @@ namespace tether {
 
 namespace {
 
+/// Gauss points per overlap of a slave and a master segment: exact for the
+/// polynomial integrands of straight and quadratic faces with constant normals.
+constexpr int kMortarGaussPoints = 6;
+
 template <class T>
 struct NodeGap {
   T gap{};
@@ -45,8 +49,9 @@ Vec2T<T> normal_at(const MortarPair& pair, const MortarSlave& s, std::span<const
 }
 
 /// g̃_j and D_j from the positions of s.nodes (local order).
+/// `nlgeom`: dA from the current positions; otherwise from the reference ones.
 template <class T>
-NodeGap<T> weighted_gap(const MortarPair& pair, const MortarSlave& s, std::span<const Vec2T<T>> x) {
+NodeGap<T> weighted_gap(const MortarPair& pair, const MortarSlave& s, std::span<const Vec2T<T>> x, bool nlgeom) {
   NodeGap<T> out{T(0.0), T(0.0), false};
   const Vec2T<T> n_j = normal_at(pair, s, x, s.node);
   const Vec2T<T>& x_j = x[0];
@@ -58,8 +63,14 @@ NodeGap<T> weighted_gap(const MortarPair& pair, const MortarSlave& s, std::span<
     std::vector<std::vector<Vec2T<T>>> masters;
     for (int f : pair.overlapped(e)) masters.push_back(gather(s, x, pair.setup().master_faces[static_cast<std::size_t>(f)]));
     if (masters.empty()) continue;
-    const SegmentMortar<T> m =
-        integrate_segment<T>(xe, ne, masters, pair.setup().slave_thickness[static_cast<std::size_t>(e)]);
+    std::vector<Vec2T<double>> reference;
+    if (!nlgeom)
+      for (int q : face) {
+        const Eigen::Vector2d& X = pair.reference()[static_cast<std::size_t>(q)];
+        reference.push_back({X.x(), X.y()});
+      }
+    const SegmentMortar<T> m = integrate_segment<T>(
+        xe, ne, masters, pair.setup().slave_thickness[static_cast<std::size_t>(e)], kMortarGaussPoints, reference);
     Vec2T<T> weighted{T(0.0), T(0.0)};
     for (std::size_t f = 0; f < masters.size(); ++f) {
       if (!(m.overlap[f][0] < m.overlap[f][1])) continue;
@@ -109,16 +120,16 @@ double MortarNode::row_stiffness() const {
   return pair_.setup().complementarity_stiffness / (area * area);
 }
 
-MortarNode::Gap MortarNode::gap(const Eigen::VectorXd& u) const {
+MortarNode::Gap MortarNode::gap(const Eigen::VectorXd& u, bool nlgeom) const {
   const MortarSlave& s = pair_.slave(slave_);
   const std::vector<Vec2T<double>> x = positions(pair_, s, u);
-  const NodeGap<double> g = weighted_gap<double>(pair_, s, x);
+  const NodeGap<double> g = weighted_gap<double>(pair_, s, x, nlgeom);
   return {g.gap, g.D, g.covered};
 }
 
 bool MortarNode::closed(const EvaluationState& state) const {
   const MortarSlave& s = pair_.slave(slave_);
-  const Gap g = gap(state.u);
+  const Gap g = gap(state.u, state.nlgeom);
   if (!g.covered) return false;
   // A gap within round-off of zero is a touch: surfaces that coincide in
   // the mesh start closed rather than a few ulps open.
@@ -140,8 +151,8 @@ void MortarNode::evaluate(const EvaluationState& state, LocalSystem& out, bool n
     return;
   }
   const std::vector<Vec2T<Dual2>> x = variables(positions(pair_, s, state.u));
-  const NodeGap<Dual2> g = weighted_gap<Dual2>(pair_, s, x);
-  if (g.gap.constant()) {  // cannot happen for a covered node; kept for safety: λ_j = 0
+  const NodeGap<Dual2> g = weighted_gap<Dual2>(pair_, s, x, state.nlgeom);
+  if (g.gap.constant()) {  // a gap that depends on no position: nothing to constrain, λ_j = 0
     const double c = row_stiffness();
     out.residual[in] = -lambda / c;
     if (need_tangent) out.tangent(in, in) = -1 / c;
@@ -161,7 +172,7 @@ Eigen::VectorXd MortarNode::forces(const EvaluationState& state) const {
   const auto n_u = static_cast<Eigen::Index>(2 * s.nodes.size());
   if (!closed(state)) return Eigen::VectorXd::Zero(n_u);
   const std::vector<Vec2T<Dual2>> x = variables(positions(pair_, s, state.u));
-  const Dual2 g = weighted_gap<Dual2>(pair_, s, x).gap;
+  const Dual2 g = weighted_gap<Dual2>(pair_, s, x, state.nlgeom).gap;
   if (g.constant()) return Eigen::VectorXd::Zero(n_u);
   return state.u[s.multiplier] * g.gradient();
 }

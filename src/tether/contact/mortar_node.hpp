@@ -40,13 +40,16 @@ class MortarNode final : public Contribution {
 
   /// Weighted gap g̃_j [length × area] and D_j = Σ_e D^e_j [area] at the
   /// displacements `u`; `covered` is false when no master face overlaps the
-  /// node's faces or D_j <= 0 (the node is then free).
+  /// node's faces or D_j <= 0 (the node is then free). `nlgeom`: the
+  /// integrals' measure dA is the current one (λ_j a Cauchy pressure);
+  /// otherwise the reference one (λ_j a force per reference area, like the
+  /// loads of a geometrically linear step), the rest staying current.
   struct Gap {
     double gap = 0;
     double D = 0;
     bool covered = false;
   };
-  [[nodiscard]] Gap gap(const Eigen::VectorXd& u) const;
+  [[nodiscard]] Gap gap(const Eigen::VectorXd& u, bool nlgeom) const;
 
   /// Whether the node takes the closed row at the state.
   [[nodiscard]] bool closed(const EvaluationState& state) const;

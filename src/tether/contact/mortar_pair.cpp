@@ -188,7 +188,7 @@ ContactPairValues MortarPair::values(const EvaluationState& state) const {
   }
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     const MortarSlave& s = slaves_[i];
-    const MortarNode::Gap g = nodes_[i]->gap(state.u);
+    const MortarNode::Gap g = nodes_[i]->gap(state.u, state.nlgeom);
     ContactNodeValues v;
     v.node = s.node;
     v.status = nodes_[i]->closed(state) ? ContactNodeValues::Status::Slip : ContactNodeValues::Status::Open;

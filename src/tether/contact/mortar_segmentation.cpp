@@ -211,14 +211,18 @@ std::array<std::array<T, 3>, 3> dual_coefficients(std::span<const Vec2T<T>> x) {
 
 template <class T>
 SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals,
-                                   std::span<const std::vector<Vec2T<T>>> masters, double thickness, int n_gauss) {
+                                   std::span<const std::vector<Vec2T<T>>> masters, double thickness, int n_gauss,
+                                   std::span<const Vec2T<double>> measure) {
   SegmentMortar<T> out;
   const int n = static_cast<int>(x.size());
   out.n_slave = n;
   for (auto& d : out.D) d = T(0.0);
   out.M.resize(masters.size());
   out.overlap.assign(masters.size(), {1.0, -1.0});
-  const auto A = dual_coefficients<T>(x);
+  std::vector<Vec2T<T>> measure_t;
+  for (const Vec2T<double>& p : measure) measure_t.push_back({T(p.x), T(p.y)});
+  const std::span<const Vec2T<T>> jacobian_of = measure.empty() ? x : std::span<const Vec2T<T>>(measure_t);
+  const auto A = dual_coefficients<T>(jacobian_of);
   const std::vector<LinePoint> gauss = gauss_legendre(n_gauss);
   const Vec2T<double> slave_dir = values(x[1]) - values(x[0]);
   for (std::size_t f = 0; f < masters.size(); ++f) {
@@ -236,7 +240,7 @@ SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const 
       const T xi = centre + q.s * half;
       std::array<T, 3> N, dN;
       segment_shapes(n, xi, N, dN);
-      const Vec2T<T> dx = interpolate(x, dN);
+      const Vec2T<T> dx = interpolate(jacobian_of, dN);
       const T w = (q.weight * thickness) * half * sqrt(dot(dx, dx));
       const std::optional<T> eta = project_onto_master<T>(interpolate(x, N), interpolate(normals, N), y);
       if (!eta) continue;
@@ -263,7 +267,8 @@ SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const 
   template std::optional<T> project_onto_master<T>(const Vec2T<T>&, const Vec2T<T>&, std::span<const Vec2T<T>>);  \
   template std::array<std::array<T, 3>, 3> dual_coefficients<T>(std::span<const Vec2T<T>>);                        \
   template SegmentMortar<T> integrate_segment<T>(std::span<const Vec2T<T>>, std::span<const Vec2T<T>>,             \
-                                                 std::span<const std::vector<Vec2T<T>>>, double, int);
+                                                 std::span<const std::vector<Vec2T<T>>>, double, int,             \
+                                                 std::span<const Vec2T<double>>);
 
 TETHER_MORTAR_INSTANTIATE(double)
 TETHER_MORTAR_INSTANTIATE(Dual2)

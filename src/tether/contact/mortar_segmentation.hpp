@@ -95,12 +95,18 @@ struct SegmentMortar {
 /// slave segment (biorthogonal to its N over the whole segment with the
 /// current Jacobian). `thickness` multiplies every integral (dA = t ds).
 /// Master segments with the slave's orientation (not facing it) are skipped.
+/// `measure`: when given, the reference positions of the slave segment,
+/// whose Jacobian then replaces the current one in dA and in the dual basis
+/// (geometrically linear steps: λ conjugate to D is then a force per
+/// reference area, like the loads); empty: the current Jacobian (NLGEOM:
+/// λ is the Cauchy contact pressure).
 template <class T>
 SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals,
                                    std::span<const std::vector<Vec2T<T>>> masters, double thickness,
-                                   int n_gauss = 6);
+                                   int n_gauss = 6, std::span<const Vec2T<double>> measure = {});
 
-/// Dual basis coefficients A (Φ_k = Σ_l A_kl N_l) of slave segment `x`:
+/// Dual basis coefficients A (Φ_k = Σ_l A_kl N_l) of slave segment `x`
+/// (the positions that define its Jacobian):
 /// A = D_e M_e⁻¹ with D_e = diag ∫ N_k ds and M_e = ∫ N_k N_l ds over the
 /// segment. For a straight 2-node segment A = [[2, -1], [-1, 2]].
 template <class T>
