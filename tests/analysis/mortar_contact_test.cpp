@@ -71,6 +71,7 @@ struct PatchCase {
   bool quadratic;
   double slope;       ///< of the interface; 0: flat, uniaxial pressure; else hydrostatic pressure
   double nu = 0.3;
+  bool nlgeom = false;  ///< finite strain: follower pressure, λ the Cauchy contact pressure
 };
 
 constexpr double kE = 1000, kP = 10;
@@ -103,7 +104,7 @@ std::string patch_deck(const PatchCase& c) {
     d << "*BOUNDARY\nBASE, 2\n" << bottom.grid(0, 0) << ", 1\n" << top_left << ", 1\n";
   else  // hydrostatic: the rigid modes only (the loads are self-equilibrated)
     d << "*BOUNDARY\n" << bottom.grid(0, 0) << ", 1, 2\n" << base_right << ", 2\n" << top_left << ", 1\n";
-  d << "*STEP\n*STATIC\n1, 1\n*CONTROLS, PARAMETERS=FIELD\n1e-12, 1e-12\n*DLOAD\n";
+  d << (c.nlgeom ? "*STEP, NLGEOM\n" : "*STEP\n") << "*STATIC\n1, 1\n*CONTROLS, PARAMETERS=FIELD\n1e-12, 1e-12\n*DLOAD\n";
   std::vector<std::pair<int, int>> loaded = top.side(3);
   if (c.slope != 0)
     for (const auto& side : {bottom.side(1), bottom.side(2), bottom.side(4), top.side(2), top.side(4)})
@@ -145,9 +146,9 @@ class MortarPatch : public ::testing::TestWithParam<PatchCase> {};
 TEST_P(MortarPatch, StressesAndContactPressureAreExact) {
   const PatchCase& c = GetParam();
   const PatchErrors e = run_patch(c);
-  std::printf("[ mortar patch ] %s, slave %d on master %d, slope %.2f: stress error %.2e, pressure error %.2e, "
+  std::printf("[ mortar patch ] %s%s, slave %d on master %d, slope %.2f: stress error %.2e, pressure error %.2e, "
               "%d Newton iterations, %d/%d slave nodes closed\n",
-              c.quadratic ? "CPE8" : "CPE4", c.n_slave, c.n_master, c.slope, e.stress, e.pressure, e.iterations,
+              c.quadratic ? "CPE8" : "CPE4", c.nlgeom ? " NLGEOM" : "", c.n_slave, c.n_master, c.slope, e.stress, e.pressure, e.iterations,
               e.closed, e.slaves);
   EXPECT_LT(e.stress, 1e-10);
   EXPECT_LT(e.pressure, 1e-10);
@@ -158,7 +159,9 @@ INSTANTIATE_TEST_SUITE_P(
     NonMatching, MortarPatch,
     ::testing::Values(PatchCase{3, 7, false, 0.0}, PatchCase{7, 3, false, 0.0}, PatchCase{4, 6, false, 0.0},
                       PatchCase{3, 7, false, 0.3}, PatchCase{7, 3, false, -0.4}, PatchCase{2, 5, true, 0.0},
-                      PatchCase{5, 2, true, 0.0}, PatchCase{3, 4, true, 0.25}, PatchCase{4, 3, true, -0.3}));
+                      PatchCase{5, 2, true, 0.0}, PatchCase{3, 4, true, 0.25}, PatchCase{4, 3, true, -0.3},
+                      PatchCase{3, 7, false, 0.0, 0.3, true}, PatchCase{7, 3, false, 0.3, 0.3, true},
+                      PatchCase{2, 5, true, -0.25, 0.3, true}));
 
 TEST(MortarPatch, TaylorPapadopoulos) {
   // E 1000, ν 0.4, p 10, plane strain, non-matching meshes: the multiplier
