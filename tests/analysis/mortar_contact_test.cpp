@@ -138,6 +138,18 @@ PatchErrors run_patch(const PatchCase& c) {
     e.pressure = std::max(e.pressure, std::abs(v.pressure - kP) / kP);
   }
   for (const auto& pass : run.recorder.residuals) e.iterations += static_cast<int>(pass.size()) - 1;
+  if (c.nlgeom) {
+    // Follower pressure on the current faces: forces scale with the current lengths (not checked here).
+  } else if (c.slope == 0) {
+    // The contact force on the top body is the load p × 1, and the base's reaction balances it.
+    EXPECT_NEAR(pair.total_force.y(), kP, 1e-10 * kP);
+    EXPECT_NEAR(pair.total_force.x(), 0.0, 1e-10 * kP);
+    EXPECT_NEAR(run.reaction_sum("BASE", 1), kP, 1e-10 * kP);
+  } else {
+    // Hydrostatic: the interface carries p over its length: |F| = p × length.
+    const double length = std::sqrt(1 + c.slope * c.slope);
+    EXPECT_NEAR(pair.total_force.norm(), kP * length, 1e-10 * kP);
+  }
   return e;
 }
 

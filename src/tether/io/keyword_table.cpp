@@ -294,7 +294,8 @@ std::vector<KeywordSpec> build_table() {
        {real("ELASTIC SLIP", "0", "ABAQUS: slip at which the full friction force is reached (a stick penalty).")},
        handle_friction, ""},
       {"CONTACT PAIR", kModelData, "Contact of a slave surface against a master surface (node to surface, or mortar).",
-       "`slave_surface, master_surface` (master: element faces; slave: element faces or nodes; the stiffer "
+       "`slave_surface, master_surface` (master: element faces; slave: element faces or nodes, mortar: element "
+       "faces only; the stiffer "
        "body should be the master: a slave 10 or more times stiffer is warned about)",
        {name("INTERACTION", "The *SURFACE INTERACTION to use.", true),
         choice("TYPE", "NODE TO SURFACE",
