@@ -16,7 +16,11 @@ namespace {
 /// leave value, gradient and Hessian of the root exact to round-off.
 constexpr int kDerivativeSteps = 3;
 constexpr int kMaxNewton = 50;
-constexpr double kXiTolerance = 1e-14;
+/// Convergence of the double Newton iteration on |Δξ|: the derivative steps
+/// that follow take the root to round-off (quadratic convergence), so this
+/// only has to be within their reach, and well above the round-off floor of
+/// the iteration itself (a tighter test can stall and drop a projection).
+constexpr double kXiTolerance = 1e-10;
 /// Gauss points of the whole-segment integrals of the dual basis: exact for
 /// straight segments (polynomial integrands), to about 1e-7 relative on a
 /// strongly curved 3-node segment.
