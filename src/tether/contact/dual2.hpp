@@ -18,18 +18,20 @@ class Dual2 {
   Dual2() = default;
   Dual2(double value) : v_(value) {}  // NOLINT: constants mix freely with variables
   /// The independent variable `index` of `n`, with the given value.
-  static Dual2 variable(double value, int index, int n) {
+  /// `hessian` false: first derivatives only (every result of such
+  /// variables has an empty Hessian; do not mix with second-order ones).
+  static Dual2 variable(double value, int index, int n, bool hessian = true) {
     Dual2 d(value);
     d.g_ = Eigen::VectorXd::Zero(n);
     d.g_[index] = 1;
-    d.h_ = Eigen::MatrixXd::Zero(n, n);
+    if (hessian) d.h_ = Eigen::MatrixXd::Zero(n, n);
     return d;
   }
 
   [[nodiscard]] double value() const { return v_; }
   /// Gradient (empty for a constant).
   [[nodiscard]] const Eigen::VectorXd& gradient() const { return g_; }
-  /// Hessian (empty for a constant).
+  /// Hessian (empty for a constant or a first-order value).
   [[nodiscard]] const Eigen::MatrixXd& hessian() const { return h_; }
   [[nodiscard]] bool constant() const { return g_.size() == 0; }
 
@@ -38,7 +40,7 @@ class Dual2 {
     Dual2 r(f);
     if (constant()) return r;
     r.g_ = df * g_;
-    r.h_ = df * h_ + ddf * g_ * g_.transpose();
+    if (second()) r.h_ = df * h_ + ddf * g_ * g_.transpose();
     return r;
   }
 
@@ -50,11 +52,22 @@ class Dual2 {
       h_ = b.h_;
     } else {
       g_ += b.g_;
-      h_ += b.h_;
+      if (second()) h_ += b.h_;
     }
     return *this;
   }
-  Dual2& operator-=(const Dual2& b) { return *this += -b; }
+  Dual2& operator-=(const Dual2& b) {
+    v_ -= b.v_;
+    if (b.constant()) return *this;
+    if (constant()) {
+      g_ = -b.g_;
+      h_ = -b.h_;
+    } else {
+      g_ -= b.g_;
+      if (second()) h_ -= b.h_;
+    }
+    return *this;
+  }
   Dual2& operator*=(const Dual2& b) {
     if (b.constant()) {
       v_ *= b.v_;
@@ -69,7 +82,12 @@ class Dual2 {
       h_ *= a;
       return *this;
     }
-    h_ = v_ * b.h_ + b.v_ * h_ + g_ * b.g_.transpose() + b.g_ * g_.transpose();
+    if (second()) {
+      h_ *= b.v_;
+      h_.noalias() += v_ * b.h_;
+      h_.noalias() += g_ * b.g_.transpose();
+      h_.noalias() += b.g_ * g_.transpose();
+    }
     g_ = v_ * b.g_ + b.v_ * g_;
     v_ *= b.v_;
     return *this;
@@ -82,6 +100,8 @@ class Dual2 {
     if (!a.constant()) a.g_ = -a.g_, a.h_ = -a.h_;
     return a;
   }
+  /// Carries a Hessian (second-order variables).
+  [[nodiscard]] bool second() const { return h_.size() > 0; }
   friend Dual2 operator+(Dual2 a, const Dual2& b) { return a += b; }
   friend Dual2 operator-(Dual2 a, const Dual2& b) { return a -= b; }
   friend Dual2 operator*(Dual2 a, const Dual2& b) { return a *= b; }

@@ -26,6 +26,16 @@ constexpr double kXiTolerance = 1e-10;
 /// strongly curved 3-node segment.
 constexpr int kElementPoints = 8;
 
+/// Gauss–Legendre rule with n points, 1 <= n <= 20, computed once.
+const std::vector<LinePoint>& gauss_rule(int n) {
+  static const std::vector<std::vector<LinePoint>> rules = [] {
+    std::vector<std::vector<LinePoint>> r(21);
+    for (int k = 1; k <= 20; ++k) r[static_cast<std::size_t>(k)] = gauss_legendre(k);
+    return r;
+  }();
+  return rules.at(static_cast<std::size_t>(n));
+}
+
 template <class T>
 Vec2T<double> values(const Vec2T<T>& a) {
   return {value_of(a.x), value_of(a.y)};
@@ -183,7 +193,7 @@ std::array<std::array<T, 3>, 3> dual_coefficients(std::span<const Vec2T<T>> x) {
   for (int k = 0; k < 3; ++k)
     for (int l = 0; l < 3; ++l) me[k][l] = T(0.0), a[k][l] = T(0.0);
   for (int k = 0; k < 3; ++k) de[k] = T(0.0);
-  for (const LinePoint& q : gauss_legendre(kElementPoints)) {
+  for (const LinePoint& q : gauss_rule(kElementPoints)) {
     std::array<T, 3> N, dN;
     segment_shapes(n, T(q.s), N, dN);
     const Vec2T<T> dx = interpolate(x, dN);
@@ -227,7 +237,7 @@ SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const 
   for (const Vec2T<double>& p : measure) measure_t.push_back({T(p.x), T(p.y)});
   const std::span<const Vec2T<T>> jacobian_of = measure.empty() ? x : std::span<const Vec2T<T>>(measure_t);
   const auto A = dual_coefficients<T>(jacobian_of);
-  const std::vector<LinePoint> gauss = gauss_legendre(n_gauss);
+  const std::vector<LinePoint>& gauss = gauss_rule(n_gauss);
   const Vec2T<double> slave_dir = values(x[1]) - values(x[0]);
   for (std::size_t f = 0; f < masters.size(); ++f) {
     for (auto& row : out.M[f])
