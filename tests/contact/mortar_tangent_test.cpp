@@ -23,6 +23,7 @@ struct MortarCase {
   bool quadratic_master;
   int n_slave_faces;
   int n_master_faces;
+  double mu = 0;  ///< Coulomb friction (exact stick)
 };
 
 /// Slave: the bottom of a body above y = 0 over x in [0.1, 1.9] (faces run
@@ -58,6 +59,7 @@ struct MortarFixture {
     setup.slave_thickness.assign(setup.slave_faces.size(), 0.8);
     setup.search_radius = 1.0;
     setup.complementarity_stiffness = 100;
+    setup.mu = c.mu;
     n_disp = 2 * static_cast<int>(reference.size());
     pair = std::make_unique<MortarPair>(setup, reference, n_disp);
     (void)rng;
@@ -71,7 +73,7 @@ TEST_P(MortarTangent, MatchesCentralFiniteDifferences) {
   std::uniform_real_distribution<double> jitter(-0.03, 0.03), pressure(0.5, 2.0);
   for (int trial = 0; trial < 3; ++trial) {
     MortarFixture fx(GetParam(), rng);
-    const int n = fx.n_disp + fx.pair->n_slaves();
+    const int n = fx.n_disp + MortarPair::multipliers_per_slave(GetParam().mu) * fx.pair->n_slaves();
     Eigen::VectorXd u = Eigen::VectorXd::Zero(n), u_start = Eigen::VectorXd::Zero(n);
     for (int i = 0; i < fx.n_disp; ++i) u[i] = jitter(rng);
     // A rigid rotation by 0.2 rad and a curvature of the master, so that
@@ -85,7 +87,24 @@ TEST_P(MortarTangent, MatchesCentralFiniteDifferences) {
       u[2 * static_cast<int>(a)] += y.x() - X.x();
       u[2 * static_cast<int>(a) + 1] += y.y() - X.y();
     }
-    for (int i = fx.n_disp; i < n; ++i) u[i] = 1e4 * pressure(rng);  // every node closed
+    for (int i = 0; i < fx.pair->n_slaves(); ++i) {
+      u[fx.pair->slave(i).multiplier] = 1e4 * pressure(rng);  // every node closed
+      // Friction: stick (|λt| well inside μλn) in trials 0 and 2, slip in trial 1.
+      if (fx.pair->slave(i).tangent_multiplier >= 0)
+        u[fx.pair->slave(i).tangent_multiplier] =
+            (trial == 1 ? 3.0 : 0.05) * GetParam().mu * u[fx.pair->slave(i).multiplier] * (i % 2 ? -1 : 1);
+    }
+    if (GetParam().mu > 0) {
+      // The increment started with the slave 0.13 to the left (across master
+      // nodes), rotated a little less: the slip increment is not trivial,
+      // and the committed overlaps differ from the current ones.
+      u_start = u;
+      for (std::size_t a = 0; a < fx.reference.size(); ++a)
+        if (fx.reference[a].y() >= 0) u_start[2 * static_cast<int>(a)] -= 0.13, u_start[2 * static_cast<int>(a) + 1] += 0.01;
+      const EvaluationState start{u_start, u_start, 0, 0, 1, trial != 1};
+      fx.pair->update_connectivity(start);
+      fx.pair->commit(start);
+    }
     // NLGEOM (current measure) and geometrically linear steps (reference measure).
     const EvaluationState state{u, u_start, 1, 1, 1, trial != 1};
     fx.pair->update_connectivity(state);
@@ -93,6 +112,11 @@ TEST_P(MortarTangent, MatchesCentralFiniteDifferences) {
     for (Contribution* c : fx.pair->nodes()) {
       const auto& node = dynamic_cast<const MortarNode&>(*c);
       ASSERT_TRUE(node.closed(state)) << node.describe();
+      if (GetParam().mu > 0) {
+        const MortarNode::Friction f = node.friction(state);
+        EXPECT_EQ(f.stick, trial != 1) << node.describe() << " trial " << trial;
+        EXPECT_NE(f.slip, 0.0);
+      }
       EXPECT_LT(tether::testing::tangent_error(*c, state, 1e-6), 2e-6) << node.describe() << " trial " << trial;
       ++checked;
     }
@@ -103,7 +127,8 @@ TEST_P(MortarTangent, MatchesCentralFiniteDifferences) {
 INSTANTIATE_TEST_SUITE_P(Faces, MortarTangent,
                          ::testing::Values(MortarCase{false, false, 3, 7}, MortarCase{false, false, 5, 2},
                                            MortarCase{true, false, 2, 5}, MortarCase{false, true, 4, 3},
-                                           MortarCase{true, true, 3, 2}));
+                                           MortarCase{true, true, 3, 2}, MortarCase{false, false, 3, 7, 0.3},
+                                           MortarCase{false, false, 5, 2, 0.3}, MortarCase{true, true, 3, 4, 0.3}));
 
 TEST(MortarTangent, OpenNodeHasTheTrivialRow) {
   std::mt19937 rng(3);

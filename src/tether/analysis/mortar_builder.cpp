@@ -26,8 +26,10 @@ std::string unsupported_law(const SurfaceInteraction& interaction) {
   if (law.enforcement.method != Enforcement::Method::Lagrange || law.enforcement.epsilon > 0)
     return "a penalty, augmented or regularised HARD law (mortar contact enforces HARD exactly by "
            "multipliers; TYPE=NODE TO SURFACE models those)";
-  if (interaction.friction && interaction.friction->mu > 0)
-    return "friction (mortar contact is frictionless so far; TYPE=NODE TO SURFACE models Coulomb friction)";
+  if (interaction.friction && interaction.friction->mu > 0 &&
+      (interaction.friction->stick_slope > 0 || interaction.friction->elastic_slip > 0))
+    return "a stick slope or ELASTIC SLIP on *FRICTION (mortar friction enforces stick exactly by a multiplier; "
+           "TYPE=NODE TO SURFACE models the stick penalty)";
   return "";
 }
 
@@ -90,7 +92,8 @@ std::unique_ptr<MortarPair> make_mortar_pair(const Model& model, const ContactPa
                        where + ": contact is between distinct surfaces; split the node or the surfaces");
   setup.search_radius = 2 * longest + data.adjust;
   setup.complementarity_stiffness = stiffness > 0 ? stiffness : 1.0;
-  const int first = dofs.add_multipliers(static_cast<int>(slave_nodes.size()),
+  setup.mu = interaction->friction ? interaction->friction->mu : 0.0;
+  const int first = dofs.add_multipliers(MortarPair::multipliers_per_slave(setup.mu) * static_cast<int>(slave_nodes.size()),
                                          "mortar contact pair " + data.slave + "-" + data.master);
   return std::make_unique<MortarPair>(std::move(setup), reference, first);
 }
@@ -109,7 +112,10 @@ std::vector<int> mortar_equations(const std::vector<std::unique_ptr<MortarPair>>
   for (const auto& pair : pairs) {
     add_faces(pair->setup().slave_faces);
     add_faces(pair->setup().master_faces);
-    for (int i = 0; i < pair->n_slaves(); ++i) add(pair->slave(i).multiplier);
+    for (int i = 0; i < pair->n_slaves(); ++i) {
+      add(pair->slave(i).multiplier);
+      if (pair->slave(i).tangent_multiplier >= 0) add(pair->slave(i).tangent_multiplier);
+    }
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

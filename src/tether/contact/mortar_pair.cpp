@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tether/contact/mortar_node.hpp"
+#include "tether/core/error.hpp"
 #include "tether/contact/mortar_segmentation.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/fem/quadrature.hpp"
@@ -12,6 +13,15 @@
 namespace tether {
 
 namespace {
+
+/// Changes of a node's friction branch (stick, slip +, slip -) within one
+/// increment attempt after which it is held in stick until Newton converges:
+/// the semi-smooth Newton method can cycle between stick and slip, or
+/// between slip directions, where sliding starts.
+constexpr int kMaxFrictionSwitches = 2;
+/// Releases of held nodes (found outside the friction cone at convergence)
+/// within one attempt before the pair gives up.
+constexpr int kMaxReleases = 10;
 
 Vec2T<double> current(const std::vector<Eigen::Vector2d>& reference, const Eigen::VectorXd& u, int node) {
   const Eigen::Vector2d& X = reference[static_cast<std::size_t>(node)];
@@ -50,10 +60,12 @@ MortarPair::MortarPair(MortarPairSetup setup, const std::vector<Eigen::Vector2d>
                                                                                      static_cast<int>(k));
   const std::vector<int> nodes = slave_nodes_of(setup_.slave_faces);
   slaves_.resize(nodes.size());
+  const int per = multipliers_per_slave(setup_.mu);
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     MortarSlave& s = slaves_[i];
     s.node = nodes[i];
-    s.multiplier = first_multiplier + static_cast<int>(i);
+    s.multiplier = first_multiplier + per * static_cast<int>(i);
+    if (per == 2) s.tangent_multiplier = s.multiplier + 1;
     s.faces = faces_of_node_[static_cast<std::size_t>(s.node)];
   }
   // Reference areas A_j = ∫ N_j dA over the slave faces.
@@ -73,6 +85,8 @@ MortarPair::MortarPair(MortarPairSetup setup, const std::vector<Eigen::Vector2d>
   }
   for (MortarSlave& s : slaves_) s.area = area[static_cast<std::size_t>(s.node)];
   overlapped_.assign(setup_.slave_faces.size(), {});
+  committed_.assign(setup_.slave_faces.size(), {});
+  term_faces_.assign(setup_.slave_faces.size(), {});
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
     rebuild_dofs(slaves_[i]);
     nodes_.push_back(std::make_unique<MortarNode>(*this, static_cast<int>(i)));
@@ -132,7 +146,17 @@ bool MortarPair::find_overlaps(const Eigen::VectorXd& u) {
       overlapped_[e] = std::move(overlapped);
     }
   }
+  if (changed) update_term_faces();
   return changed;
+}
+
+void MortarPair::update_term_faces() {
+  for (std::size_t e = 0; e < overlapped_.size(); ++e) {
+    std::vector<int>& t = term_faces_[e];
+    t = overlapped_[e];
+    for (int f : committed_[e])
+      if (std::find(t.begin(), t.end(), f) == t.end()) t.push_back(f);
+  }
 }
 
 void MortarPair::rebuild_dofs(MortarSlave& s) {
@@ -149,18 +173,25 @@ void MortarPair::rebuild_dofs(MortarSlave& s) {
     }
   s.n_slave_nodes = static_cast<int>(s.nodes.size());
   for (const auto& [e, k] : s.faces)
-    for (int f : overlapped_[static_cast<std::size_t>(e)])
+    for (int f : term_faces_[static_cast<std::size_t>(e)])
       for (int q : setup_.master_faces[static_cast<std::size_t>(f)]) add(q);
   s.dofs.clear();
   for (int n : s.nodes)
     for (int c = 0; c < kDofsPerNode; ++c) s.dofs.push_back(DofMap::displacement(n, c));
   s.dofs.push_back(s.multiplier);
+  if (s.tangent_multiplier >= 0) s.dofs.push_back(s.tangent_multiplier);
 }
 
 bool MortarPair::update_connectivity(const EvaluationState& state) {
   statistics_ = {};
+  const bool new_attempt = state.total_time != attempt_time_ || state.dt != attempt_dt_ || !searched_once_;
+  if (new_attempt) {
+    attempt_time_ = state.total_time, attempt_dt_ = state.dt, releases_ = 0;
+    for (MortarSlave& s : slaves_) s.switches = 0, s.held_stick = false, s.direction = 0;
+  }
   bool changed = find_overlaps(state.u);
-  if (changed || !searched_once_) {
+  if (changed || !searched_once_ || dofs_stale_) {
+    dofs_stale_ = false;
     for (MortarSlave& s : slaves_) {
       const std::vector<int> previous = s.dofs;
       rebuild_dofs(s);
@@ -168,13 +199,58 @@ bool MortarPair::update_connectivity(const EvaluationState& state) {
     }
   }
   for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    MortarSlave& s = slaves_[i];
     const bool closed = nodes_[i]->closed(state);
-    if (searched_once_ && closed != slaves_[i].closed) ++statistics_.status_changes;
-    slaves_[i].closed = closed;
+    const MortarNode::Friction f = mu() > 0 ? nodes_[i]->friction(state) : MortarNode::Friction{};
+    const bool friction_changed = closed && s.closed && (f.stick != s.stick || f.direction != s.direction);
+    if (searched_once_ && (closed != s.closed || friction_changed)) ++statistics_.status_changes;
+    if (!new_attempt && friction_changed && ++s.switches >= kMaxFrictionSwitches) s.held_stick = true;
+    s.closed = closed;
+    s.stick = f.stick;
+    s.direction = f.direction;
     if (closed) ++statistics_.closed;
+    if (s.held_stick) ++statistics_.held;
   }
   searched_once_ = true;
   return changed;
+}
+
+Acceptance MortarPair::on_converged(const EvaluationState& state) {
+  bool released = false;
+  for (MortarSlave& s : slaves_) {
+    if (!s.held_stick) continue;
+    const double lambda_n = state.u[s.multiplier], lambda_t = state.u[s.tangent_multiplier];
+    if (std::abs(lambda_t) > mu() * std::max(lambda_n, 0.0) * (1 + 1e-9) + 1e-12 * std::abs(lambda_n)) {
+      s.held_stick = false;
+      s.switches = 0;
+      released = true;
+    }
+  }
+  if (!released) {
+    for (MortarSlave& s : slaves_) s.held_stick = false;
+    return Acceptance::Accept;
+  }
+  if (++releases_ > kMaxReleases)
+    throw ModelError(setup_.name + ": the friction active set keeps cycling (nodes held in stick by the guard leave "
+                     "the friction cone after " + std::to_string(kMaxReleases) + " releases)");
+  return Acceptance::Iterate;
+}
+
+void MortarPair::commit(const EvaluationState& state) {
+  if (!(mu() > 0)) return;
+  for (std::size_t i = 0; i < slaves_.size(); ++i) {
+    MortarSlave& s = slaves_[i];
+    const MortarNode::Friction f = nodes_[i]->friction(state);
+    if (!f.closed || f.stick) continue;
+    const MortarNode::Gap g = nodes_[i]->gap(state.u, state.nlgeom);
+    s.total_slip += std::abs(f.slip / g.D);
+    s.dissipation += std::abs(state.u[s.tangent_multiplier] * f.slip);
+  }
+  // The next increment's slip is measured from the integrals at this state,
+  // over the faces overlapped now.
+  committed_ = overlapped_;
+  update_term_faces();
+  dofs_stale_ = true;
 }
 
 ContactPairValues MortarPair::values(const EvaluationState& state) const {
@@ -192,6 +268,17 @@ ContactPairValues MortarPair::values(const EvaluationState& state) const {
     ContactNodeValues v;
     v.node = s.node;
     v.status = nodes_[i]->closed(state) ? ContactNodeValues::Status::Slip : ContactNodeValues::Status::Open;
+    v.total_slip = s.total_slip;
+    v.dissipation = s.dissipation;
+    if (mu() > 0 && v.status != ContactNodeValues::Status::Open && g.covered) {
+      const MortarNode::Friction f = nodes_[i]->friction(state);
+      const double lambda_t = state.u[s.tangent_multiplier];
+      v.status = f.stick ? ContactNodeValues::Status::Stick : ContactNodeValues::Status::Slip;
+      v.shear = lambda_t;
+      v.tangential_force = lambda_t * g.D;
+      v.slip = f.slip / g.D;
+      if (!f.stick) v.total_slip += std::abs(v.slip), v.dissipation += std::abs(lambda_t * f.slip);
+    }
     v.gap = g.covered ? g.gap / g.D : 0.0;
     v.pressure = state.u[s.multiplier];
     v.normal_force = g.covered ? v.pressure * g.D : 0.0;
@@ -203,6 +290,7 @@ ContactPairValues MortarPair::values(const EvaluationState& state) const {
         v.master_face = label.second;
       }
     out.total_force += v.force;
+    out.dissipation += v.dissipation;
     out.nodes.push_back(v);
   }
   return out;
