@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tether/assembly/saved_state.hpp"
 #include "tether/contact/mortar_node.hpp"
 #include "tether/core/error.hpp"
 #include "tether/contact/mortar_segmentation.hpp"
@@ -22,6 +23,7 @@ constexpr int kMaxFrictionSwitches = 2;
 /// Releases of held nodes (found outside the friction cone at convergence)
 /// within one attempt before the pair gives up.
 constexpr int kMaxReleases = 10;
+constexpr double kStateTag = 2101;  ///< first value of a saved MortarPair state
 
 Vec2T<double> current(const std::vector<Eigen::Vector2d>& reference, const Eigen::VectorXd& u, int node) {
   const Eigen::Vector2d& X = reference[static_cast<std::size_t>(node)];
@@ -251,6 +253,44 @@ void MortarPair::commit(const EvaluationState& state) {
   committed_ = overlapped_;
   update_term_faces();
   dofs_stale_ = true;
+}
+
+void MortarPair::save_state(std::vector<double>& out) const {
+  out.push_back(kStateTag);
+  out.push_back(static_cast<double>(slaves_.size()));
+  out.push_back(static_cast<double>(committed_.size()));
+  out.push_back(searched_once_ ? 1 : 0);
+  for (const MortarSlave& s : slaves_) out.insert(out.end(), {static_cast<double>(s.node), s.total_slip, s.dissipation});
+  for (const std::vector<int>& faces : committed_) {
+    out.push_back(static_cast<double>(faces.size()));
+    for (int f : faces) out.push_back(static_cast<double>(f));
+  }
+}
+
+void MortarPair::load_state(std::span<const double>& in) {
+  using namespace saved_state;
+  expect_tag(in, kStateTag, "mortar contact pair");
+  const int n = static_cast<int>(slaves_.size()), n_faces = static_cast<int>(committed_.size());
+  take_int(in, n, n, "number of slave nodes");
+  take_int(in, n_faces, n_faces, "number of slave faces");
+  const bool searched = take_int(in, 0, 1, "search flag") == 1;
+  std::vector<MortarSlave> slaves = slaves_;
+  for (MortarSlave& s : slaves) {
+    take_int(in, s.node, s.node, "slave node");
+    s.total_slip = take(in);
+    s.dissipation = take(in);
+  }
+  std::vector<std::vector<int>> committed(committed_.size());
+  const int last_face = static_cast<int>(setup_.master_faces.size()) - 1;
+  for (std::vector<int>& faces : committed) {
+    const int count = take_int(in, 0, last_face + 1, "number of committed master faces");
+    for (int k = 0; k < count; ++k) faces.push_back(take_int(in, 0, last_face, "committed master face"));
+  }
+  slaves_ = std::move(slaves);
+  committed_ = std::move(committed);
+  searched_once_ = searched;
+  update_term_faces();
+  for (MortarSlave& s : slaves_) rebuild_dofs(s);
 }
 
 ContactPairValues MortarPair::values(const EvaluationState& state) const {

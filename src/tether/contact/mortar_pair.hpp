@@ -110,6 +110,11 @@ class MortarPair final : public Contribution {
   /// accumulates slip and dissipation of the slipping nodes.
   void commit(const EvaluationState& state) override;
   [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return !(mu() > 0); }
+  /// Restart: per slave node the total slip and dissipation, per slave face
+  /// the master faces overlapped at the last commit, and whether the pair
+  /// has searched. Loading rebuilds the nodes' dof lists.
+  void save_state(std::vector<double>& out) const override;
+  void load_state(std::span<const double>& in) override;
   [[nodiscard]] double mu() const { return setup_.mu; }
   [[nodiscard]] bool linear_in_u(bool /*nlgeom*/) const override { return false; }
 
