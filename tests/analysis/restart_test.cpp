@@ -42,15 +42,19 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return text;
 }
 
-/// Variants of the deck: as written (HARD by multipliers, exact stick) and
-/// with augmented-Lagrangian contact and penalty (elastic-slip) friction, whose
-/// history is the Uzawa normal force and the committed tangential force.
+/// Variants of the deck: as written (HARD by multipliers, exact stick), with
+/// augmented-Lagrangian contact and penalty (elastic-slip) friction, whose
+/// history is the Uzawa normal force and the committed tangential force, and
+/// with mortar contact (history: the overlaps the slip is measured from,
+/// total slip and dissipation).
 std::vector<std::pair<std::string, std::string>> decks() {
   const std::string base = base_deck();
   std::string soft = replaced(base, "*FRICTION\n0.3\n",
                               "*SURFACE BEHAVIOR, ENFORCEMENT=AUGMENTED, PENALTY=1e5, TOLERANCE=1e-9\n"
                               "*FRICTION\n0.3, 20000\n");
-  return {{"lagrange contact, exact stick", base}, {"augmented contact, penalty friction", soft}};
+  return {{"lagrange contact, exact stick", base},
+          {"augmented contact, penalty friction", soft},
+          {"mortar contact, exact stick", replaced(base, "TYPE=NODE TO SURFACE", "TYPE=SURFACE TO SURFACE")}};
 }
 
 /// Records results and the restart states (round-tripped through the file format).

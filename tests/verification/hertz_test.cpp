@@ -14,6 +14,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <numbers>
 
 #include "verification_support.hpp"
@@ -47,8 +49,9 @@ HertzFit fit(const tether::testing::Run& run) {
   return f;
 }
 
-/// Generates the deck (cached in the build tree) and runs it.
-tether::testing::Run run_hertz(const std::string& name, const std::string& options) {
+/// Generates the deck (cached in the build tree) and runs it; `mortar`:
+/// the same deck with TYPE=SURFACE TO SURFACE (mortar contact).
+tether::testing::Run run_hertz(const std::string& name, const std::string& options, bool mortar = false) {
   if (std::system("command -v python3 > /dev/null 2>&1 && command -v gmsh > /dev/null 2>&1") != 0)
     throw std::runtime_error("skip");
   const fs::path dir = fs::path(TETHER_BINARY_DIR) / "tests" / "verification" / "hertz";
@@ -59,13 +62,23 @@ tether::testing::Run run_hertz(const std::string& name, const std::string& optio
                                 options + " --no-seat \"" + deck.string() + "\" > /dev/null";
     if (std::system(command.c_str()) != 0) throw std::runtime_error("generator failed: " + command);
   }
-  return tether::testing::run_deck_file(deck.string());
+  if (!mortar) return tether::testing::run_deck_file(deck.string());
+  std::ifstream in(deck);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck_text = text.str();
+  const std::string from = "TYPE=NODE TO SURFACE", to = "TYPE=SURFACE TO SURFACE";
+  const auto at = deck_text.find(from);
+  if (at == std::string::npos) throw std::runtime_error("no node-to-surface pair in " + deck.string());
+  return tether::testing::run_deck_text(deck_text.replace(at, from.size(), to));
 }
 
-void check(const std::string& name, const std::string& options, double e_star, double tolerance) {
+/// `tolerance` for p0 and the peak, `width_tolerance` (default: the same) for a.
+void check(const std::string& name, const std::string& options, double e_star, double tolerance, bool mortar = false,
+           double width_tolerance = 0) {
   tether::testing::Run run;
   try {
-    run = run_hertz(name, options);
+    run = run_hertz(name, options, mortar);
   } catch (const std::runtime_error& e) {
     if (std::string(e.what()) == "skip") GTEST_SKIP() << "python3 or gmsh not found";
     FAIL() << e.what();
@@ -73,13 +86,13 @@ void check(const std::string& name, const std::string& options, double e_star, d
   ASSERT_TRUE(run.summary.completed) << run.summary.message;
   const double a = std::sqrt(4 * kP * kR / (std::numbers::pi * e_star)), p0 = 2 * kP / (std::numbers::pi * a);
   const HertzFit f = fit(run);
-  std::printf("[ hertz ] %s: p0 %.2f (exact %.2f, %+.3f %%), peak nodal %.2f (%+.3f %%), a %.5f (exact %.5f, %+.3f %%), "
+  std::printf("[ hertz ] %s%s: p0 %.2f (exact %.2f, %+.3f %%), peak nodal %.2f (%+.3f %%), a %.5f (exact %.5f, %+.3f %%), "
               "%d increments, %d iterations\n",
-              name.c_str(), f.p0, p0, 100 * (f.p0 / p0 - 1), f.peak, 100 * (f.peak / p0 - 1), f.a, a,
+              name.c_str(), mortar ? " (mortar)" : "", f.p0, p0, 100 * (f.p0 / p0 - 1), f.peak, 100 * (f.peak / p0 - 1), f.a, a,
               100 * (f.a / a - 1), run.summary.increments, run.summary.iterations);
   EXPECT_NEAR(f.p0 / p0, 1, tolerance);
   EXPECT_NEAR(f.peak / p0, 1, tolerance);
-  EXPECT_NEAR(f.a / a, 1, tolerance);
+  EXPECT_NEAR(f.a / a, 1, width_tolerance > 0 ? width_tolerance : tolerance);
   // The contact force carries the half-model load exactly (equilibrium of the cylinder).
   EXPECT_NEAR(run.last().contact.at(0).total_force.y(), kP / 2, 1e-6 * kP);
   // Newton: every increment within 8 iterations.
@@ -91,5 +104,18 @@ TEST(Hertz, Cpe4OnElasticBlock25k) { check("hertz_cpe4_25k", "--dofs 25k --eleme
 TEST(Hertz, Cpe8OnElasticBlock25k) { check("hertz_cpe8_25k", "--dofs 25k --element CPE8", kE / (2 * (1 - kNu * kNu)), 0.01); }
 
 TEST(Hertz, Cpe4OnRigidFlat25k) { check("hertz_cpe4_rigid_25k", "--dofs 25k --element CPE4 --rigid-flat", kE / (1 - kNu * kNu), 0.01); }
+
+// Mortar contact (TYPE=SURFACE TO SURFACE) on the same decks: the dual
+// multipliers are the nodal pressures. p0 and the peak within 0.5 % (the
+// issue's figure; measured -0.04 % CPE4, -0.06 % CPE8); the fitted half-width
+// within 1 %: measured -0.58 % (CPE4) and -0.42 % (CPE8), where node-to-surface
+// gives -0.50 % and +0.17 % on the same meshes.
+TEST(Hertz, MortarCpe4OnElasticBlock25k) {
+  check("hertz_cpe4_25k", "--dofs 25k --element CPE4", kE / (2 * (1 - kNu * kNu)), 0.005, true, 0.01);
+}
+
+TEST(Hertz, MortarCpe8OnElasticBlock25k) {
+  check("hertz_cpe8_25k", "--dofs 25k --element CPE8", kE / (2 * (1 - kNu * kNu)), 0.005, true, 0.01);
+}
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "tether/analysis/constraint_builder.hpp"
 #include "tether/analysis/contact_builder.hpp"
+#include "tether/analysis/mortar_builder.hpp"
 #include "tether/constraints/linear_constraint.hpp"
 #include "tether/core/error.hpp"
 
@@ -59,7 +60,13 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
                          ": exact constraints in both directions over-constrain the interface (repeated where "
                          "nodes coincide); use one pass (slave = the finer surface) or a soft law "
                          "(PRESSURE-OVERCLOSURE=LINEAR/EXPONENTIAL) for two-pass");
-    contact_pairs_.push_back(make_contact_pair(model, pair, model.coords, dofs_));
+    if (pair.node_to_surface) {
+      contact_order_.emplace_back(false, contact_pairs_.size());
+      contact_pairs_.push_back(make_contact_pair(model, pair, model.coords, dofs_));
+    } else {
+      contact_order_.emplace_back(true, mortar_pairs_.size());
+      mortar_pairs_.push_back(make_mortar_pair(model, pair, model.coords, dofs_));
+    }
   }
 
   for (const ConstraintData& data : model.constraints) {
@@ -99,6 +106,14 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
     constraints_.push_back(
         std::make_unique<ConstraintElement>(std::move(function), enforcement, first, data.name, data.nodes_or_terms()));
   }
+}
+
+std::vector<ContactPairValues> Discretization::contact_values(const EvaluationState& state) const {
+  std::vector<ContactPairValues> out;
+  out.reserve(contact_order_.size());
+  for (const auto& [mortar, k] : contact_order_)
+    out.push_back(mortar ? mortar_pairs_[k]->values(state) : contact_pairs_[k]->values(state));
+  return out;
 }
 
 double Discretization::thickness(int element) const {

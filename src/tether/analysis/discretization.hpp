@@ -13,6 +13,7 @@
 #include "tether/constraints/constraint_element.hpp"
 #include "tether/constraints/user_constraint_element.hpp"
 #include "tether/contact/contact_pair.hpp"
+#include "tether/contact/mortar_pair.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/elements/continuum_element.hpp"
 #include "tether/elements/face_pressure.hpp"
@@ -49,6 +50,11 @@ class Discretization {
 
   /// One per *CONTACT PAIR; each is assembled before its nodes (ContactPair::nodes()).
   [[nodiscard]] const std::vector<std::unique_ptr<ContactPair>>& contact_pairs() const { return contact_pairs_; }
+  /// One per *CONTACT PAIR of TYPE=SURFACE TO SURFACE (mortar); each is
+  /// assembled before its nodes (MortarPair::nodes()).
+  [[nodiscard]] const std::vector<std::unique_ptr<MortarPair>>& mortar_pairs() const { return mortar_pairs_; }
+  /// Contact output of every *CONTACT PAIR at the state, in deck order.
+  [[nodiscard]] std::vector<ContactPairValues> contact_values(const EvaluationState& state) const;
 
   /// One FacePressure per entry of `loads` (pressure set later with set_pressure).
   [[nodiscard]] std::vector<std::unique_ptr<FacePressure>> make_pressures(const std::vector<PressureLoad>& loads) const;
@@ -68,6 +74,9 @@ class Discretization {
   std::vector<std::unique_ptr<UserConstraintElement>> user_constraints_;
   std::vector<EliminatedConstraint> eliminated_;
   std::vector<std::unique_ptr<ContactPair>> contact_pairs_;
+  std::vector<std::unique_ptr<MortarPair>> mortar_pairs_;
+  /// Per *CONTACT PAIR in deck order: (mortar, index into mortar_pairs_ or contact_pairs_).
+  std::vector<std::pair<bool, std::size_t>> contact_order_;
   double length_scale_ = 1;
 };
 

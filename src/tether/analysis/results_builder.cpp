@@ -143,7 +143,7 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
     }
   for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state, dofs));
   for (const auto& c : discretization.user_constraints()) r.multipliers.push_back(c->values(state));
-  for (const auto& pair : discretization.contact_pairs()) r.contact.push_back(pair->values(state));
+  r.contact = discretization.contact_values(state);
   std::size_t k = 0;
   for (const auto& e : discretization.eliminated()) {
     MultiplierValues v;

@@ -80,6 +80,7 @@ std::vector<Contribution*> StaticAnalysis::stateful_order() const {
   for (const auto& c : disc.constraints()) out.push_back(c.get());
   for (const auto& c : disc.user_constraints()) out.push_back(c.get());
   for (const auto& pair : disc.contact_pairs()) out.push_back(pair.get());
+  for (const auto& pair : disc.mortar_pairs()) out.push_back(pair.get());
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/constraint_checks.hpp"
 #include "tether/analysis/contact_builder.hpp"
+#include "tether/analysis/mortar_builder.hpp"
 #include "tether/core/error.hpp"
 #include "tether/solvers/condensed_solver.hpp"
 
@@ -100,6 +101,10 @@ void StepSystem::gather_contributions() {
     contributions_.push_back(pair.get());  // searches before its nodes are evaluated
     for (Contribution* node : pair->nodes()) contributions_.push_back(node);
   }
+  for (const auto& pair : disc.mortar_pairs()) {
+    contributions_.push_back(pair.get());  // finds the overlaps before its nodes are evaluated
+    for (Contribution* node : pair->nodes()) contributions_.push_back(node);
+  }
   const auto n_contact = contributions_.size() - n_bulk;
   for (const auto& p : pressures_) contributions_.push_back(p.get()), load_contributions_.push_back(p.get());
   if (step_.procedure == StepProcedure::ImplicitDynamic)
@@ -142,8 +147,17 @@ std::vector<int> StepSystem::condensation_interface(const EquationMap& equations
   // Not under NLGEOM: the bulk changes at every iteration there, and the
   // reserved block would only add fill to the ordinary factorization.
   const auto& pairs = discretization_.contact_pairs();
-  if (settings_.solver != SolverKind::Auto || !settings_.condense_contact || step_.nlgeom || pairs.empty()) return {};
+  const auto& mortar = discretization_.mortar_pairs();
+  if (settings_.solver != SolverKind::Auto || !settings_.condense_contact || step_.nlgeom ||
+      (pairs.empty() && mortar.empty()))
+    return {};
   std::vector<int> interface = contact_equations(pairs, discretization_.dofs(), equations);
+  if (!mortar.empty()) {
+    const std::vector<int> more = mortar_equations(mortar, discretization_.dofs(), equations);
+    interface.insert(interface.end(), more.begin(), more.end());
+    std::sort(interface.begin(), interface.end());
+    interface.erase(std::unique(interface.begin(), interface.end()), interface.end());
+  }
   const auto m = static_cast<int>(interface.size());
   if (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()) interface.clear();
   return interface;

@@ -147,9 +147,16 @@ void handle_contact_pair(DeckState& state, const KeywordBlock& block, const Para
     throw InputError(block.where, "undefined INTERACTION=" + interaction +
                                       ": expected the name of a *SURFACE INTERACTION");
   const std::string type = params.name("TYPE");
-  if (type == "SURFACE TO SURFACE")
-    throw InputError(block.where, "TYPE=SURFACE TO SURFACE is not supported: tether's contact is node to surface "
-                                  "(use TYPE=NODE TO SURFACE)");
+  if (type == "LINMORTAR" || type == "PGMORTAR" || type == "PGLINMORTAR")
+    throw InputError(block.where, "TYPE=" + type + " (a CalculiX mortar variant) is not modelled: TYPE=MORTAR or "
+                                  "SURFACE TO SURFACE selects tether's mortar contact (dual multipliers)");
+  const bool mortar = type == "SURFACE TO SURFACE" || type == "MORTAR";
+  if (mortar && params.given("SMOOTH"))
+    throw InputError(block.where, "SMOOTH applies to TYPE=NODE TO SURFACE only: mortar contact integrates the "
+                                  "master faces as they are");
+  if (mortar && params.given("SMALL SLIDING"))
+    state.warn(block.where, "SMALL SLIDING with TYPE=" + type + ": tether's mortar contact recomputes the "
+                            "segmentation at every iteration (finite sliding), which includes small sliding");
   if (block.data.empty()) throw InputError(block.where, "*CONTACT PAIR needs a data line 'slave surface, master surface'");
   for (const DataLine& line : block.data) {
     const auto f = split_data_line(line.text).fields;
@@ -163,7 +170,11 @@ void handle_contact_pair(DeckState& state, const KeywordBlock& block, const Para
       throw InputError(pair.where, "master surface '" + f[1] + "' must be made of element faces (TYPE=ELEMENT)");
     if (to_upper(f[0]) == to_upper(f[1])) throw InputError(pair.where, "the slave and master surfaces are the same");
     pair.master = master.name;
-    pair.small_sliding = params.given("SMALL SLIDING");
+    if (mortar && surface_named(state, f[0], pair.where, "slave").kind != Surface::Kind::ElementFaces)
+      throw InputError(pair.where, "slave surface '" + f[0] + "' is node-based: mortar contact (TYPE=" + type +
+                                       ") integrates over the slave faces and needs a surface of element faces");
+    pair.node_to_surface = !mortar;
+    pair.small_sliding = params.given("SMALL SLIDING") && !mortar;
     if (params.given("ADJUST")) {
       pair.adjust = params.real("ADJUST");
       if (pair.adjust < 0) throw InputError(block.where, "ADJUST must be a clearance >= 0");

@@ -359,17 +359,23 @@ std::vector<KeywordSpec> build_table() {
        "`mu[, stick slope]` (the stick slope is CalculiX's; 0 or absent: exact stick)",
        {real("ELASTIC SLIP", "0", "ABAQUS: slip at which the full friction force is reached (a stick penalty).")},
        handle_friction, ""},
-      {"CONTACT PAIR", kModelData, "Node-to-surface contact of a slave surface against a master surface.",
-       "`slave_surface, master_surface` (master: element faces; slave: element faces or nodes; the stiffer "
+      {"CONTACT PAIR", kModelData, "Contact of a slave surface against a master surface (node to surface, or mortar).",
+       "`slave_surface, master_surface` (master: element faces; slave: element faces or nodes, mortar: element "
+       "faces only; the stiffer "
        "body should be the master: a slave 10 or more times stiffer is warned about)",
        {name("INTERACTION", "The *SURFACE INTERACTION to use.", true),
-        choice("TYPE", "NODE TO SURFACE", {"NODE TO SURFACE", "SURFACE TO SURFACE"},
-               "NODE TO SURFACE (tether's formulation); SURFACE TO SURFACE is refused."),
-        flag("SMALL SLIDING", "Keep the pairing found at the start (no re-pairing while sliding)."),
+        choice("TYPE", "NODE TO SURFACE",
+               {"NODE TO SURFACE", "SURFACE TO SURFACE", "MORTAR", "LINMORTAR", "PGMORTAR", "PGLINMORTAR"},
+               "NODE TO SURFACE; SURFACE TO SURFACE or MORTAR (CalculiX): mortar contact with dual multipliers "
+               "(slave: element faces; HARD by multipliers, frictionless or Coulomb friction with exact stick). "
+               "CalculiX's LINMORTAR, PGMORTAR and PGLINMORTAR are refused."),
+        flag("SMALL SLIDING", "Keep the pairing found at the start (no re-pairing while sliding). Mortar: "
+                              "warned about, the segmentation is updated at every iteration all the same."),
         real("ADJUST", "0", "Move slave nodes within this clearance onto the master surface before the analysis."),
         real("SMOOTH", "0", "Round each corner of a linear master surface over this fraction s of both adjacent faces "
                             "(0 < s <= 0.5; a C1 surface, continuous normal). Absent or 0: no smoothing (ABAQUS "
-                            "smooths by 0.2 by default; tether only when asked). Quadratic master faces are refused.")},
+                            "smooths by 0.2 by default; tether only when asked). Quadratic master faces are refused, and so is "
+                            "SMOOTH with mortar contact.")},
        handle_contact_pair, ""},
       {"INITIAL CONDITIONS", kModelData, "Initial values: TYPE=VELOCITY (the velocity at the start of the first "
        "dynamic step). Other types are refused.",

@@ -59,7 +59,7 @@ struct ContactPairData {
   std::string interaction;  ///< name of a SurfaceInteraction (upper case)
   std::string slave;        ///< surface name (element faces or nodes)
   std::string master;       ///< surface name (element faces)
-  bool node_to_surface = true;  ///< TYPE=NODE TO SURFACE (tether's formulation); SURFACE TO SURFACE is refused
+  bool node_to_surface = true;  ///< TYPE=NODE TO SURFACE; false: SURFACE TO SURFACE or MORTAR (mortar contact)
   bool small_sliding = false;   ///< SMALL SLIDING: keep the first pairing
   double adjust = 0;            ///< ADJUST=value: move slave nodes within this clearance onto the master [length]
   /// SMOOTH=s: round each corner of a linear master surface over the fraction

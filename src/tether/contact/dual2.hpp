@@ -1,0 +1,129 @@
+#pragma once
+/// \file Second-order forward automatic differentiation: a scalar that carries
+/// its value, gradient and Hessian with respect to n independent variables.
+///
+/// Used by the mortar contact kinematics, whose weighted gaps depend on the
+/// slave normals, the projections and the segmentation in ways too long to
+/// differentiate twice by hand: the same templated code runs on double (value
+/// only) and on Dual2 (value, exact gradient and Hessian). A Dual2 with an
+/// empty gradient is a constant. Cost of a product: O(n²).
+
+#include <Eigen/Core>
+#include <cmath>
+
+namespace tether {
+
+class Dual2 {
+ public:
+  Dual2() = default;
+  Dual2(double value) : v_(value) {}  // NOLINT: constants mix freely with variables
+  /// The independent variable `index` of `n`, with the given value.
+  /// `hessian` false: first derivatives only (every result of such
+  /// variables has an empty Hessian; do not mix with second-order ones).
+  static Dual2 variable(double value, int index, int n, bool hessian = true) {
+    Dual2 d(value);
+    d.g_ = Eigen::VectorXd::Zero(n);
+    d.g_[index] = 1;
+    if (hessian) d.h_ = Eigen::MatrixXd::Zero(n, n);
+    return d;
+  }
+
+  [[nodiscard]] double value() const { return v_; }
+  /// Gradient (empty for a constant).
+  [[nodiscard]] const Eigen::VectorXd& gradient() const { return g_; }
+  /// Hessian (empty for a constant or a first-order value).
+  [[nodiscard]] const Eigen::MatrixXd& hessian() const { return h_; }
+  [[nodiscard]] bool constant() const { return g_.size() == 0; }
+
+  /// f(this) given f, f' and f'' at the value (chain rule to second order).
+  [[nodiscard]] Dual2 chain(double f, double df, double ddf) const {
+    Dual2 r(f);
+    if (constant()) return r;
+    r.g_ = df * g_;
+    if (second()) r.h_ = df * h_ + ddf * g_ * g_.transpose();
+    return r;
+  }
+
+  Dual2& operator+=(const Dual2& b) {
+    v_ += b.v_;
+    if (b.constant()) return *this;
+    if (constant()) {
+      g_ = b.g_;
+      h_ = b.h_;
+    } else {
+      g_ += b.g_;
+      if (second()) h_ += b.h_;
+    }
+    return *this;
+  }
+  Dual2& operator-=(const Dual2& b) {
+    v_ -= b.v_;
+    if (b.constant()) return *this;
+    if (constant()) {
+      g_ = -b.g_;
+      h_ = -b.h_;
+    } else {
+      g_ -= b.g_;
+      if (second()) h_ -= b.h_;
+    }
+    return *this;
+  }
+  Dual2& operator*=(const Dual2& b) {
+    if (b.constant()) {
+      v_ *= b.v_;
+      if (!constant()) g_ *= b.v_, h_ *= b.v_;
+      return *this;
+    }
+    if (constant()) {
+      const double a = v_;
+      *this = b;
+      v_ *= a;
+      g_ *= a;
+      h_ *= a;
+      return *this;
+    }
+    if (second()) {
+      h_ *= b.v_;
+      h_.noalias() += v_ * b.h_;
+      h_.noalias() += g_ * b.g_.transpose();
+      h_.noalias() += b.g_ * g_.transpose();
+    }
+    g_ = v_ * b.g_ + b.v_ * g_;
+    v_ *= b.v_;
+    return *this;
+  }
+  Dual2& operator/=(const Dual2& b) { return *this *= b.inverse(); }
+
+  [[nodiscard]] Dual2 inverse() const { return chain(1 / v_, -1 / (v_ * v_), 2 / (v_ * v_ * v_)); }
+  friend Dual2 operator-(Dual2 a) {
+    a.v_ = -a.v_;
+    if (!a.constant()) a.g_ = -a.g_, a.h_ = -a.h_;
+    return a;
+  }
+  /// Carries a Hessian (second-order variables).
+  [[nodiscard]] bool second() const { return h_.size() > 0; }
+  friend Dual2 operator+(Dual2 a, const Dual2& b) { return a += b; }
+  friend Dual2 operator-(Dual2 a, const Dual2& b) { return a -= b; }
+  friend Dual2 operator*(Dual2 a, const Dual2& b) { return a *= b; }
+  friend Dual2 operator/(Dual2 a, const Dual2& b) { return a /= b; }
+  friend bool operator<(const Dual2& a, const Dual2& b) { return a.v_ < b.v_; }
+  friend bool operator>(const Dual2& a, const Dual2& b) { return a.v_ > b.v_; }
+  friend bool operator<=(const Dual2& a, const Dual2& b) { return a.v_ <= b.v_; }
+  friend bool operator>=(const Dual2& a, const Dual2& b) { return a.v_ >= b.v_; }
+
+ private:
+  double v_ = 0;
+  Eigen::VectorXd g_;
+  Eigen::MatrixXd h_;
+};
+
+inline Dual2 sqrt(const Dual2& a) {
+  const double s = std::sqrt(a.value());
+  return a.chain(s, 0.5 / s, -0.25 / (s * a.value()));
+}
+
+/// The value of a double or a Dual2 (for decisions: branches, clipping).
+inline double value_of(double a) { return a; }
+inline double value_of(const Dual2& a) { return a.value(); }
+
+}  // namespace tether

@@ -1,0 +1,290 @@
+#include "tether/contact/mortar_segmentation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tether/fem/quadrature.hpp"
+
+namespace tether {
+
+using std::sqrt;
+
+namespace {
+
+/// Newton steps run on T after the double iteration has converged: each
+/// step raises the order of the derivatives that are exact by one, so three
+/// leave value, gradient and Hessian of the root exact to round-off.
+constexpr int kDerivativeSteps = 3;
+constexpr int kMaxNewton = 50;
+/// Convergence of the double Newton iteration on |Δξ|: the derivative steps
+/// that follow take the root to round-off (quadratic convergence), so this
+/// only has to be within their reach, and well above the round-off floor of
+/// the iteration itself (a tighter test can stall and drop a projection).
+constexpr double kXiTolerance = 1e-10;
+/// Gauss points of the whole-segment integrals of the dual basis: exact for
+/// straight segments (polynomial integrands), to about 1e-7 relative on a
+/// strongly curved 3-node segment.
+constexpr int kElementPoints = 8;
+
+/// Gauss–Legendre rule with n points, 1 <= n <= 20, computed once.
+const std::vector<LinePoint>& gauss_rule(int n) {
+  static const std::vector<std::vector<LinePoint>> rules = [] {
+    std::vector<std::vector<LinePoint>> r(21);
+    for (int k = 1; k <= 20; ++k) r[static_cast<std::size_t>(k)] = gauss_legendre(k);
+    return r;
+  }();
+  return rules.at(static_cast<std::size_t>(n));
+}
+
+template <class T>
+Vec2T<double> values(const Vec2T<T>& a) {
+  return {value_of(a.x), value_of(a.y)};
+}
+
+template <class T>
+std::vector<Vec2T<double>> values(std::span<const Vec2T<T>> a) {
+  std::vector<Vec2T<double>> out;
+  out.reserve(a.size());
+  for (const auto& p : a) out.push_back(values(p));
+  return out;
+}
+
+template <class T>
+Vec2T<T> interpolate(std::span<const Vec2T<T>> x, const std::array<T, 3>& N) {
+  Vec2T<T> r{T(0.0), T(0.0)};
+  for (std::size_t a = 0; a < x.size(); ++a) r = r + N[a] * x[a];
+  return r;
+}
+
+/// f(ξ) = (p - x(ξ)) × n(ξ) and f'(ξ) on a slave segment with nodal normals.
+template <class T>
+void slave_ray(const Vec2T<T>& p, std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals, const T& xi, T& f,
+               T& df) {
+  std::array<T, 3> N, dN;
+  segment_shapes(static_cast<int>(x.size()), xi, N, dN);
+  const Vec2T<T> d = p - interpolate(x, N);
+  const Vec2T<T> n = interpolate(normals, N), dn = interpolate(normals, dN), dx = interpolate(x, dN);
+  f = cross(d, n);
+  df = cross(d, dn) - cross(dx, n);
+}
+
+/// f(η) = (y(η) - p) × d and f'(η) on a master segment.
+template <class T>
+void master_ray(const Vec2T<T>& p, const Vec2T<T>& d, std::span<const Vec2T<T>> y, const T& eta, T& f, T& df) {
+  std::array<T, 3> N, dN;
+  segment_shapes(static_cast<int>(y.size()), eta, N, dN);
+  f = cross(interpolate(y, N) - p, d);
+  df = cross(interpolate(y, dN), d);
+}
+
+/// Newton on a scalar equation given by `residual(xi, f, df)` for the
+/// double inputs, then kDerivativeSteps on T. None when it does not converge
+/// or leaves |ξ| <= limit.
+template <class T, class DoubleResidual, class TResidual>
+std::optional<T> solve_scalar(double start, double limit, DoubleResidual residual_double, TResidual residual_t) {
+  double xi = start;
+  bool converged = false;
+  for (int it = 0; it < kMaxNewton; ++it) {
+    double f = 0, df = 0;
+    residual_double(xi, f, df);
+    if (!(std::abs(df) > 0) || !std::isfinite(f)) return std::nullopt;
+    const double step = f / df;
+    xi -= step;
+    if (!(std::abs(xi) <= limit)) return std::nullopt;
+    if (std::abs(step) <= kXiTolerance) {
+      converged = true;
+      break;
+    }
+  }
+  if (!converged) return std::nullopt;
+  T t(xi);
+  for (int k = 0; k < kDerivativeSteps; ++k) {
+    T f, df;
+    residual_t(t, f, df);
+    t = t - f / df;
+  }
+  return t;
+}
+
+/// The overlap [ξ_lo, ξ_hi] on slave segment x of master segment y: the
+/// slave points whose normal ray meets y. Its ends are slave ends whose
+/// nodal normal ray meets y (|η| <= 1) and projections of master ends that
+/// fall on the slave (|ξ| <= 1). None when that leaves no interval.
+template <class T>
+std::optional<std::array<T, 2>> overlap_of(std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals,
+                                           std::span<const Vec2T<T>> y) {
+  constexpr double inside = 1 + 1e-12;
+  std::vector<T> ends;
+  for (int end = 0; end < 2; ++end) {
+    const std::optional<T> eta = project_onto_master<T>(x[static_cast<std::size_t>(end)],
+                                                        normals[static_cast<std::size_t>(end)], y);
+    if (eta && std::abs(value_of(*eta)) <= inside) ends.push_back(T(end == 0 ? -1.0 : 1.0));
+    const std::optional<T> xi = project_along_slave_normals<T>(y[static_cast<std::size_t>(end)], x, normals);
+    if (xi && std::abs(value_of(*xi)) <= inside) ends.push_back(std::max(T(-1.0), std::min(T(1.0), *xi)));
+  }
+  if (ends.size() < 2) return std::nullopt;
+  const auto [lo, hi] = std::minmax_element(ends.begin(), ends.end());
+  if (!(value_of(*hi) - value_of(*lo) > 1e-14)) return std::nullopt;
+  return std::array<T, 2>{*lo, *hi};
+}
+
+}  // namespace
+
+template <class T>
+void segment_shapes(int n_nodes, const T& xi, std::array<T, 3>& N, std::array<T, 3>& dN) {
+  if (n_nodes == 2) {
+    N = {0.5 * (1.0 - xi), 0.5 * (1.0 + xi), T(0.0)};
+    dN = {T(-0.5), T(0.5), T(0.0)};
+  } else {
+    N = {0.5 * xi * (xi - 1.0), 0.5 * xi * (xi + 1.0), 1.0 - xi * xi};
+    dN = {xi - 0.5, xi + 0.5, -2.0 * xi};
+  }
+}
+
+template <class T>
+Vec2T<T> segment_normal(std::span<const Vec2T<T>> x, const T& xi) {
+  std::array<T, 3> N, dN;
+  segment_shapes(static_cast<int>(x.size()), xi, N, dN);
+  const Vec2T<T> t = interpolate(x, dN);
+  const T length = sqrt(dot(t, t));
+  return {t.y / length, -t.x / length};
+}
+
+template <class T>
+Vec2T<T> nodal_normal(std::span<const std::vector<Vec2T<T>>> segments, std::span<const int> at) {
+  Vec2T<T> sum{T(0.0), T(0.0)};
+  for (std::size_t k = 0; k < segments.size(); ++k) {
+    const T xi(at[k] == 0 ? -1.0 : at[k] == 1 ? 1.0 : 0.0);
+    sum = sum + segment_normal<T>(segments[k], xi);
+  }
+  const T length = sqrt(dot(sum, sum));
+  return {sum.x / length, sum.y / length};
+}
+
+template <class T>
+std::optional<T> project_along_slave_normals(const Vec2T<T>& p, std::span<const Vec2T<T>> x,
+                                             std::span<const Vec2T<T>> normals) {
+  const Vec2T<double> pd = values(p);
+  const std::vector<Vec2T<double>> xd = values(x), nd = values(normals);
+  const Vec2T<double> chord = xd[1] - xd[0], mid = 0.5 * (xd[0] + xd[1]);
+  const double start = 2 * dot(pd - mid, chord) / dot(chord, chord);
+  return solve_scalar<T>(
+      std::clamp(start, -2.0, 2.0), 3.0,
+      [&](double xi, double& f, double& df) {
+        slave_ray<double>(pd, xd, nd, xi, f, df);
+      },
+      [&](const T& xi, T& f, T& df) { slave_ray<T>(p, x, normals, xi, f, df); });
+}
+
+template <class T>
+std::optional<T> project_onto_master(const Vec2T<T>& p, const Vec2T<T>& d, std::span<const Vec2T<T>> y) {
+  const Vec2T<double> pd = values(p), dd = values(d);
+  const std::vector<Vec2T<double>> yd = values(y);
+  return solve_scalar<T>(
+      0.0, 3.0, [&](double eta, double& f, double& df) { master_ray<double>(pd, dd, yd, eta, f, df); },
+      [&](const T& eta, T& f, T& df) { master_ray<T>(p, d, y, eta, f, df); });
+}
+
+template <class T>
+std::array<std::array<T, 3>, 3> dual_coefficients(std::span<const Vec2T<T>> x) {
+  const int n = static_cast<int>(x.size());
+  std::array<std::array<T, 3>, 3> me{}, a{};
+  std::array<T, 3> de{};
+  for (int k = 0; k < 3; ++k)
+    for (int l = 0; l < 3; ++l) me[k][l] = T(0.0), a[k][l] = T(0.0);
+  for (int k = 0; k < 3; ++k) de[k] = T(0.0);
+  for (const LinePoint& q : gauss_rule(kElementPoints)) {
+    std::array<T, 3> N, dN;
+    segment_shapes(n, T(q.s), N, dN);
+    const Vec2T<T> dx = interpolate(x, dN);
+    const T w = q.weight * sqrt(dot(dx, dx));
+    for (int k = 0; k < n; ++k) {
+      de[k] += w * N[k];
+      for (int l = 0; l < n; ++l) me[k][l] += w * N[k] * N[l];
+    }
+  }
+  // A = D_e M_e⁻¹, i.e. M_e Aᵀ = D_e (M_e symmetric positive definite):
+  // Gaussian elimination without pivoting on [M_e | D_e].
+  std::array<std::array<T, 3>, 3> rhs{};
+  for (int k = 0; k < n; ++k)
+    for (int l = 0; l < n; ++l) rhs[k][l] = k == l ? de[k] : T(0.0);
+  for (int p = 0; p < n; ++p)
+    for (int r = p + 1; r < n; ++r) {
+      const T factor = me[r][p] / me[p][p];
+      for (int c = p; c < n; ++c) me[r][c] -= factor * me[p][c];
+      for (int c = 0; c < n; ++c) rhs[r][c] -= factor * rhs[p][c];
+    }
+  for (int r = n - 1; r >= 0; --r)
+    for (int c = 0; c < n; ++c) {
+      T s = rhs[r][c];
+      for (int k = r + 1; k < n; ++k) s -= me[r][k] * a[c][k];
+      a[c][r] = s / me[r][r];  // (Aᵀ)[r][c] = A[c][r]
+    }
+  return a;
+}
+
+template <class T>
+SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals,
+                                   std::span<const std::vector<Vec2T<T>>> masters, double thickness, int n_gauss,
+                                   std::span<const Vec2T<double>> measure) {
+  SegmentMortar<T> out;
+  const int n = static_cast<int>(x.size());
+  out.n_slave = n;
+  for (auto& d : out.D) d = T(0.0);
+  out.M.resize(masters.size());
+  out.overlap.assign(masters.size(), {1.0, -1.0});
+  std::vector<Vec2T<T>> measure_t;
+  for (const Vec2T<double>& p : measure) measure_t.push_back({T(p.x), T(p.y)});
+  const std::span<const Vec2T<T>> jacobian_of = measure.empty() ? x : std::span<const Vec2T<T>>(measure_t);
+  const auto A = dual_coefficients<T>(jacobian_of);
+  const std::vector<LinePoint>& gauss = gauss_rule(n_gauss);
+  const Vec2T<double> slave_dir = values(x[1]) - values(x[0]);
+  for (std::size_t f = 0; f < masters.size(); ++f) {
+    for (auto& row : out.M[f])
+      for (auto& m : row) m = T(0.0);
+    const std::span<const Vec2T<T>> y(masters[f]);
+    if (!(dot(values(y[1]) - values(y[0]), slave_dir) < 0)) continue;  // not facing the slave
+    const std::optional<std::array<T, 2>> range = overlap_of<T>(x, normals, y);
+    if (!range) continue;
+    const T& lo = (*range)[0];
+    const T& hi = (*range)[1];
+    out.overlap[f] = {value_of(lo), value_of(hi)};
+    const T half = 0.5 * (hi - lo), centre = 0.5 * (hi + lo);
+    for (const LinePoint& q : gauss) {
+      const T xi = centre + q.s * half;
+      std::array<T, 3> N, dN;
+      segment_shapes(n, xi, N, dN);
+      const Vec2T<T> dx = interpolate(jacobian_of, dN);
+      const T w = (q.weight * thickness) * half * sqrt(dot(dx, dx));
+      const std::optional<T> eta = project_onto_master<T>(interpolate(x, N), interpolate(normals, N), y);
+      if (!eta) continue;
+      std::array<T, 3> Nm, dNm;
+      segment_shapes(static_cast<int>(y.size()), *eta, Nm, dNm);
+      for (int k = 0; k < n; ++k) {
+        T phi(0.0);
+        for (int l = 0; l < n; ++l) phi += A[k][l] * N[l];
+        const T wphi = w * phi;
+        out.D[k] += wphi;
+        for (std::size_t m = 0; m < y.size(); ++m) out.M[f][k][m] += wphi * Nm[m];
+      }
+    }
+  }
+  return out;
+}
+
+#define TETHER_MORTAR_INSTANTIATE(T)                                                                               \
+  template void segment_shapes<T>(int, const T&, std::array<T, 3>&, std::array<T, 3>&);                            \
+  template Vec2T<T> segment_normal<T>(std::span<const Vec2T<T>>, const T&);                                        \
+  template Vec2T<T> nodal_normal<T>(std::span<const std::vector<Vec2T<T>>>, std::span<const int>);                 \
+  template std::optional<T> project_along_slave_normals<T>(const Vec2T<T>&, std::span<const Vec2T<T>>,              \
+                                                           std::span<const Vec2T<T>>);                             \
+  template std::optional<T> project_onto_master<T>(const Vec2T<T>&, const Vec2T<T>&, std::span<const Vec2T<T>>);  \
+  template std::array<std::array<T, 3>, 3> dual_coefficients<T>(std::span<const Vec2T<T>>);                        \
+  template SegmentMortar<T> integrate_segment<T>(std::span<const Vec2T<T>>, std::span<const Vec2T<T>>,             \
+                                                 std::span<const std::vector<Vec2T<T>>>, double, int,             \
+                                                 std::span<const Vec2T<double>>);
+
+TETHER_MORTAR_INSTANTIATE(double)
+TETHER_MORTAR_INSTANTIATE(Dual2)
+
+}  // namespace tether

@@ -1,0 +1,191 @@
+// Mortar kinematics: the dual basis, projection along the slave normal
+// field, segmentation and the integrals D and M against hand calculations,
+// their consistency (Σ D = overlapped area, M row sums = D) and the exact
+// derivatives (Dual2) against central finite differences.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "tether/contact/mortar_segmentation.hpp"
+
+using namespace tether;
+
+namespace {
+
+using V = Vec2T<double>;
+
+std::vector<V> flat_normals(int n, V normal) { return std::vector<V>(static_cast<std::size_t>(n), normal); }
+
+TEST(MortarDualBasis, StraightLinearSegmentHasTheTextbookCoefficients) {
+  const std::vector<V> x{{0, 0}, {2, 0}};
+  const auto A = dual_coefficients<double>(x);
+  EXPECT_NEAR(A[0][0], 2, 1e-14);
+  EXPECT_NEAR(A[0][1], -1, 1e-14);
+  EXPECT_NEAR(A[1][0], -1, 1e-14);
+  EXPECT_NEAR(A[1][1], 2, 1e-14);
+}
+
+TEST(MortarDualBasis, CurvedQuadraticSegmentIsBiorthogonalWithPositiveWeights) {
+  const std::vector<V> x{{0, 0}, {2, 0.1}, {1.1, 0.3}};  // corners, then mid-side node
+  const auto A = dual_coefficients<double>(x);
+  // ∫ Φ_k N_l ds = δ_kl ∫ N_k ds, checked with a finer rule than the one used.
+  double D[3][3] = {}, area[3] = {};
+  const int n = 40;
+  for (int i = 0; i < n; ++i) {
+    const double s0 = -1 + 2.0 * i / n, s1 = s0 + 2.0 / n;
+    for (double g : {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}) {
+      const double s = 0.5 * (s0 + s1) + 0.5 * (s1 - s0) * g;
+      std::array<double, 3> N, dN;
+      segment_shapes(3, s, N, dN);
+      V dx{0, 0};
+      for (int a = 0; a < 3; ++a) dx = dx + dN[static_cast<std::size_t>(a)] * x[static_cast<std::size_t>(a)];
+      const double w = 0.5 * (s1 - s0) * std::sqrt(dot(dx, dx));
+      for (int k = 0; k < 3; ++k) {
+        double phi = 0;
+        for (int l = 0; l < 3; ++l) phi += A[k][l] * N[static_cast<std::size_t>(l)];
+        area[k] += w * N[static_cast<std::size_t>(k)];
+        for (int l = 0; l < 3; ++l) D[k][l] += w * phi * N[static_cast<std::size_t>(l)];
+      }
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_GT(area[k], 0) << k;
+    for (int l = 0; l < 3; ++l) EXPECT_NEAR(D[k][l], k == l ? area[k] : 0.0, 1e-6) << k << "," << l;
+  }
+}
+
+TEST(MortarSegmentation, PartialOverlapMatchesHandCalculation) {
+  // Slave segment (0,0)-(2,0) (bottom face of a body above: outward normal
+  // (0,-1)); master face (3,-0.1)-(1,-0.1) below it (the top face of a body
+  // below, run the other way): overlap x in [1, 2], i.e. ξ in [0, 1];
+  // η = 1 - ξ. With Φ1 = 1/2 - 3ξ/2, Φ2 = 1/2 + 3ξ/2 and ds = dξ:
+  //   D1 = ∫0^1 Φ1 = -1/4, D2 = 5/4;  M11 = M12 = -1/8, M21 = 3/8, M22 = 7/8.
+  const std::vector<V> x{{0, 0}, {2, 0}};
+  const std::vector<V> normals = flat_normals(2, {0, -1});
+  const std::vector<std::vector<V>> masters{{{3, -0.1}, {1, -0.1}}};
+  const SegmentMortar<double> m = integrate_segment<double>(x, normals, masters, 1.0);
+  EXPECT_NEAR(m.overlap[0][0], 0, 1e-14);
+  EXPECT_NEAR(m.overlap[0][1], 1, 1e-14);
+  EXPECT_NEAR(m.D[0], -0.25, 1e-14);
+  EXPECT_NEAR(m.D[1], 1.25, 1e-14);
+  EXPECT_NEAR(m.M[0][0][0], -0.125, 1e-14);
+  EXPECT_NEAR(m.M[0][0][1], -0.125, 1e-14);
+  EXPECT_NEAR(m.M[0][1][0], 0.375, 1e-14);
+  EXPECT_NEAR(m.M[0][1][1], 0.875, 1e-14);
+  // Weighted gap of node 2: n·(Σ M y - D x) = D2 × 0.1 (the gap is uniform).
+  const double g = -(m.M[0][1][0] * -0.1 + m.M[0][1][1] * -0.1 - m.D[1] * 0.0);
+  EXPECT_NEAR(g, 0.125, 1e-14);
+}
+
+TEST(MortarSegmentation, FullCoverageSumsToTheSegmentAreaAndMRowsToD) {
+  // A slave segment covered by three master segments of a finer, slightly
+  // inclined and offset mesh; thickness 0.5. Σ_k D_k = length × thickness
+  // and Σ_f Σ_a M[f][k][a] = D_k (the master shape functions sum to one).
+  const std::vector<V> x{{0, 0}, {3, 0.6}};
+  const double length = std::sqrt(9 + 0.36), t = 0.5;
+  const V n{0.6 / length, -3 / length};
+  const std::vector<V> normals = flat_normals(2, n);
+  std::vector<std::vector<V>> masters;
+  const std::vector<double> cuts{4.0, 2.2, 1.1, -0.7};  // x of the master nodes, right to left
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+    masters.push_back({{cuts[i], 0.2 * cuts[i] - 0.05}, {cuts[i + 1], 0.2 * cuts[i + 1] - 0.05}});
+  const SegmentMortar<double> m = integrate_segment<double>(x, normals, masters, t);
+  EXPECT_NEAR(m.D[0] + m.D[1], length * t, 1e-13);
+  EXPECT_NEAR(m.D[0], 0.5 * length * t, 1e-13);  // full coverage: D_kk = ∫ N_k dA
+  for (int k = 0; k < 2; ++k) {
+    double row = 0;
+    for (const auto& mf : m.M) row += mf[static_cast<std::size_t>(k)][0] + mf[static_cast<std::size_t>(k)][1];
+    EXPECT_NEAR(row, m.D[static_cast<std::size_t>(k)], 1e-13) << k;
+  }
+  // The pieces tile the segment: consecutive overlaps share their ends.
+  EXPECT_NEAR(m.overlap[0][1], 1, 1e-14);
+  EXPECT_NEAR(m.overlap[2][0], -1, 1e-14);
+  EXPECT_NEAR(m.overlap[0][0], m.overlap[1][1], 1e-14);
+  EXPECT_NEAR(m.overlap[1][0], m.overlap[2][1], 1e-14);
+}
+
+TEST(MortarSegmentation, MasterFacingTheOtherWayIsSkipped) {
+  const std::vector<V> x{{0, 0}, {2, 0}};
+  const std::vector<std::vector<V>> masters{{{0, -0.1}, {2, -0.1}}};  // same orientation as the slave
+  const SegmentMortar<double> m = integrate_segment<double>(x, flat_normals(2, {0, -1}), masters, 1.0);
+  EXPECT_GE(m.overlap[0][0], m.overlap[0][1]);
+  EXPECT_EQ(m.D[0], 0.0);
+  EXPECT_EQ(m.D[1], 0.0);
+}
+
+TEST(MortarSegmentation, ProjectionFollowsTheInterpolatedNormal) {
+  const std::vector<V> x{{0, 0}, {2, 0.3}, {1.0, 0.25}};
+  const std::vector<V> normals{{0.2, -0.98}, {-0.1, -0.995}, {0.05, -1}};
+  const V p{1.3, -0.4};
+  const std::optional<double> xi = project_along_slave_normals<double>(p, x, normals);
+  ASSERT_TRUE(xi);
+  std::array<double, 3> N, dN;
+  segment_shapes(3, *xi, N, dN);
+  V xs{0, 0}, n{0, 0};
+  for (std::size_t a = 0; a < 3; ++a) xs = xs + N[a] * x[a], n = n + N[a] * normals[a];
+  EXPECT_NEAR(cross(p - xs, n), 0.0, 1e-14);
+  EXPECT_LT(dot(p - xs, n), 0.0 + 1.0) << "p lies along the normal ray";
+}
+
+/// A scalar summary of the mortar integrals of a curved quadratic slave
+/// segment with varying nodal normals against two linear master segments
+/// that cut it: Σ_k c_k D_k + Σ c_fka M[f][k][a], as a function of all
+/// coordinates (slave 3 nodes, normals fixed, master 3 nodes).
+template <class T>
+T summary(const std::vector<T>& q) {
+  auto p = [&](int i) { return Vec2T<T>{q[static_cast<std::size_t>(2 * i)], q[static_cast<std::size_t>(2 * i + 1)]}; };
+  const std::vector<Vec2T<T>> x{p(0), p(1), p(2)};
+  // Averaged nodal normals (the corner normals of the segment itself here).
+  const std::vector<Vec2T<T>> seg{p(0), p(1), p(2)};
+  const std::vector<std::vector<Vec2T<T>>> one{seg};
+  const int at0 = 0, at1 = 1, at2 = 2;
+  const std::vector<Vec2T<T>> normals{nodal_normal<T>(one, std::span(&at0, 1)), nodal_normal<T>(one, std::span(&at1, 1)),
+                                      nodal_normal<T>(one, std::span(&at2, 1))};
+  const std::vector<std::vector<Vec2T<T>>> masters{{p(3), p(4)}, {p(4), p(5)}};
+  const SegmentMortar<T> m = integrate_segment<T>(x, normals, masters, 0.7);
+  T s(0.0);
+  for (int k = 0; k < 3; ++k) {
+    s += (1.0 + 0.3 * k) * m.D[static_cast<std::size_t>(k)];
+    for (int f = 0; f < 2; ++f)
+      for (int a = 0; a < 2; ++a) s += (0.2 + 0.1 * k - 0.4 * f + 0.25 * a) * m.M[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)][static_cast<std::size_t>(a)];
+  }
+  return s;
+}
+
+TEST(MortarSegmentation, ExactDerivativesMatchFiniteDifferences) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+  const std::vector<double> base{0, 0, 2, 0.2, 1.0, 0.15, 2.6, -0.05, 1.3, -0.12, -0.5, -0.02};
+  for (int trial = 0; trial < 5; ++trial) {
+    std::vector<double> q = base;
+    for (double& v : q) v += jitter(rng);
+    const int n = static_cast<int>(q.size());
+    std::vector<Dual2> d;
+    for (int i = 0; i < n; ++i) d.push_back(Dual2::variable(q[static_cast<std::size_t>(i)], i, n));
+    const Dual2 s = summary<Dual2>(d);
+    EXPECT_NEAR(s.value(), summary<double>(q), 1e-13);
+    const double h = 1e-5;
+    double grad_error = 0, hess_error = 0, scale = 1;
+    for (int i = 0; i < n; ++i) {
+      std::vector<double> qp = q, qm = q;
+      qp[static_cast<std::size_t>(i)] += h;
+      qm[static_cast<std::size_t>(i)] -= h;
+      grad_error = std::max(grad_error, std::abs(s.gradient()[i] - (summary<double>(qp) - summary<double>(qm)) / (2 * h)));
+      std::vector<Dual2> dp, dm;
+      for (int k = 0; k < n; ++k) {
+        dp.push_back(Dual2::variable(qp[static_cast<std::size_t>(k)], k, n));
+        dm.push_back(Dual2::variable(qm[static_cast<std::size_t>(k)], k, n));
+      }
+      const Eigen::VectorXd fd = (summary<Dual2>(dp).gradient() - summary<Dual2>(dm).gradient()) / (2 * h);
+      hess_error = std::max(hess_error, (s.hessian().col(i) - fd).cwiseAbs().maxCoeff());
+      scale = std::max(scale, s.hessian().col(i).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(grad_error, 1e-8) << trial;
+    EXPECT_LT(hess_error / scale, 1e-7) << trial;
+    EXPECT_LT((s.hessian() - s.hessian().transpose()).cwiseAbs().maxCoeff(), 1e-12) << trial;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,153 @@
+// The mortar contact element's tangent against central finite differences
+// of its residual, at random non-trivial configurations: a slave surface of
+// linear or quadratic faces over a finer or coarser master surface, both
+// perturbed (curved, inclined, shifted), every slave node closed with a
+// random pressure. The tangent includes the variation of the normals, of the
+// projections and of the segmentation.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <random>
+
+#include "support/tangent_check.hpp"
+#include "tether/contact/mortar_node.hpp"
+#include "tether/contact/mortar_pair.hpp"
+
+using namespace tether;
+
+namespace {
+
+struct MortarCase {
+  bool quadratic_slave;
+  bool quadratic_master;
+  int n_slave_faces;
+  int n_master_faces;
+  double mu = 0;  ///< Coulomb friction (exact stick)
+};
+
+/// Slave: the bottom of a body above y = 0 over x in [0.1, 1.9] (faces run
+/// left to right); master: the top of a body below over x in [-0.2, 2.2]
+/// (faces run right to left). Nodes are then jittered.
+struct MortarFixture {
+  std::vector<Eigen::Vector2d> reference;
+  std::unique_ptr<MortarPair> pair;
+  int n_disp = 0;
+
+  MortarFixture(const MortarCase& c, std::mt19937& rng) {
+    MortarPairSetup setup;
+    setup.name = "TEST";
+    const auto line = [&](double x0, double x1, int n_faces, bool quadratic, bool reverse, double y0) {
+      std::vector<std::vector<int>> faces;
+      const int per = quadratic ? 2 : 1;
+      const int first = static_cast<int>(reference.size());
+      for (int i = 0; i <= n_faces * per; ++i) {
+        const double x = x0 + (x1 - x0) * i / (n_faces * per);
+        reference.emplace_back(x, y0);
+      }
+      for (int k = 0; k < n_faces; ++k) {
+        const int a = first + per * k, b = first + per * (k + 1);
+        std::vector<int> f = reverse ? std::vector<int>{b, a} : std::vector<int>{a, b};
+        if (quadratic) f.push_back(a + 1);
+        faces.push_back(f);
+      }
+      return faces;
+    };
+    setup.slave_faces = line(0.1, 1.9, c.n_slave_faces, c.quadratic_slave, false, 0.0);
+    setup.master_faces = line(-0.2, 2.2, c.n_master_faces, c.quadratic_master, true, -0.01);
+    for (std::size_t f = 0; f < setup.master_faces.size(); ++f) setup.master_face_labels.emplace_back(static_cast<int>(f) + 1, 3);
+    setup.slave_thickness.assign(setup.slave_faces.size(), 0.8);
+    setup.search_radius = 1.0;
+    setup.complementarity_stiffness = 100;
+    setup.mu = c.mu;
+    n_disp = 2 * static_cast<int>(reference.size());
+    pair = std::make_unique<MortarPair>(setup, reference, n_disp);
+    (void)rng;
+  }
+};
+
+class MortarTangent : public ::testing::TestWithParam<MortarCase> {};
+
+TEST_P(MortarTangent, MatchesCentralFiniteDifferences) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.03, 0.03), pressure(0.5, 2.0);
+  for (int trial = 0; trial < 3; ++trial) {
+    MortarFixture fx(GetParam(), rng);
+    const int n = fx.n_disp + MortarPair::multipliers_per_slave(GetParam().mu) * fx.pair->n_slaves();
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(n), u_start = Eigen::VectorXd::Zero(n);
+    for (int i = 0; i < fx.n_disp; ++i) u[i] = jitter(rng);
+    // A rigid rotation by 0.2 rad and a curvature of the master, so that
+    // normals vary and nothing is aligned with the axes.
+    for (std::size_t a = 0; a < fx.reference.size(); ++a) {
+      const Eigen::Vector2d X = fx.reference[a];
+      const double bend = X.y() < 0 ? -0.05 * (X.x() - 1) * (X.x() - 1) : 0.0;
+      const Eigen::Vector2d Y(X.x(), X.y() + bend);
+      const Eigen::Rotation2Dd R(0.2);
+      const Eigen::Vector2d y = R * Y;
+      u[2 * static_cast<int>(a)] += y.x() - X.x();
+      u[2 * static_cast<int>(a) + 1] += y.y() - X.y();
+    }
+    for (int i = 0; i < fx.pair->n_slaves(); ++i) {
+      u[fx.pair->slave(i).multiplier] = 1e4 * pressure(rng);  // every node closed
+      // Friction: stick (|λt| well inside μλn) in trials 0 and 2, slip in trial 1.
+      if (fx.pair->slave(i).tangent_multiplier >= 0)
+        u[fx.pair->slave(i).tangent_multiplier] =
+            (trial == 1 ? 3.0 : 0.05) * GetParam().mu * u[fx.pair->slave(i).multiplier] * (i % 2 ? -1 : 1);
+    }
+    if (GetParam().mu > 0) {
+      // The increment started with the slave 0.13 to the left (across master
+      // nodes), rotated a little less: the slip increment is not trivial,
+      // and the committed overlaps differ from the current ones.
+      u_start = u;
+      for (std::size_t a = 0; a < fx.reference.size(); ++a)
+        if (fx.reference[a].y() >= 0) u_start[2 * static_cast<int>(a)] -= 0.13, u_start[2 * static_cast<int>(a) + 1] += 0.01;
+      const EvaluationState start{u_start, u_start, 0, 0, 1, trial != 1};
+      fx.pair->update_connectivity(start);
+      fx.pair->commit(start);
+    }
+    // NLGEOM (current measure) and geometrically linear steps (reference measure).
+    const EvaluationState state{u, u_start, 1, 1, 1, trial != 1};
+    fx.pair->update_connectivity(state);
+    int checked = 0;
+    for (Contribution* c : fx.pair->nodes()) {
+      const auto& node = dynamic_cast<const MortarNode&>(*c);
+      ASSERT_TRUE(node.closed(state)) << node.describe();
+      if (GetParam().mu > 0) {
+        const MortarNode::Friction f = node.friction(state);
+        EXPECT_EQ(f.stick, trial != 1) << node.describe() << " trial " << trial;
+        EXPECT_NE(f.slip, 0.0);
+      }
+      EXPECT_LT(tether::testing::tangent_error(*c, state, 1e-6), 2e-6) << node.describe() << " trial " << trial;
+      ++checked;
+    }
+    EXPECT_EQ(checked, fx.pair->n_slaves());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Faces, MortarTangent,
+                         ::testing::Values(MortarCase{false, false, 3, 7}, MortarCase{false, false, 5, 2},
+                                           MortarCase{true, false, 2, 5}, MortarCase{false, true, 4, 3},
+                                           MortarCase{true, true, 3, 2}, MortarCase{false, false, 3, 7, 0.3},
+                                           MortarCase{false, false, 5, 2, 0.3}, MortarCase{true, true, 3, 4, 0.3}));
+
+TEST(MortarTangent, OpenNodeHasTheTrivialRow) {
+  std::mt19937 rng(3);
+  MortarFixture fx(MortarCase{false, false, 3, 4}, rng);
+  const int n = fx.n_disp + fx.pair->n_slaves();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+  for (std::size_t a = 0; a < fx.reference.size(); ++a)
+    if (fx.reference[a].y() < 0) u[2 * static_cast<int>(a) + 1] = -0.1;  // master moved away
+  const EvaluationState state{u, u, 1, 1, 1, true};
+  fx.pair->update_connectivity(state);
+  for (Contribution* c : fx.pair->nodes()) {
+    const auto& node = dynamic_cast<const MortarNode&>(*c);
+    EXPECT_FALSE(node.closed(state));
+    LocalSystem out;
+    out.reset(static_cast<Eigen::Index>(c->dofs().size()));
+    c->evaluate(state, out, true);
+    EXPECT_EQ(out.tangent.topLeftCorner(out.tangent.rows() - 1, out.tangent.cols() - 1).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_LT(out.tangent(out.tangent.rows() - 1, out.tangent.cols() - 1), 0.0);
+  }
+}
+
+}  // namespace
