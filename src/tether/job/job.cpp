@@ -56,10 +56,12 @@ class Job::Recorder final : public AnalysisObserver {
   }
 };
 
-Job::Job(Model model, JobOptions options)
-    : model_(std::make_shared<Model>(std::move(model))),
-      options_(std::move(options)),
-      recorder_(std::make_unique<Recorder>()) {}
+Job::Job(Model model, JobOptions options) : Job(std::make_shared<Model>(std::move(model)), std::move(options)) {}
+
+Job::Job(std::shared_ptr<Model> model, JobOptions options)
+    : model_(std::move(model)), options_(std::move(options)), recorder_(std::make_unique<Recorder>()) {
+  if (!model_) throw std::invalid_argument("Job: the model is null");
+}
 
 Job::~Job() = default;
 

@@ -67,6 +67,9 @@ class Job {
  public:
   /// Takes the model (move it in, or copy it).
   explicit Job(Model model, JobOptions options = {});
+  /// Shares the model with the caller: changes the caller makes between runs
+  /// are seen by the next run (the Python module's way). Not null.
+  explicit Job(std::shared_ptr<Model> model, JobOptions options = {});
   Job(const Job&) = delete;
   Job& operator=(const Job&) = delete;
   ~Job();
@@ -110,6 +113,12 @@ class Job {
 
   /// The kept increments of the last run, in order.
   [[nodiscard]] const std::vector<JobIncrement>& results() const { return results_; }
+  /// Moves the kept increments out (results() is empty afterwards).
+  [[nodiscard]] std::vector<JobIncrement> take_results() {
+    std::vector<JobIncrement> out = std::move(results_);
+    results_.clear();
+    return out;
+  }
 
   /// The result files of the last run that exist (`.pvd`, `.dat`, `.sta`,
   /// `.msg`, `.rst`); empty without output_dir.
