@@ -24,6 +24,7 @@ void bind_errors(py::module_& m);
 void bind_model(py::module_& m);
 void bind_results(py::module_& m);
 void bind_job(py::module_& m);
+void bind_constraints(py::module_& m);
 
 /// A new (n, k) float64 array filled by `value(i, j)`.
 template <class F>

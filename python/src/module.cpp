@@ -59,6 +59,7 @@ PYBIND11_MODULE(_tether, m) {
   python::bind_model(m);
   python::bind_results(m);
   python::bind_job(m);
+  python::bind_constraints(m);
 
   m.def(
       "read_deck",
