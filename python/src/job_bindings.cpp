@@ -21,18 +21,31 @@ struct PyJob {
   std::vector<std::shared_ptr<JobIncrement>> results;
 };
 
-/// Calls a Python callable with each attempt's report (holding the GIL only
-/// for the call).
-class ProgressCallback final : public AnalysisObserver {
+/// The run's link to Python (holding the GIL only while it calls in): after
+/// every Newton iteration it lets Python handle pending signals, so that
+/// Ctrl-C (KeyboardInterrupt) stops a long run within an iteration; after
+/// every attempt it calls the progress callable, when there is one.
+class PythonObserver final : public AnalysisObserver {
  public:
-  explicit ProgressCallback(py::function f) : f_(std::move(f)) {}
-  void on_increment(const IncrementReport& r) override {
+  explicit PythonObserver(std::optional<py::function> progress) : progress_(std::move(progress)) {}
+  PythonObserver(const PythonObserver&) = delete;
+  PythonObserver& operator=(const PythonObserver&) = delete;
+  ~PythonObserver() override {
     py::gil_scoped_acquire gil;
-    f_(r);
+    progress_.reset();
+  }
+  void on_iteration(int, const IterationNorms&) override {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
+  void on_increment(const IncrementReport& r) override {
+    if (!progress_) return;
+    py::gil_scoped_acquire gil;
+    (*progress_)(r);
   }
 
  private:
-  py::function f_;
+  std::optional<py::function> progress_;
 };
 
 JobOptions::Keep parse_keep(const std::string& keep) {
@@ -60,16 +73,21 @@ std::unique_ptr<PyJob> make_job(std::shared_ptr<Model> model, std::optional<std:
 }
 
 JobSummary run(PyJob& self, const std::optional<py::function>& progress, bool check) {
-  std::unique_ptr<ProgressCallback> callback;
-  if (progress) callback = std::make_unique<ProgressCallback>(*progress);
+  PythonObserver observer(progress);
   self.results.clear();
+  const auto take_results = [&] {
+    for (JobIncrement& inc : self.job->take_results())
+      self.results.push_back(std::make_shared<JobIncrement>(std::move(inc)));
+  };
   JobSummary summary;
-  {
+  try {
     py::gil_scoped_release release;
-    summary = self.job->run(callback.get());
+    summary = self.job->run(&observer);
+  } catch (...) {
+    take_results();  // what converged before the error or the interruption
+    throw;
   }
-  for (JobIncrement& inc : self.job->take_results())
-    self.results.push_back(std::make_shared<JobIncrement>(std::move(inc)));
+  take_results();
   if (check && !summary.completed) throw SolverError(summary.message);
   return summary;
 }

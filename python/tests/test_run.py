@@ -100,3 +100,29 @@ def test_to_meshio():
     assert mesh.cells[0].type == "quad" and mesh.cells[0].data.shape == (8, 4)
     assert np.array_equal(mesh.point_data["U"], job.results[-1].U)
     assert mesh.cell_data["S_mean"][0][:, 0] == pytest.approx(np.full(8, 20.0), rel=1e-10)
+
+
+def test_ctrl_c_stops_a_long_run(source, tmp_path):
+    # SIGINT (what Ctrl-C sends) 0.5 s into the ironing example (about 25 s, 44
+    # increments): the run stops with KeyboardInterrupt within an iteration, so
+    # the status file holds only the first few increments.
+    import os
+    import signal
+    import threading
+
+    model = tether.read_deck(source / "examples/ironing/ironing.inp")
+    job = tether.Job(model, output_dir=tmp_path, name="ironing")
+    timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            job.run()
+    finally:
+        timer.cancel()
+    status = (tmp_path / "ironing.sta").read_text()
+    attempts = [line for line in status.splitlines() if line.split()[:1] in (["1"], ["2"])]
+    assert len(attempts) < 22, status  # the whole run: 44 increments
+    assert "COMPLETED" not in status
+    # The increments that converged before are kept.
+    assert len(job.results) == len(attempts)
+    assert [(inc.step, inc.increment) for inc in job.results] == [tuple(map(int, a.split()[:2])) for a in attempts]

@@ -106,9 +106,10 @@ class Job {
   /// the increments. Never throws because the model does not converge or a
   /// step cannot be solved: the summary says why it stopped. Throws
   /// ModelError / ResourceError (after closing the `.sta` with the reason),
-  /// InputError for a bad output request, what the observer throws. A Job
-  /// can run again: each run starts from the beginning with the model as it
-  /// is then and replaces the kept increments and the files.
+  /// InputError for a bad output request, what the observer throws; after an
+  /// exception results() holds the increments kept until then. A Job can run
+  /// again: each run starts from the beginning with the model as it is then
+  /// and replaces the kept increments and the files.
   JobSummary run(AnalysisObserver* observer = nullptr);
 
   /// The kept increments of the last run, in order.
