@@ -20,7 +20,7 @@ py::array_t<double> view(const std::vector<V>& values, std::size_t k, const py::
   static_assert(sizeof(V) % sizeof(double) == 0);
   py::array_t<double> a({values.size(), k}, {sizeof(V), sizeof(double)},
                         values.empty() ? nullptr : reinterpret_cast<const double*>(values.data()), owner);
-  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  a.attr("setflags")(py::arg("write") = false);
   return a;
 }
 

@@ -126,3 +126,49 @@ def test_ctrl_c_stops_a_long_run(source, tmp_path):
     # The increments that converged before are kept.
     assert len(job.results) == len(attempts)
     assert [(inc.step, inc.increment) for inc in job.results] == [tuple(map(int, a.split()[:2])) for a in attempts]
+
+
+def test_to_meshio_mixed_element_shapes():
+    meshio = pytest.importorskip("meshio")
+    # Triangle, quad, two triangles (elements in that order): one cell block per run of a shape.
+    deck = """*NODE
+1, 0., 0.
+2, 1., 0.
+3, 2., 0.
+4, 3., 0.
+5, 0., 1.
+6, 1., 1.
+7, 2., 1.
+8, 3., 1.
+*ELEMENT, TYPE=CPS3, ELSET=E
+1, 1, 2, 6
+*ELEMENT, TYPE=CPS4, ELSET=E
+2, 2, 3, 7, 6
+*ELEMENT, TYPE=CPS3, ELSET=E
+3, 3, 4, 7
+4, 4, 8, 7
+*MATERIAL, NAME=M
+*ELASTIC
+1000., 0.
+*SOLID SECTION, ELSET=E, MATERIAL=M
+1.
+*BOUNDARY
+1, 1, 2
+2, 2
+*STEP
+*STATIC
+*CLOAD
+4, 1, 1.
+8, 1, 1.
+*END STEP
+"""
+    model = tether.read_deck_string(deck, name="mixed.inp")
+    job = tether.Job(model)
+    assert job.run(check=True)
+    mesh = job.results[-1].to_meshio()
+    assert [(c.type, len(c.data)) for c in mesh.cells] == [("triangle", 1), ("quad", 1), ("triangle", 2)]
+    assert mesh.cells[1].data.tolist() == [[1, 2, 6, 5]]  # node indices, not labels
+    assert [len(s) for s in mesh.cell_data["S_mean"]] == [1, 1, 2]
+    inc = job.results[-1]
+    quad = inc.S[inc.element_labels == 2]
+    assert mesh.cell_data["S_mean"][1][0] == pytest.approx(quad.mean(axis=0), abs=1e-12)
