@@ -24,6 +24,12 @@ struct MaterialRef {
   [[nodiscard]] MaterialData& get() const { return model->materials.at(index); }
 };
 
+struct InteractionRef {
+  ModelPtr model;
+  std::size_t index;
+  [[nodiscard]] SurfaceInteraction& get() const { return model->interactions.at(index); }
+};
+
 struct StepRef {
   ModelPtr model;
   std::size_t index;
@@ -99,6 +105,46 @@ void bind_material(py::module_& m) {
           },
           "*DENSITY [mass/volume], None when not given")
       .def("__repr__", [](const MaterialRef& r) { return "<tether.Material " + r.get().name + ">"; });
+}
+
+const char* law_name(PressureOverclosure::Law law) {
+  switch (law) {
+    case PressureOverclosure::Law::Hard: return "hard";
+    case PressureOverclosure::Law::Linear: return "linear";
+    case PressureOverclosure::Law::Exponential: return "exponential";
+    case PressureOverclosure::Law::Tabular: return "tabular";
+  }
+  return "?";
+}
+
+FrictionData& friction(const InteractionRef& r) {
+  SurfaceInteraction& i = r.get();
+  if (!i.friction) throw py::attribute_error("interaction " + i.name + " has no *FRICTION");
+  return *i.friction;
+}
+
+void bind_interaction(py::module_& m) {
+  py::class_<InteractionRef>(m, "Interaction", "A *SURFACE INTERACTION (changes go into the model).")
+      .def_property_readonly("name", [](const InteractionRef& r) { return r.get().name; })
+      .def_property_readonly("law", [](const InteractionRef& r) { return law_name(r.get().behavior.law); },
+                             "pressure-overclosure law: hard, linear, exponential, tabular")
+      .def_property(
+          "stiffness", [](const InteractionRef& r) { return r.get().behavior.stiffness; },
+          [](const InteractionRef& r, double k) {
+            require(r.get().behavior.law == PressureOverclosure::Law::Linear, "stiffness: the law is not LINEAR");
+            require(k > 0, "the contact stiffness must be > 0");
+            r.get().behavior.stiffness = k;
+          },
+          "K of PRESSURE-OVERCLOSURE=LINEAR [pressure/length]")
+      .def_property_readonly("has_friction", [](const InteractionRef& r) { return r.get().friction.has_value(); })
+      .def_property(
+          "mu", [](const InteractionRef& r) { return friction(r).mu; },
+          [](const InteractionRef& r, double mu) {
+            require(mu >= 0, "the friction coefficient must be >= 0");
+            friction(r).mu = mu;
+          },
+          "Coulomb friction coefficient of *FRICTION")
+      .def("__repr__", [](const InteractionRef& r) { return "<tether.Interaction " + r.get().name + ">"; });
 }
 
 void bind_loads(py::module_& m) {
@@ -225,6 +271,13 @@ void bind_model_class(py::module_& m) {
                                  d[py::str(md->materials[k].name)] = MaterialRef{md, k};
                                return d;
                              }, "{name: Material}, names upper case")
+      .def_property_readonly("interactions",
+                             [](const std::shared_ptr<Model>& md) {
+                               py::dict d;
+                               for (std::size_t k = 0; k < md->interactions.size(); ++k)
+                                 d[py::str(md->interactions[k].name)] = InteractionRef{md, k};
+                               return d;
+                             }, "{name: Interaction} of the *SURFACE INTERACTIONs, names upper case")
       .def_property_readonly("steps",
                              [](const std::shared_ptr<Model>& md) {
                                py::list l;
@@ -254,6 +307,7 @@ void bind_model_class(py::module_& m) {
 
 void bind_model(py::module_& m) {
   bind_material(m);
+  bind_interaction(m);
   bind_loads(m);
   bind_step(m);
   bind_model_class(m);

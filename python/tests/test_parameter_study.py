@@ -64,3 +64,21 @@ def test_bad_values_are_refused():
         model.steps[0].period = 0
     with pytest.raises(AttributeError):
         model.materials["STEEL"].c10
+
+
+def test_friction_coefficient_sweep(source):
+    # A block pressed by p = 10 (N = 10) and pushed sideways slides at T = mu N.
+    model = tether.read_deck(source / "tests/smoke/decks/contact_friction.inp")
+    interaction = model.interactions["I"]
+    assert interaction.law == "hard" and interaction.has_friction and interaction.mu == 0.3
+    job = tether.Job(model, keep="last")
+    for mu in (0.1, 0.3, 0.5):
+        interaction.mu = mu
+        assert job.run(check=True)
+        (pair,) = job.results[-1].contact.values()
+        assert (pair.status[pair.closed] == "slip").all()
+        assert abs(pair.total_force[0]) == pytest.approx(mu * pair.total_force[1], rel=1e-6)
+    with pytest.raises(ValueError):
+        interaction.mu = -0.1
+    with pytest.raises(ValueError, match="not LINEAR"):
+        interaction.stiffness = 1e3

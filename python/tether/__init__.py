@@ -12,12 +12,12 @@ import warnings as _warnings
 import numpy as _np
 
 from ._errors import DeckWarning, InputError, ModelError, ResourceError, SolverError, TetherError
-from ._tether import (Boundary, ConcentratedLoad, Increment, IncrementReport, Job, Material, Model, Pressure,
-                      Step, Summary, __version__)
+from ._tether import (Boundary, ConcentratedLoad, Increment, IncrementReport, Interaction, Job, Material, Model,
+                      Pressure, Step, Summary, __version__)
 from . import _tether
 
 __all__ = ["read_deck", "read_deck_string", "Job", "Model", "Increment", "Summary", "IncrementReport", "Material",
-           "Step", "ConcentratedLoad", "Boundary", "Pressure", "TetherError", "InputError", "ModelError",
+           "Interaction", "Step", "ConcentratedLoad", "Boundary", "Pressure", "TetherError", "InputError", "ModelError",
            "SolverError", "ResourceError", "DeckWarning", "__version__"]
 
 
