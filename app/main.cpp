@@ -19,12 +19,11 @@
 #include <memory>
 
 #include "progress_observer.hpp"
-#include "tether/analysis/static_analysis.hpp"
 #include "tether/core/error.hpp"
 #include "tether/io/deck_reader.hpp"
 #include "tether/io/deck_survey.hpp"
 #include "tether/output/restart_file.hpp"
-#include "tether/output/result_writer.hpp"
+#include "tether/job/job.hpp"
 
 namespace fs = std::filesystem;
 using namespace tether;
@@ -129,18 +128,6 @@ int check_many(const std::vector<std::string>& decks, Dialect dialect) {
   return ok == static_cast<int>(decks.size()) ? kOk : kInput;
 }
 
-/// Forwards the analysis' reports to an observer set later (the result
-/// files are opened only once a restart state has been accepted).
-class Relay final : public AnalysisObserver {
- public:
-  AnalysisObserver* to = nullptr;
-  void on_iteration(int i, const IterationNorms& n) override { if (to) to->on_iteration(i, n); }
-  void on_increment(const IncrementReport& r) override { if (to) to->on_increment(r); }
-  void on_results(const IncrementResults& r, const Step& s, bool last) override { if (to) to->on_results(r, s, last); }
-  void on_restart_state(const RestartState& s) override { if (to) to->on_restart_state(s); }
-  void on_message(const std::string& m) override { if (to) to->on_message(m); }
-};
-
 /// The restart file to continue from: --restart, else FILE= of *RESTART, READ
 /// (relative to the deck); "" when the run starts from the beginning.
 std::string restart_source(const Model& model, const std::string& deck, const std::string& restart) {
@@ -192,84 +179,45 @@ AnalysisOptions analysis_options(const std::string& solver, bool condense, doubl
   return options;
 }
 
-std::string timing_line(double seconds, const SolveTiming& t) {
-  return fmt::format("time {:.2f} s: contact search {:.2f}, assembly {:.2f}, analyse {:.2f}, factorize {:.2f} ({} "
-                     "factorizations{}), solve {:.2f}, output {:.2f}",
-                     seconds, t.contact_search, t.assembly, t.analyse, t.factorize, t.factorizations,
-                     t.sparse_factorizations > 0
-                         ? fmt::format(", {} of the bulk, the rest of the contact equations only",
-                                       t.sparse_factorizations)
-                         : std::string(),
-                     t.solve, t.output);
-}
-
-/// The files this run wrote, for the `results:` line.
-std::string written_files(const ResultWriter& writer, const ProgressObserver& observer) {
-  std::string written;
-  for (const fs::path& f :
-       {writer.pvd_path(), writer.dat_path(), writer.sta_path(), observer.msg_path(), writer.restart_path()})
-    if (fs::exists(f)) written += (written.empty() ? "" : "  ") + f.string();
-  return written;
-}
-
 int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
         bool quiet, const std::string& restart, double memory_mb, Dialect dialect) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<DeckWarning> warnings;
-  const Model model = read_deck(deck, &warnings, dialect);
+  Model model = read_deck(deck, &warnings, dialect);
   if (!quiet)
     for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
-  const std::string job = fs::path(deck).stem().string();
+  const std::string job_name = fs::path(deck).stem().string();
   const std::string restart_file = restart_source(model, deck, restart);
-  const fs::path dir = output_directory(deck, output_dir, restart_file);
+  JobOptions options;
+  options.analysis = analysis_options(solver, condense, memory_mb);
+  options.output_dir = output_directory(deck, output_dir, restart_file);
+  options.name = job_name;
+  if (ascii) options.writer.encoding = VtuEncoding::Ascii;
+  options.keep = JobOptions::Keep::None;  // written, not kept
+  options.started = t0;
+  const fs::path dir = options.output_dir;
+  Job job(std::move(model), options);
 
   // The model is discretized and a restart state read and checked before any
   // output file is touched: a deck or restart refused here leaves the
   // previous results (and the restart file) as they were.
-  Relay relay;
-  StaticAnalysis analysis(model, relay, analysis_options(solver, condense, memory_mb));
-  RestartState state;
+  job.prepare();
   if (!restart_file.empty()) {
-    state = read_restart_file(restart_file);
-    analysis.resume(state, restart_file);
-    if (!quiet) fmt::print("{}: restarting from {}; the results go to {}\n", job, restart_file, dir.string());
+    job.resume(read_restart_file(restart_file), restart_file);
+    if (!quiet) fmt::print("{}: restarting from {}; the results go to {}\n", job_name, restart_file, dir.string());
   }
+  job.log(fmt::format("deck {} read in the {} dialect", deck, dialect_name(dialect)));
+  for (const auto& w : warnings) job.log(warning_text(w));
+  if (!restart_file.empty()) job.log("restart from " + restart_file + " into " + dir.string());
 
-  ResultWriterOptions writer_options;
-  if (ascii) writer_options.encoding = VtuEncoding::Ascii;
-  ResultWriter writer(model, dir, job, writer_options);
-  if (!restart_file.empty()) {
-    try {
-      writer.load_output_state(state.output_state);
-    } catch (const std::runtime_error& e) {
-      throw InputError(SourceLocation{restart_file, 0}, e.what());
-    }
-  }
-  ProgressObserver observer(writer, !quiet && isatty(fileno(stdout)));
-  relay.to = &observer;
-  observer.log(fmt::format("deck {} read in the {} dialect", deck, dialect_name(dialect)));
-  for (const auto& w : warnings) observer.log(warning_text(w));
-  if (!restart_file.empty()) observer.log("restart from " + restart_file + " into " + dir.string());
-
-  AnalysisSummary summary;
-  try {
-    summary = analysis.run();
-  } catch (const ModelError& e) {
-    writer.finish(false, e.what());
-    throw;
-  } catch (const ResourceError& e) {
-    writer.finish(false, std::string(e.what()) + "; the increments that converged before have been written");
-    throw;
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const std::string timing = timing_line(seconds, summary.timing);
-  observer.log(summary.message);
-  observer.log(timing);
-  writer.finish(summary.completed, summary.message);
+  ProgressObserver progress;
+  const JobSummary summary = job.run(!quiet && isatty(fileno(stdout)) ? &progress : nullptr);
   if (!quiet) {
-    fmt::print("{}: {} ({} increments, {} iterations, {} cut-backs, {:.2f} s)\n{}\nresults: {}\n", job,
-               summary.message, summary.increments, summary.iterations, summary.cutbacks, seconds, timing,
-               written_files(writer, observer));
+    std::string written;
+    for (const fs::path& f : job.written_files()) written += (written.empty() ? "" : "  ") + f.string();
+    fmt::print("{}: {} ({} increments, {} iterations, {} cut-backs, {:.2f} s)\n{}\nresults: {}\n", job_name,
+               summary.message, summary.increments, summary.iterations, summary.cutbacks, summary.seconds,
+               timing_line(summary.seconds, summary.timing), written);
   }
   if (!summary.completed) {
     fmt::print(stderr, "{}: error: {}\n", deck, summary.message);

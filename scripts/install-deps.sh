@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages tether needs to build, test and compare with CalculiX.
+# Installs the Debian packages tether needs to build, test and compare with CalculiX
+# (and to build and test the Python package: pybind11, pytest, NumPy, meshio).
 # Safe to run again: packages already present are skipped by apt-get.
 #
 #   bash scripts/install-deps.sh         what scripts/test.sh and scripts/demo.sh need
@@ -15,6 +16,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   gmsh calculix-ccx
   python3 python3-numpy python3-matplotlib python3-meshio python3-vtk9
+  python3-dev pybind11-dev python3-pybind11 python3-pytest
 )
 for group in "$@"; do
   case "$group" in

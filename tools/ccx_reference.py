@@ -2,7 +2,7 @@
 """Runs decks through CalculiX (ccx) and writes reference CSVs for the verification tests.
 
 For each deck, ccx runs in its own scratch directory (`ccx -i JOB`, under
-`timeout`); its .dat is parsed with tools/datfile.py and two kinds of rows are
+`timeout`); its .dat is parsed with tools/tethertools/dat.py and two kinds of rows are
 written to tests/verification/reference/JOB.csv:
 
   kind,set,node,x,y      U  rows: displacement of every node of NALL
@@ -28,8 +28,7 @@ import sys
 import tempfile
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
 DECKS = os.path.join(ROOT, "tests", "verification", "decks")
@@ -52,7 +51,7 @@ def run_ccx(deck):
         if proc.returncode != 0 or "Job finished" not in proc.stdout:
             sys.stderr.write(proc.stdout[-3000:] + proc.stderr[-3000:])
             raise SystemExit(f"{deck}: ccx failed (exit {proc.returncode})")
-        return datfile.read(os.path.join(work, job + ".dat"))
+        return tethertools.dat.read(os.path.join(work, job + ".dat"))
 
 
 def write_reference(deck, blocks, version):
@@ -60,11 +59,11 @@ def write_reference(deck, blocks, version):
     os.makedirs(REFERENCE, exist_ok=True)
     path = os.path.join(REFERENCE, job + ".csv")
     rows = []
-    for row in datfile.last_block(blocks, "displacements", "NALL")["rows"]:
+    for row in tethertools.dat.last_block(blocks, "displacements", "NALL")["rows"]:
         rows.append(["U", "NALL", int(row[0]), row[1], row[2]])
     for name in REACTION_SETS:
         try:
-            block = datfile.last_block(blocks, "forces", name)
+            block = tethertools.dat.last_block(blocks, "forces", name)
         except KeyError:
             continue
         for row in block["rows"]:

@@ -10,7 +10,7 @@ The deck (and the files it *INCLUDEs) is copied into DIR/ccx/ and DIR/tether/
 runs as `ccx -i JOB`, tether as `tether run JOB.inp -o DIR/tether --dialect calculix`
 (the deck is read with CalculiX's meanings where ABAQUS's differ), each under
 `/usr/bin/time -v` (peak memory) with a time limit. Both .dat files are parsed
-with tools/datfile.py; blocks are matched by (kind, set, time) -- all common
+with tools/tethertools/dat.py; blocks are matched by (kind, set, time) -- all common
 times, or the last time of each when none is common -- and rows by node id
 (elements: element id and integration point). For each quantity the table
 gives the count of values compared, the largest |difference|, that difference
@@ -32,8 +32,8 @@ import tempfile
 import time
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
+import tethertools.deck  # noqa: E402
 
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
 
@@ -50,187 +50,48 @@ COMPONENTS = {"U": ("ux", "uy"), "RF": ("fx", "fy"), "RFT": ("fx", "fy"),
 
 
 # ----------------------------------------------------------------------------- deck scanning
-def keyword_lines(path, seen=None):
-    """(keyword line, data lines, file) of a deck, *INCLUDE followed."""
-    seen = seen if seen is not None else set()
-    path = os.path.abspath(path)
-    if path in seen:
-        return []
-    seen.add(path)
-    cards, current = [], None
-    with open(path, errors="replace") as f:
-        for raw in f:
-            line = raw.strip()
-            if not line or line.startswith("**"):
-                continue
-            if line.startswith("*"):
-                params = parse_keyword(line)
-                if params["_kw"] == "*INCLUDE" and "INPUT" in params:
-                    inc = params["INPUT"]
-                    inc_path = inc if os.path.isabs(inc) else os.path.join(os.path.dirname(path), inc)
-                    cards.extend(keyword_lines(inc_path, seen))
-                    current = None
-                    continue
-                current = (params, [], path)
-                cards.append(current)
-            elif current is not None:
-                current[1].append(line)
-    return cards
+include_files = tethertools.deck.include_files
 
 
-def parse_keyword(line):
-    parts = [p.strip() for p in line.split(",")]
-    params = {"_kw": parts[0].upper().replace(" ", "") if parts[0].upper().startswith("*") else parts[0].upper()}
-    params["_kw"] = "*" + " ".join(parts[0][1:].upper().split())
-    for p in parts[1:]:
-        if not p:
-            continue
-        if "=" in p:
-            k, v = p.split("=", 1)
-            params[k.strip().upper()] = v.strip()
-        else:
-            params[p.strip().upper()] = ""
-    return params
-
-
-def include_files(deck):
-    """Relative paths of the files *INCLUDEd by `deck` (recursively), relative to its folder."""
-    out, base = [], os.path.dirname(os.path.abspath(deck))
-
-    def walk(path):
-        with open(path, errors="replace") as f:
-            for raw in f:
-                line = raw.strip()
-                if line.upper().startswith("*INCLUDE"):
-                    inc = parse_keyword(line).get("INPUT")
-                    if not inc or os.path.isabs(inc):
-                        continue
-                    full = os.path.normpath(os.path.join(os.path.dirname(path), inc))
-                    rel = os.path.relpath(full, base)
-                    if rel not in out and os.path.exists(full):
-                        out.append(rel)
-                        walk(full)
-    walk(deck)
-    return out
-
-
-def ints(tokens):
-    out = []
-    for t in tokens:
-        t = t.strip()
-        if t:
-            out.append(t)
-    return out
-
-
-class DeckInfo:
-    """What the comparison needs to know about the model: element types, loaded nodes, constrained dofs."""
+class DeckInfo(tethertools.deck.Deck):
+    """The deck (tethertools.deck.Deck: mesh, sets, keywords) and what the comparison needs beyond it:
+    the nodes under concentrated or pressure loads and the constrained dofs."""
 
     def __init__(self, deck):
-        self.cards = keyword_lines(deck)
-        self.nsets, self.elsets, self.elements, self.surfaces = {}, {}, {}, {}
-        self.element_types = set()
-        self.keywords = set()
+        super().__init__(deck)
         self.cload_nodes, self.pressure_nodes, self.constrained = set(), set(), set()
-        self.max_node = 0
-        self.node_labels = set()
-        self.params = []
         for params, data, _ in self.cards:
             kw = params["_kw"]
-            self.keywords.add(kw)
-            self.params.append(params)
-            if kw == "*NODE":
-                ids = [int(l.split(",")[0]) for l in data]
-                self.max_node = max([self.max_node] + ids)
-                self.node_labels.update(ids)
-                if "NSET" in params:
-                    self.nsets.setdefault(params["NSET"].upper(), []).extend(ids)
-            elif kw == "*ELEMENT":
-                etype = params.get("TYPE", "").upper()
-                self.element_types.add(etype)
-                joined = " ".join(data).replace(",", " ").split()
-                # Continuation lines: read by element type's node count when known, else one element a line.
-                n = NODES_PER_TYPE.get(etype)
-                ids = []
-                if n:
-                    vals = [int(v) for v in joined]
-                    for i in range(0, len(vals), n + 1):
-                        self.elements[vals[i]] = (etype, vals[i + 1:i + 1 + n])
-                        ids.append(vals[i])
-                else:
-                    for l in data:
-                        v = [int(x) for x in l.replace(",", " ").split()]
-                        self.elements[v[0]] = (etype, v[1:])
-                        ids.append(v[0])
-                if "ELSET" in params:
-                    self.elsets.setdefault(params["ELSET"].upper(), []).extend(ids)
-            elif kw in ("*NSET", "*ELSET"):
-                name = params.get("NSET" if kw == "*NSET" else "ELSET", "").upper()
-                target = self.nsets if kw == "*NSET" else self.elsets
-                lst = target.setdefault(name, [])
-                tokens = ints(" ".join(data).replace(",", " ").split())
-                if "GENERATE" in params:
-                    for l in data:
-                        v = [int(x) for x in l.replace(",", " ").split()]
-                        a, b, s = v[0], v[1], v[2] if len(v) > 2 else 1
-                        lst.extend(range(a, b + 1, s))
-                else:
-                    for t in tokens:
-                        lst.extend(self._ids(t, target))
-            elif kw == "*SURFACE":
-                name = params.get("NAME", "").upper()
-                faces = []
-                if params.get("TYPE", "ELEMENT").upper() == "ELEMENT":
-                    for l in data:
-                        v = [x.strip() for x in l.split(",")]
-                        if len(v) >= 2:
-                            faces.append((v[0], v[1].upper()))
-                    self.surfaces[name] = ("ELEMENT", faces)
-                else:
-                    self.surfaces[name] = ("NODE", [l.split(",")[0].strip() for l in data])
-            elif kw == "*BOUNDARY":
+            if kw == "*BOUNDARY":
                 for l in data:
                     v = [x.strip() for x in l.split(",")]
                     if len(v) < 2 or not v[1]:
                         continue
                     first = int(v[1])
                     last = int(v[2]) if len(v) > 2 and v[2] else first
-                    for n in self._ids(v[0], self.nsets):
+                    for n in self.ids(v[0], self.nsets):
                         for d in range(first, last + 1):
                             if d in (1, 2):
                                 self.constrained.add((n, d - 1))
             elif kw == "*CLOAD":
                 for l in data:
                     v = [x.strip() for x in l.split(",")]
-                    self.cload_nodes.update(self._ids(v[0], self.nsets))
+                    self.cload_nodes.update(self.ids(v[0], self.nsets))
             elif kw in ("*DSLOAD", "*DLOAD"):
                 for l in data:
                     v = [x.strip() for x in l.split(",")]
                     if len(v) < 2:
                         continue
                     if kw == "*DSLOAD":
-                        surf = self.surfaces.get(v[0].upper())
-                        if surf and surf[0] == "ELEMENT":
-                            for el, face in surf[1]:
-                                self._add_face(el, face)
+                        for el, face in self.surfaces.get(v[0].upper(), []):
+                            self._add_face(str(el), face)
                     elif v[1].upper().startswith("P") and v[1][1:].isdigit():
-                        self._add_face(v[0], "S" + v[1][1:])
-
-    def _ids(self, token, sets):
-        token = token.strip()
-        try:
-            return [int(token)]
-        except ValueError:
-            return list(sets.get(token.upper(), []))
+                        self._add_face(v[0], int(v[1][1:]))
 
     def _add_face(self, el_token, face):
-        for e in self._ids(el_token, self.elsets):
-            if e not in self.elements or not face.startswith("S"):
-                continue
-            etype, nodes = self.elements[e]
-            for local in face_nodes(etype, int(face[1:])):
-                if local < len(nodes):
-                    self.pressure_nodes.add(nodes[local])
+        for e in self.ids(el_token, self.elsets):
+            if e in self.elements:
+                self.pressure_nodes.update(self.face_nodes(e, face))
 
     def family(self):
         fams = {t[:3] for t in self.element_types if t[:3] in ("CPE", "CPS", "CAX")}
@@ -241,22 +102,6 @@ class DeckInfo:
 
     def param_values(self, kw, key):
         return [p[key] for p in self.params if p["_kw"] == kw and key in p]
-
-
-NODES_PER_TYPE = {}
-for _fam in ("CPE", "CPS", "CAX"):
-    NODES_PER_TYPE.update({f"{_fam}3": 3, f"{_fam}6": 6, f"{_fam}4": 4, f"{_fam}4R": 4, f"{_fam}8": 8, f"{_fam}8R": 8})
-
-
-def face_nodes(etype, face):
-    """0-based local node indices of 2D face `face` (1-based) of `etype`."""
-    n = NODES_PER_TYPE.get(etype, 0)
-    corners = 3 if n in (3, 6) else 4
-    a, b = face - 1, face % corners
-    out = [a, b]
-    if n in (6, 8):
-        out.append(corners + face - 1)
-    return out
 
 
 # ----------------------------------------------------------------------------- running
@@ -334,7 +179,7 @@ def read_dat(path):
         text = f.read()
     # ccx/tether write contact blocks "... for all contact elements and time T": give them a set name.
     text = _CONTACT_HEADER.sub("for set CONTACT and time", text)
-    return datfile.parse(text)
+    return tethertools.dat.parse(text)
 
 
 def kind_of(title):

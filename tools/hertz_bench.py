@@ -51,7 +51,6 @@ import sys
 import time
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
 import hertz_summary  # noqa: E402
 import make_hertz_deck  # noqa: E402
 

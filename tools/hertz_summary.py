@@ -5,7 +5,7 @@
                      [--time T] [--label ccx [--label tether ...]] [--tol 0.01]
                      [--source auto|cstr|rf|stress]
 
-Reads the .dat with tools/datfile.py (several: runs of the same deck, e.g. ccx
+Reads the .dat with tools/tethertools/dat.py (several: runs of the same deck, e.g. ccx
 and tether, plotted together) and the deck (default: JOB.inp next to the first
 .dat) for the node coordinates, the slave/master node sets and the model data
 written into its *HEADING (R, E, nu, P, rigid_flat). Prints the peak pressure,
@@ -64,87 +64,19 @@ import re
 import sys
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
+import tethertools.deck  # noqa: E402
 import hertz_exact  # noqa: E402
 
-NODES_PER_TYPE = {"CPE4": 4, "CPE8": 8, "CPS4": 4, "CPS8": 8, "CPE4R": 4, "CPE8R": 8}
-
-
-# ----------------------------------------------------------------------------- deck
-class Deck:
-    """The parts of a make_hertz_deck.py deck the summary needs."""
-
-    def __init__(self, path):
-        self.path = path
-        self.xy, self.elements, self.nsets, self.surfaces, self.heading = {}, {}, {}, {}, {}
-        kw, params = None, {}
-        etype = None
-        pending = []
-        with open(path) as f:
-            for raw in f:
-                line = raw.strip()
-                if not line or line.startswith("**"):
-                    continue
-                if line.startswith("*"):
-                    parts = [p.strip() for p in line.split(",")]
-                    kw = " ".join(parts[0][1:].upper().split())
-                    params = {}
-                    for p in parts[1:]:
-                        if "=" in p:
-                            k, v = p.split("=", 1)
-                            params[k.strip().upper()] = v.strip().upper()
-                    if kw == "ELEMENT":
-                        etype = params.get("TYPE")
-                        pending = []
-                    if kw == "SURFACE":
-                        self.surfaces[params.get("NAME")] = []
-                    continue
-                if kw == "HEADING":
-                    for k, v in re.findall(r"(\w+)=(\S+)", line):
-                        self.heading[k] = v
-                elif kw == "NODE":
-                    t = line.split(",")
-                    self.xy[int(t[0])] = (float(t[1]), float(t[2]))
-                elif kw == "ELEMENT":
-                    pending += [int(v) for v in line.replace(",", " ").split()]
-                    n = NODES_PER_TYPE.get(etype, 0) + 1
-                    while n > 1 and len(pending) >= n:
-                        self.elements[pending[0]] = (etype, pending[1:n])
-                        pending = pending[n:]
-                elif kw == "NSET":
-                    self.nsets.setdefault(params.get("NSET"), []).extend(int(v) for v in line.replace(",", " ").split())
-                elif kw == "SURFACE":
-                    t = [v.strip() for v in line.split(",")]
-                    self.surfaces[params.get("NAME")].append((int(t[0]), int(t[1].upper().lstrip("S"))))
-        self.max_node = max(self.xy)
-
-    def number(self, key, default):
-        try:
-            return float(self.heading[key])
-        except (KeyError, ValueError):
-            return default
-
-    def face_nodes(self, element, face):
-        etype, conn = self.elements[element]
-        out = [conn[face - 1], conn[face % 4]]
-        if len(conn) == 8:
-            out.insert(1, conn[3 + face])  # ordered along the face: corner, mid, corner
-        return out
+Deck = tethertools.deck.Deck  # elements {id: (type, nodes)}; face_nodes along the face (corner, mid, corner)
 
 
 # ----------------------------------------------------------------------------- pressures
 def read_dat(path):
-    return datfile.read(path)  # reads ccx's and tether's contact headers too
+    return tethertools.dat.read(path)  # reads ccx's and tether's contact headers too
 
 
-def pick(blocks, title, set_name, time):
-    """The last block (or the one at `time`) whose title starts with `title` for set `set_name` (None: any set)."""
-    found = [b for b in blocks if b["title"].lower().startswith(title)
-             and (set_name is None or b["set"].upper() == set_name.upper())]
-    if time is not None:
-        found = [b for b in found if abs(b["time"] - time) <= 1e-6 * max(1.0, abs(time))]
-    return found[-1] if found else None
+pick = tethertools.dat.pick  # the last block (or the one at `time`) with that title and set (None: any set)
 
 
 def from_cstr(block, deck):

@@ -22,15 +22,16 @@ import os
 import sys
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
-import contact_dat  # noqa: E402
+import tethertools.dat  # noqa: E402
+import tethertools.deck  # noqa: E402
+import tethertools.sta  # noqa: E402
 
 
 def summarize(dat, deck_path, sta_path, label, steady):
-    deck = contact_dat.Deck(deck_path)
+    deck = tethertools.deck.Deck(deck_path)
     mu, slide = deck.number("mu"), deck.number("slide")
-    blocks = contact_dat.blocks_of(contact_dat.read_dat(dat), "total force", "TOPN")
-    sta = contact_dat.read_sta(sta_path) if os.path.exists(sta_path) else []
+    blocks = tethertools.dat.blocks_of(tethertools.dat.read(dat, strict=False), "total force", "TOPN")
+    sta = tethertools.sta.read(sta_path) if os.path.exists(sta_path) else []
     converged = [r for r in sta if r[4]]
     failed = [r for r in sta if not r[4]]
     # converged increments in file order; the i-th force block of the run is the i-th converged increment

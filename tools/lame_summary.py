@@ -9,8 +9,7 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 from make_lame_deck import A, B, E, NU, P  # noqa: E402
 
 
@@ -23,11 +22,11 @@ def radial(rows):
 
 
 def main():
-    blocks = datfile.read(sys.argv[1])
+    blocks = tethertools.dat.read(sys.argv[1])
     worst = 0.0
     print(f"Lame cylinder, plane strain: a = {A} mm, b = {B} mm, p = {P} MPa, E = {E:g} MPa, nu = {NU}")
     for name, r in (("INNER", A), ("OUTER", B)):
-        values = radial(datfile.last_block(blocks, "displacements", name)["rows"])
+        values = radial(tethertools.dat.last_block(blocks, "displacements", name)["rows"])
         mean = sum(values) / len(values)
         exact = exact_ur(r)
         error = (mean - exact) / exact

@@ -8,7 +8,7 @@ For every benchmark the decks are written by the project's generators
 (tools/make_lame_deck.py, tools/make_cantilever_deck.py, examples/periodic_rve/make_deck.py,
 the patch-test deck below) into a work folder, run with tether (and with CalculiX where ccx can
 run the case: the patch tests, Lame CPE4/CPE8/CAX8 and the cantilever CPE8 / thin CPS8), the
-.dat files are read with tools/datfile.py and compared with the exact answer. Writes
+.dat files are read with tools/tethertools/dat.py and compared with the exact answer. Writes
 OUT/verification.md and OUT/images/verification/*.png; --json FILE also writes the numbers
 (used by the smoke test tests/tools/gallery_test.py). Contact: Hertz (examples/hertz), the contact
 patch test (examples/contact_patch), a friction block, and the decks of the Cattaneo-Mindlin and
@@ -36,9 +36,8 @@ import time
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
-sys.path.insert(0, TOOLS)
 import compare_ccx  # noqa: E402
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 import make_cantilever_deck as cantilever  # noqa: E402
 import make_lame_deck as lame  # noqa: E402
 
@@ -68,7 +67,7 @@ class Runner:
                                   dict(os.environ, OMP_NUM_THREADS="1"))
         r["iterations"], r["increments"] = compare_ccx.sta_iterations(os.path.join(d, job + ".sta"), 3)
         r["dir"] = d
-        r["blocks"] = datfile.read(os.path.join(d, job + ".dat")) if r["rc"] == 0 else None
+        r["blocks"] = tethertools.dat.read(os.path.join(d, job + ".dat")) if r["rc"] == 0 else None
         if r["rc"] != 0:
             print(f"error: tether failed on {deck} (exit {r['rc']}): {r['stderr'].strip()[-300:]}", file=sys.stderr)
         return r
@@ -107,7 +106,7 @@ def generate(script, out, args, cwd=None):
 
 
 def last(blocks, title, set_name):
-    return datfile.last_block(blocks, title, set_name)
+    return tethertools.dat.last_block(blocks, title, set_name)
 
 
 def row(case, quantity, exact, tet, tet_err, tol, how, ccx=None, ccx_err=None, ccx_tol=None, ccx_note=None,
@@ -570,13 +569,15 @@ def run_files(run, deck):
 
 
 def bench_mindlin(rn, images, quick):
-    import contact_dat  # noqa: E402
+    import tethertools.dat  # noqa: E402
+    import tethertools.deck  # noqa: E402
+    import tethertools.sta  # noqa: E402
     import make_mindlin_deck  # noqa: E402
     import mindlin_summary  # noqa: E402
     options = ["--element", "CPE4"]
     deck, t, ccx_deck, c, note = frictional_runs(rn, os.path.join(TOOLS, "make_mindlin_deck.py"), "mindlin_cpe4",
                                                  options, quick)
-    info = contact_dat.Deck(deck)
+    info = tethertools.deck.Deck(deck)
     ex = make_mindlin_deck.mindlin(info.number("P"), info.number("Q"), info.number("mu"), info.number("R"),
                                    info.number("E"), info.number("nu"))
     ratio = info.number("Q") / (info.number("mu") * info.number("P"))
@@ -628,13 +629,15 @@ def bench_mindlin(rn, images, quick):
 
 
 def bench_ironing(rn, images, quick):
-    import contact_dat  # noqa: E402
+    import tethertools.dat  # noqa: E402
+    import tethertools.deck  # noqa: E402
+    import tethertools.sta  # noqa: E402
     import ironing_summary  # noqa: E402
     options = ["--mu", "0.3", "--slide", "3", "--slide-increments", "24"]
     steady = 1.0  # mm: steady sliding from here (as the test)
     deck, t, ccx_deck, c, note = frictional_runs(rn, os.path.join(TOOLS, "make_ironing_deck.py"),
                                                  "ironing_cpe4_mu03_slide3", options, quick)
-    info = contact_dat.Deck(deck)
+    info = tethertools.deck.Deck(deck)
     mu = info.number("mu")
 
     def summary(run, d, label):

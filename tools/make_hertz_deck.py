@@ -76,7 +76,6 @@ import sys
 import tempfile
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
 import hertz_exact  # noqa: E402
 
 R, E, NU = hertz_exact.R, hertz_exact.E, hertz_exact.NU

@@ -69,7 +69,6 @@ import sys
 import tempfile
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
 import make_hertz_deck as hz  # noqa: E402
 
 E, NU = 200000.0, 0.3

@@ -67,7 +67,6 @@ import sys
 import tempfile
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
 import hertz_exact  # noqa: E402
 import make_hertz_deck as hz  # noqa: E402
 

@@ -7,7 +7,7 @@
 For each .dat (tether's or CalculiX's; the deck defaults to JOB.inp next to it)
 and every increment of the tangential step (total time > 1), from the
 *CONTACT PRINT CSTR rows (press, tang1 per slave node; ccx's 3D node ids are
-mapped back, tools/contact_dat.py):
+mapped back, tools/tethertools):
   status   stick / slip: tether's `contact state` block (1 = stick, 2 = slip)
            when present, else |tang| < (1 - 1e-3) mu press (ccx: penalty stick,
            a slipping node sits on the Coulomb bound);
@@ -34,8 +34,9 @@ import os
 import sys
 
 TOOLS = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, TOOLS)
-import contact_dat  # noqa: E402
+import tethertools.dat  # noqa: E402
+import tethertools.deck  # noqa: E402
+import tethertools.sta  # noqa: E402
 import hertz_summary  # noqa: E402
 
 
@@ -62,17 +63,17 @@ def stick_half_width(points):
 
 
 def summarize(dat, deck_path, label):
-    deck = contact_dat.Deck(deck_path)
+    deck = tethertools.deck.Deck(deck_path)
     P, Q, mu = deck.number("P"), deck.number("Q"), deck.number("mu")
     a, p0 = deck.number("a"), deck.number("p0")
-    blocks = contact_dat.read_dat(dat)
-    cstr = [b for b in contact_dat.blocks_of(blocks, "contact stress") if b["time"] > 1 + 1e-9]
-    states = {round(b["time"], 9): b for b in contact_dat.blocks_of(blocks, "contact state")}
+    blocks = tethertools.dat.read(dat, strict=False)
+    cstr = [b for b in tethertools.dat.blocks_of(blocks, "contact stress") if b["time"] > 1 + 1e-9]
+    states = {round(b["time"], 9): b for b in tethertools.dat.blocks_of(blocks, "contact state")}
     lengths = deck.tributary_lengths("SLAVE")
     history = []
     last = None
     for b in cstr:
-        rows = contact_dat.slave_rows(deck, b["rows"])
+        rows = tethertools.dat.slave_rows(deck.max_node, b["rows"])
         qk = (b["time"] - 1.0) * Q
         c_exact = a * math.sqrt(max(0.0, 1.0 - qk / (mu * P)))
         state = states.get(round(b["time"], 9))

@@ -15,7 +15,6 @@ import matplotlib.tri as mtri  # noqa: E402
 import meshio  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from make_lame_deck import A, B, P  # noqa: E402
 
 

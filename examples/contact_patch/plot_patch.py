@@ -9,7 +9,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 
 P = 10.0
 
@@ -30,7 +30,7 @@ def main():
     fig, ax = plt.subplots(figsize=(7, 4))
     for name, marker in (("fine_on_coarse", "o"), ("coarse_on_fine", "s")):
         x = nodes_of(f"{name}.inp")
-        blocks = [b for b in datfile.read(os.path.join(name, name + ".dat")) if b["title"].startswith("contact state")]
+        blocks = [b for b in tethertools.dat.read(os.path.join(name, name + ".dat")) if b["title"].startswith("contact state")]
         rows = sorted(blocks[-1]["rows"], key=lambda r: x[int(r[0])])
         xs, ps = [x[int(r[0])] for r in rows], [r[3] for r in rows]
         error = max(abs(p / P - 1) for p in ps)

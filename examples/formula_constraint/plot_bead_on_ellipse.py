@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -31,7 +31,7 @@ X0 = np.array([0.34729635533386083, -0.984807753012208])
 def main(argv):
     result_dir = argv[1] if len(argv) > 1 else os.path.join(HERE, "bead_on_ellipse")
     output = argv[2] if len(argv) > 2 else os.path.join(HERE, "bead_on_ellipse.png")
-    blocks = datfile.read(os.path.join(result_dir, "bead_on_ellipse.dat"))
+    blocks = tethertools.dat.read(os.path.join(result_dir, "bead_on_ellipse.dat"))
     u = np.array([b["rows"][0][1:3] for b in blocks if b["title"].startswith("displacements") and b["set"] == "BEAD"])
     lam = np.array([b["rows"][0][3] for b in blocks
                     if b["title"].startswith("constraint multipliers") and b["set"] == "ELLIPSE"])

@@ -4,7 +4,7 @@
 Usage (after `tether run rigid_link.inp` in this folder):
     python3 plot_rigid_link.py [RESULT_DIR] [OUTPUT.png]
 RESULT_DIR defaults to ./rigid_link (where `tether run` writes), OUTPUT.png to
-./rigid_link.png. Reads the .dat (tools/datfile.py) for lambda and the position
+./rigid_link.png. Reads the .dat (tools/tethertools/dat.py) for lambda and the position
 of B, and the .vtu files (meshio) for the CONSTRAINT_FORCE field.
 Needs python3-matplotlib and python3-meshio.
 """
@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -32,7 +32,7 @@ TITLE = "constraint multipliers"
 def main(argv):
     result_dir = argv[1] if len(argv) > 1 else os.path.join(HERE, "rigid_link")
     output = argv[2] if len(argv) > 2 else os.path.join(HERE, "rigid_link.png")
-    blocks = datfile.read(os.path.join(result_dir, "rigid_link.dat"))
+    blocks = tethertools.dat.read(os.path.join(result_dir, "rigid_link.dat"))
     u_b = [b["rows"][0][1:3] for b in blocks if b["title"].startswith("displacements") and b["set"] == "B"]
     lam = [b["rows"][0][3] for b in blocks if b["title"].startswith(TITLE) and b["set"] == "LINK"]
     x_b = X_B0 + np.array(u_b)

@@ -7,7 +7,7 @@ RESULT_DIR defaults to ./equal_displacement, OUTPUT.png to
 ./equal_displacement.png. Draws the reference and deformed (true scale) meshes
 from the last .vtu (meshio), colours the elements by sigma_xx, and draws the
 tie forces (CONSTRAINT_FORCE) and the applied loads. The multipliers of the
-four ties are taken from the .dat (tools/datfile.py).
+four ties are taken from the .dat (tools/tethertools/dat.py).
 Needs python3-matplotlib and python3-meshio.
 """
 import os
@@ -16,7 +16,7 @@ import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -39,7 +39,7 @@ def main(argv):
     sxx = np.concatenate(mesh.cell_data["S"])[:, 0]
     force = mesh.point_data["CONSTRAINT_FORCE"][:, :2]
     ids = mesh.point_data["NodeId"].astype(int)
-    blocks = datfile.read(os.path.join(result_dir, "equal_displacement.dat"))
+    blocks = tethertools.dat.read(os.path.join(result_dir, "equal_displacement.dat"))
     lam = {b["set"]: b["rows"][0][3] for b in blocks if b["title"].startswith("constraint multipliers")}
 
     fig, ax = plt.subplots(figsize=(9, 4.2))

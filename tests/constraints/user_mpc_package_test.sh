@@ -18,9 +18,9 @@ cmake --build "$work/example/build" >/dev/null
 /usr/bin/python3 - "$source_dir" "$work/out/user_mpc.dat" <<'PY'
 import sys
 sys.path.insert(0, sys.argv[1] + "/tools")
-import datfile
-blocks = datfile.read(sys.argv[2])
-link = datfile.last_block(blocks, "constraint multipliers", "LINK")["rows"][0][3]
+import tethertools.dat
+blocks = tethertools.dat.read(sys.argv[2])
+link = tethertools.dat.last_block(blocks, "constraint multipliers", "LINK")["rows"][0][3]
 print(f"user_mpc example: LINK multiplier {link:.6f} (exact -3.715326)")
 sys.exit(0 if abs(link + 3.715326) < 2e-6 else 1)
 PY

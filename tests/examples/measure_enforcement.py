@@ -16,7 +16,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 
 CASES = [
     ("LAGRANGE", ""),
@@ -64,8 +64,8 @@ def main(argv):
             print(f"| {label} | not run: {message} | | | |")
             continue
         iterations = re.search(r"(\d+) iterations", run.stdout)
-        blocks = datfile.read(os.path.join(out, "tie.dat"))
-        u = {int(r[0]): r for r in datfile.last_block(blocks, "displacements", "NALL")["rows"]}
+        blocks = tethertools.dat.read(os.path.join(out, "tie.dat"))
+        u = {int(r[0]): r for r in tethertools.dat.last_block(blocks, "displacements", "NALL")["rows"]}
         mult = [b for b in blocks if b["title"].startswith("constraint multipliers")]
         f_max = max((abs(r[2]) for b in mult for r in b["rows"]), default=float("nan"))
         lam = next((b["rows"][0][3] for b in mult if b["set"] == "BX"), float("nan"))

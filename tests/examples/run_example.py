@@ -5,7 +5,7 @@ Usage: run_example.py EXAMPLE TETHER_EXE SOURCE_DIR WORK_DIR USER_CONSTRAINT_MOD
 
 EXAMPLE is rigid_link, formula_constraint, user_constraint, periodic_rve or hertz. The deck is copied
 into WORK_DIR (the user constraint's LIBRARY= is pointed at the module the build
-made), run with `tether run -q`, and its .dat is read with tools/datfile.py.
+made), run with `tether run -q`, and its .dat is read with tools/tethertools/dat.py.
 The expected values are the exact ones quoted in the example's README.
 Exit status 0 = OK, 1 = mismatch or failed run.
 """
@@ -30,7 +30,7 @@ def run(tether, deck, work):
     if result.returncode != 0:
         fail(f"tether exited with {result.returncode}: {result.stderr}")
     stem = os.path.splitext(os.path.basename(deck))[0]
-    return datfile.read(os.path.join(out, stem + ".dat"))
+    return tethertools.dat.read(os.path.join(out, stem + ".dat"))
 
 
 def blocks_of(blocks, title, set_name):
@@ -60,8 +60,8 @@ def main(argv):
         return 2
     example, tether, source, work, module = argv[1:]
     sys.path.insert(0, os.path.join(source, "tools"))
-    global datfile
-    import datfile  # noqa: F401
+    global tethertools
+    import tethertools.dat  # noqa: F401
     os.makedirs(work, exist_ok=True)
     folder = os.path.join(source, "examples", example)
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks tools/datfile.py (the reader the examples and tools use) against an
+"""Checks tools/tethertools/dat.py (the reader the examples and tools use) against an
 expectation in parse_dat.py's JSON format, so both readers are held to the same
 blocks.
 
@@ -13,7 +13,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 import parse_dat  # noqa: E402
 
 
@@ -21,7 +21,7 @@ def main(argv):
     if len(argv) != 3:
         print(__doc__, file=sys.stderr)
         return 2
-    blocks = datfile.read(argv[1])
+    blocks = tethertools.dat.read(argv[1])
     with open(argv[2], encoding="utf-8") as f:
         expected = json.load(f)
     errors = parse_dat.check(blocks, expected)

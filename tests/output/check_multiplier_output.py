@@ -4,7 +4,7 @@
 Usage:
   check_multiplier_output.py dat FILE.dat EXPECTED.json
       EXPECTED.json: {"time": t, "blocks": {"SET": [[constraint, equation, f, lambda], ...], ...}}.
-      Reads FILE.dat with tools/datfile.py and compares the last
+      Reads FILE.dat with tools/tethertools/dat.py and compares the last
       `constraint multipliers` block of each SET at that time (rel 1e-6, abs 1e-12,
       the precision of E13.6).
   check_multiplier_output.py rigid-link JOB_DIR JOB P
@@ -22,7 +22,7 @@ import sys
 import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 
 TITLE = "constraint multipliers (constraint,equation,f,lambda)"
 
@@ -39,9 +39,9 @@ def close(a, b, rel=1e-6, abs_=1e-12):
 def check_dat(path, expected_path):
     with open(expected_path, encoding="utf-8") as f:
         expected = json.load(f)
-    blocks = datfile.read(path)
+    blocks = tethertools.dat.read(path)
     for set_name, rows in expected["blocks"].items():
-        block = datfile.last_block(blocks, TITLE, set_name)
+        block = tethertools.dat.last_block(blocks, TITLE, set_name)
         if block["title"] != TITLE:
             fail(f"title {block['title']!r}")
         if not close(block["time"], expected["time"]):
@@ -58,7 +58,7 @@ def check_rigid_link(directory, job, load):
     import meshio
     import numpy as np
 
-    blocks = datfile.read(os.path.join(directory, job + ".dat"))
+    blocks = tethertools.dat.read(os.path.join(directory, job + ".dat"))
     displacements = [b for b in blocks if b["title"].startswith("displacements") and b["set"] == "B"]
     multipliers = [b for b in blocks if b["title"] == TITLE and b["set"] == "LINK"]
     if not displacements or len(displacements) != len(multipliers):

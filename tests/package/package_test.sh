@@ -12,3 +12,18 @@ cmake --build "$work/build" >/dev/null
 out=$("$work/build/consumer" "$source_dir/examples/lame/lame.inp")
 echo "$out"
 grep -q "analysis complete" <<<"$out"
+
+# The Python package, when the build made it: installed beside the library,
+# imported from the prefix (its RPATH finds the installed libtether).
+site=$(ls -d "$work"/prefix/lib/python3*/dist-packages 2>/dev/null | head -1 || true)
+if [ -n "$site" ]; then
+  cd "$work"
+  PYTHONPATH="$site" /usr/bin/python3 -c "
+import tether, sys
+assert tether.__file__.startswith('$site'), tether.__file__
+job = tether.Job(tether.read_deck(sys.argv[1]))
+summary = job.run()
+print('python:', summary.message, job.results[-1].U.shape)
+assert summary.completed
+" "$source_dir/examples/lame/lame.inp"
+fi

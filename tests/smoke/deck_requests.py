@@ -8,7 +8,7 @@ read(path) follows *INCLUDE (relative to the including file) and returns
    "dynamic": True when a step is *DYNAMIC (its end writes the energies block;
               *NODE PRINT V -> velocities, A -> accelerations)}.
 
-Titles are the leading words of tether's block headers (tools/datfile.py
+Titles are the leading words of tether's block headers (tools/tethertools/dat.py
 splits them from the set and the time), as DatWriter documents them:
 *NODE PRINT U -> displacements, RF -> forces (and total force with
 TOTALS=YES; only total force with TOTALS=ONLY); *EL PRINT S -> stresses,

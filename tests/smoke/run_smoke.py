@@ -7,7 +7,7 @@ Runs `tether run DECK -o WORK/out` (a copy of DECK in WORK when --replace
 edits its text, e.g. to point LIBRARY= at the plug-in the build made) and
 checks, for the run to pass:
 - exit status 0, and the `.sta` ends with THE ANALYSIS HAS COMPLETED SUCCESSFULLY;
-- the `.dat` parses (tools/datfile.py), every value in it is finite, each
+- the `.dat` parses (tools/tethertools/dat.py), every value in it is finite, each
   block has the columns of its kind, and it holds every block the deck's print
   requests ask for at the last increment of each step (deck_requests.py), and
   constraint-multiplier blocks when the deck has constraints;
@@ -40,7 +40,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 
-import datfile  # noqa: E402
+import tethertools.dat  # noqa: E402
 import deck_requests  # noqa: E402
 import vtu_reader  # noqa: E402
 
@@ -99,7 +99,7 @@ def step_end_times(sta_path):
 
 def check_dat(dat_path, requests, step_ends, node_ids, element_ids):
     try:
-        blocks = datfile.read(dat_path)
+        blocks = tethertools.dat.read(dat_path)
     except (OSError, ValueError) as e:
         raise SmokeError(f"{dat_path}: does not parse: {e}") from e
     for b in blocks:

@@ -5,6 +5,7 @@
 #include "tether/constraints/beam_constraint.hpp"
 #include "tether/constraints/distance_constraint.hpp"
 #include "tether/constraints/expression_constraint.hpp"
+#include "tether/constraints/external_constraint_function.hpp"
 #include "tether/constraints/linear_constraint.hpp"
 #include "tether/constraints/user_mpc_constraint.hpp"
 
@@ -68,6 +69,17 @@ std::unique_ptr<ConstraintFunction> make_constraint_function(const Model& model,
         return std::make_unique<UserMpcConstraint>(data.library, data.symbol,
                                                    data.node_mode ? UserMpcMode::Node : UserMpcMode::Dof, data.flag,
                                                    data.nodes, labels, reference, dofs, what);
+      }
+      case ConstraintData::Kind::External: {
+        std::vector<int> function_dofs;
+        Eigen::VectorXd reference(2 * static_cast<Eigen::Index>(data.nodes.size()));
+        for (std::size_t k = 0; k < data.nodes.size(); ++k) {
+          const int n = data.nodes[k];
+          function_dofs.push_back(dof(n, 0)), function_dofs.push_back(dof(n, 1));
+          reference.segment<2>(2 * static_cast<Eigen::Index>(k)) = model.coords[n];
+        }
+        return std::make_unique<ExternalConstraintFunction>(data.external, std::move(function_dofs),
+                                                            std::move(reference), what);
       }
       case ConstraintData::Kind::User: break;
     }

@@ -1,10 +1,12 @@
 #pragma once
 /// \file Constraints as read from a deck (`*EQUATION`, `*MPC`, `*CONSTRAINT`, `*TIE`, `*PERIODIC`): plain data.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "tether/core/error.hpp"
+#include "tether/model/external_constraint.hpp"
 
 namespace tether {
 
@@ -43,6 +45,7 @@ struct ConstraintData {
     Linear,      ///< *TIE (one slave node) / *PERIODIC (one node pair): several equations `rows`, each sum = 0
     Beam,        ///< *MPC BEAM: node a rigidly attached to node b, which gets a rotation dof
     UserMpc,     ///< *MPC, USER: ABAQUS-style user routine (MODE=DOF or NODE) in a shared library
+    External,    ///< computed by the program that built the model (`external`, e.g. Python callables)
   };
   Kind kind = Kind::Equation;
   std::string name;                   ///< NAME= or generated ("EQUATION-3", "MPC-2 LINK")
@@ -57,6 +60,7 @@ struct ConstraintData {
   int n_multipliers = 1;              ///< User: multipliers the routine expects
   int flag = 0;                       ///< User: passed to the routine; UserMpc: JTYPE
   bool node_mode = false;             ///< UserMpc: MODE=NODE (several dofs of the first node), else MODE=DOF
+  std::shared_ptr<const ExternalConstraint> external;  ///< External: the function (over the x, y of `nodes`)
   Enforcement enforcement;
   SourceLocation where;
 
