@@ -43,6 +43,9 @@ void ExplicitDynamicProcedure::check_supported() const {
     throw ModelError(scheme + "constraints with Lagrange multipliers yet: " + disc.constraints().front()->describe());
   if (!disc.user_constraints().empty())
     throw ModelError(scheme + "user constraints yet: " + disc.user_constraints().front()->describe());
+  if (!disc.mortar_pairs().empty())
+    throw ModelError(scheme + "mortar (SURFACE TO SURFACE) contact yet: " + disc.mortar_pairs().front()->describe() +
+                     "; use TYPE=NODE TO SURFACE in explicit steps");
   if (!disc.elimination_rows().empty())
     throw ModelError(scheme + "eliminated dofs (*EQUATION, *MPC, *TIE by elimination) yet: " +
                      std::to_string(disc.elimination_rows().size()) + " dependent dof(s)");
