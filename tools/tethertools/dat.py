@@ -11,7 +11,7 @@ rows (lists of floats), in file order.
 """
 import re
 
-_HEADER = re.compile(r"^\s*(?P<title>\S.*?)\s+for\s*set\s+(?P<set>\S+)\s+and\s+time\s+(?P<time>\S+)\s*$")
+_HEADER = re.compile(r"^\s*(?P<title>\S.*?)\s*for\s*set\s+(?P<set>\S+)\s+and\s+time\s+(?P<time>\S+)\s*$")
 _CONTACT_HEADER = re.compile(
     r"^\s*(?P<title>\S.*?)\s*\bfor\s*(?:pair\s+(?P<set>\S+)\s+and\s+|all\s+contact\s+elements\s+and\s+)?"
     r"time\s*(?P<time>[-+0-9.]\S*)\s*$")
