@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "run_deck.hpp"
+#include "tether/output/restart_file.hpp"
 
 namespace tether {
 namespace {
@@ -187,6 +188,43 @@ TEST(ImplicitDynamics, RayleighDampingDissipatesWhatTheBalanceCounts) {
   const double omega = std::sqrt(k / m), zeta = 2.0 / (2 * omega) + 1e-4 * omega / 2;
   const double decay = std::exp(-2 * zeta * omega * 2 * period);  // of the energy over two periods
   EXPECT_NEAR((e.kinetic + e.strain) / e0, decay, 0.05 * decay);
+}
+
+/// Keeps every restart state (through the file encoding) and the results.
+class StateRecorder final : public AnalysisObserver {
+ public:
+  void on_results(const IncrementResults& r, const Step&, bool) override { results.push_back(r); }
+  void on_restart_state(const RestartState& s) override { states.push_back(decode_restart(encode_restart(s), "m.rst")); }
+  std::vector<IncrementResults> results;
+  std::vector<RestartState> states;
+};
+
+TEST(ImplicitDynamics, ARestartWithinAStepContinuesExactly) {
+  const double k = one_dof_stiffness(), m = 1.0 / 9.0;
+  const double period = 2 * std::numbers::pi * std::sqrt(m / k);
+  const Model model = read_deck_string(
+      one_dof_deck("*DYNAMIC, ALPHA=-0.1, DIRECT\n" + num(period / 40) + ", " + num(period) + "\n*CLOAD\n3, 1, 2.\n",
+                   "*INITIAL CONDITIONS, TYPE=VELOCITY\n3, 1, 1.\n*RESTART, WRITE, FREQUENCY=7\n"),
+      "test.inp");
+  StateRecorder full;
+  StaticAnalysis(model, full).run();
+  ASSERT_EQ(full.results.size(), 40u);
+  ASSERT_GE(full.states.size(), 3u);
+  for (const RestartState& state : {full.states[0], full.states[2]}) {
+    ASSERT_FALSE(state.step_completed);
+    StateRecorder rest;
+    StaticAnalysis resumed(model, rest);
+    resumed.resume(state, "m.rst");
+    ASSERT_TRUE(resumed.run().completed);
+    ASSERT_FALSE(rest.results.empty());
+    const IncrementResults& a = rest.results.back();
+    const IncrementResults& b = full.results.back();
+    for (std::size_t i = 0; i < a.displacement.size(); ++i) {
+      EXPECT_EQ(a.displacement[i], b.displacement[i]) << "restart at increment " << state.increment;
+      EXPECT_EQ(a.velocity[i], b.velocity[i]);
+    }
+    EXPECT_EQ(a.energy->total, b.energy->total);
+  }
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <unordered_map>
 
-#include "tether/analysis/acceptance.hpp"
+#include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/contact/contact_pair.hpp"
 #include "tether/core/error.hpp"
@@ -171,20 +171,9 @@ IncrementOutcome ImplicitDynamicProcedure::solve_increment(const IncrementAttemp
                            &disc.contact_pairs());
   int iterations = 0;
   const NewtonOutcome newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_,
-                                                     averaged_force_, n_averaged_, iterations);
-  IncrementOutcome out;
-  out.converged = newton.status == NewtonOutcome::Status::Converged;
-  out.iterations = iterations;
-  out.message = newton.message;
-  out.singular_at_start = newton.status == NewtonOutcome::Status::SingularMatrix && newton.singular_at_start;
-  out.singular_multiplier = newton.singular_multiplier;
-
-  IncrementReport report;
-  report.step = attempt.step, report.increment = attempt.increment, report.attempt = attempt.attempt;
-  report.iterations = iterations, report.total_iterations = attempt.prior_iterations + iterations;
-  report.step_time = t.step_time, report.total_time = t.total_time, report.increment_size = t.dt;
-  report.residual = newton.force_residual, report.converged = out.converged, report.note = newton.message;
-  observer_.on_increment(report);
+                                                     force_average_.value, force_average_.n, iterations);
+  const IncrementOutcome out = outcome_of(newton, iterations);
+  observer_.on_increment(report_of(attempt, newton, iterations));
   if (out.converged)
     complete(attempt, problem, iterations, newton.force_scale);
   else
@@ -224,14 +213,8 @@ void ImplicitDynamicProcedure::complete(const IncrementAttempt& attempt, const I
   update_energy(s, work_force(s, reaction), results);
   results.energy = motion_.energy;
   for (Contribution* c : system_.contributions()) c->commit(s);
-  averaged_force_ = (averaged_force_ * n_averaged_ + force_scale) / (n_averaged_ + 1);
-  ++n_averaged_;
-
-  results.step = attempt.step;
-  results.increment = attempt.increment;
-  results.step_time = attempt.time.step_time;
-  results.total_time = attempt.time.total_time;
-  results.iterations = iterations;
+  force_average_.add(force_scale);
+  stamp(results, attempt, iterations);
   observer_.on_results(results, system_.step(), attempt.time.ends_step);
   output_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
 }
@@ -262,14 +245,11 @@ SolveTiming ImplicitDynamicProcedure::timing() const {
   return t;
 }
 
-void ImplicitDynamicProcedure::save(RestartState& state) const {
-  state.averaged_force = averaged_force_;
-  state.n_averaged = n_averaged_;
-}
+void ImplicitDynamicProcedure::save(RestartState& state) const { force_average_.save(state); }
 
 void ImplicitDynamicProcedure::restore(const RestartState& state) {
-  averaged_force_ = state.averaged_force;
-  n_averaged_ = state.n_averaged;
+  force_average_.restore(state);
+  started_ = true;  // the step's start (initial accelerations) lies before the saved state
 }
 
 }  // namespace tether

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "tether/analysis/analysis_observer.hpp"
+#include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/increment_problem.hpp"
 #include "tether/analysis/motion_state.hpp"
 #include "tether/analysis/procedure.hpp"
@@ -65,8 +66,7 @@ class ImplicitDynamicProcedure final : public Procedure {
   bool started_ = false;
   Eigen::VectorXd cloads_;     ///< nodal forces at the attempt's end time, over all dofs
   Eigen::VectorXd external_;   ///< cloads_ + alpha/(1+alpha) * the previous static residual
-  double averaged_force_ = 0;
-  int n_averaged_ = 0;
+  ForceAverage force_average_;
   double output_seconds_ = 0;
 };
 

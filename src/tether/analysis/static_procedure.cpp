@@ -2,7 +2,7 @@
 
 #include <chrono>
 
-#include "tether/analysis/acceptance.hpp"
+#include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/core/error.hpp"
 
@@ -25,29 +25,10 @@ IncrementOutcome StaticProcedure::solve_increment(const IncrementAttempt& attemp
                            &disc.contact_pairs());
   int iterations = 0;
   const NewtonOutcome newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_,
-                                                     averaged_force_, n_averaged_, iterations);
+                                                     force_average_.value, force_average_.n, iterations);
 
-  IncrementOutcome out;
-  out.converged = newton.status == NewtonOutcome::Status::Converged;
-  out.iterations = iterations;
-  out.message = newton.message;
-  out.singular_at_start = newton.status == NewtonOutcome::Status::SingularMatrix && newton.singular_at_start;
-  out.singular_multiplier = newton.singular_multiplier;
-
-  IncrementReport report;
-  report.step = attempt.step;
-  report.increment = attempt.increment;
-  report.attempt = attempt.attempt;
-  report.iterations = iterations;
-  report.total_iterations = attempt.prior_iterations + iterations;
-  report.step_time = t.step_time;
-  report.total_time = t.total_time;
-  report.increment_size = t.dt;
-  report.residual = newton.force_residual;
-  report.converged = out.converged;
-  report.note = newton.message;
-  observer_.on_increment(report);
-
+  const IncrementOutcome out = outcome_of(newton, iterations);
+  observer_.on_increment(report_of(attempt, newton, iterations));
   if (out.converged)
     complete(attempt, problem, iterations, newton.force_scale);
   else
@@ -70,14 +51,8 @@ void StaticProcedure::complete(const IncrementAttempt& attempt, const IncrementP
   IncrementResults results = build_results(disc, s, problem.full_residual(), system_.equations(),
                                            stream_results_ ? &point_source : nullptr);
   for (Contribution* c : system_.contributions()) c->commit(s);
-  averaged_force_ = (averaged_force_ * n_averaged_ + force_scale) / (n_averaged_ + 1);
-  ++n_averaged_;
-
-  results.step = attempt.step;
-  results.increment = attempt.increment;
-  results.step_time = attempt.time.step_time;
-  results.total_time = attempt.time.total_time;
-  results.iterations = iterations;
+  force_average_.add(force_scale);
+  stamp(results, attempt, iterations);
   observer_.on_results(results, system_.step(), attempt.time.ends_step);
   output_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - output_start).count();
 }
@@ -88,14 +63,8 @@ SolveTiming StaticProcedure::timing() const {
   return t;
 }
 
-void StaticProcedure::save(RestartState& state) const {
-  state.averaged_force = averaged_force_;
-  state.n_averaged = n_averaged_;
-}
+void StaticProcedure::save(RestartState& state) const { force_average_.save(state); }
 
-void StaticProcedure::restore(const RestartState& state) {
-  averaged_force_ = state.averaged_force;
-  n_averaged_ = state.n_averaged;
-}
+void StaticProcedure::restore(const RestartState& state) { force_average_.restore(state); }
 
 }  // namespace tether

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "tether/analysis/analysis_observer.hpp"
+#include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/increment_problem.hpp"
 #include "tether/analysis/procedure.hpp"
 #include "tether/analysis/step_system.hpp"
@@ -43,8 +44,7 @@ class StaticProcedure final : public Procedure {
   bool stream_results_;
   NewtonSolver newton_;
   Eigen::VectorXd external_;  ///< nodal forces at the end of the increment, over all dofs
-  double averaged_force_ = 0;  ///< time average of Newton's force scale q over the step's increments
-  int n_averaged_ = 0;
+  ForceAverage force_average_;
   double output_seconds_ = 0;  ///< results and observer (on_results) in this step
 };
 

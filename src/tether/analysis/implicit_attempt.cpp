@@ -1,4 +1,4 @@
-#include "tether/analysis/acceptance.hpp"
+#include "tether/analysis/implicit_attempt.hpp"
 
 #include <string>
 
@@ -41,6 +41,40 @@ NewtonOutcome solve_with_acceptance(NewtonSolver& newton, IncrementProblem& prob
                         "contact nodes released by a contact guard): Newton pass " + std::to_string(pass + 2));
   }
   return outcome;
+}
+
+IncrementOutcome outcome_of(const NewtonOutcome& newton, int iterations) {
+  IncrementOutcome out;
+  out.converged = newton.status == NewtonOutcome::Status::Converged;
+  out.iterations = iterations;
+  out.message = newton.message;
+  out.singular_at_start = newton.status == NewtonOutcome::Status::SingularMatrix && newton.singular_at_start;
+  out.singular_multiplier = newton.singular_multiplier;
+  return out;
+}
+
+IncrementReport report_of(const IncrementAttempt& attempt, const NewtonOutcome& newton, int iterations) {
+  IncrementReport report;
+  report.step = attempt.step;
+  report.increment = attempt.increment;
+  report.attempt = attempt.attempt;
+  report.iterations = iterations;
+  report.total_iterations = attempt.prior_iterations + iterations;
+  report.step_time = attempt.time.step_time;
+  report.total_time = attempt.time.total_time;
+  report.increment_size = attempt.time.dt;
+  report.residual = newton.force_residual;
+  report.converged = newton.status == NewtonOutcome::Status::Converged;
+  report.note = newton.message;
+  return report;
+}
+
+void stamp(IncrementResults& results, const IncrementAttempt& attempt, int iterations) {
+  results.step = attempt.step;
+  results.increment = attempt.increment;
+  results.step_time = attempt.time.step_time;
+  results.total_time = attempt.time.total_time;
+  results.iterations = iterations;
 }
 
 }  // namespace tether
