@@ -549,13 +549,13 @@ TEST(Cli, CheckOverSeveralDecksTabulatesWhatTheyNeed) {
   const fs::path dir = scratch("survey");
   fs::create_directories(dir / "more");
   write(dir / "good.inp", kGoodDeck);
-  std::string dynamic = kGoodDeck;
-  dynamic.replace(dynamic.find("*STATIC"), 7, "*DYNAMIC");
-  write(dir / "more" / "dynamic.inp", dynamic);
+  std::string frequency = kGoodDeck;
+  frequency.replace(frequency.find("*STATIC"), 7, "*FREQUENCY");
+  write(dir / "more" / "frequency.inp", frequency);
   std::string needs = kGoodDeck;
   needs.replace(needs.find("TYPE=CPE4"), 9, "TYPE=C3D8");
   needs.replace(needs.find("*NSET, NSET=LEFT"), 16, "*NSET, NSET=LEFT, UNSORTED");
-  needs.replace(needs.find("*STATIC"), 7, "*DYNAMIC");
+  needs.replace(needs.find("*STATIC"), 7, "*FREQUENCY");
   write(dir / "needs.inp", needs);
   std::string broken = kGoodDeck;
   broken.replace(broken.find("1000, 0.3"), 9, "1000, 0.3x");
@@ -564,12 +564,12 @@ TEST(Cli, CheckOverSeveralDecksTabulatesWhatTheyNeed) {
                         (dir / "broken.inp").string() + " " + (dir / "more").string());
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(r.out.find("good.inp: OK"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("needs.inp: refused: *DYNAMIC, *NSET, UNSORTED, C3D8"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("needs.inp: refused: *FREQUENCY, *NSET, UNSORTED, C3D8"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("broken.inp:14: error: bad number"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("4 deck(s): 1 read, 2 refused by the keyword table, 1 with other errors"), std::string::npos)
       << r.out;
-  // The table: *DYNAMIC in two decks first, then the rest once each.
-  const auto row = r.out.find("procedure        *DYNAMIC");
+  // The table: *FREQUENCY in two decks first, then the rest once each.
+  const auto row = r.out.find("procedure        *FREQUENCY");
   ASSERT_NE(row, std::string::npos) << r.out;
   EXPECT_NE(r.out.find("     2           2", row), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("element type     C3D8"), std::string::npos) << r.out;

@@ -26,7 +26,7 @@ TEST(DeckSurvey, FindsEveryRefusalPastTheFirst) {
   std::string deck = replaced(kDeck, "TYPE=CPE4", "TYPE=C3D8");
   deck = replaced(deck, "*NSET, NSET=LEFT", "*NSET, NSET=LEFT, UNSORTED");
   deck = replaced(deck, "*ELASTIC", "*ELASTIC, TYPE=ORTHOTROPIC");
-  deck = replaced(deck, "*STATIC", "*DYNAMIC\n*FOO");
+  deck = replaced(deck, "*STATIC", "*FREQUENCY\n*FOO");
   deck = replaced(deck, "*STEP\n", "*STEP, NLGEOM\n*\n");  // a bare choice and a lone '*' are fine
   const auto refusals = survey_deck(written("needs.inp", deck));
   ASSERT_EQ(refusals.size(), 5u);
@@ -34,13 +34,13 @@ TEST(DeckSurvey, FindsEveryRefusalPastTheFirst) {
       {Refusal::Kind::ElementType, "C3D8"},
       {Refusal::Kind::Parameter, "*NSET, UNSORTED"},
       {Refusal::Kind::ParameterValue, "*ELASTIC, TYPE=ORTHOTROPIC"},
-      {Refusal::Kind::Procedure, "*DYNAMIC"},
+      {Refusal::Kind::Procedure, "*FREQUENCY"},
       {Refusal::Kind::Keyword, "*FOO"}};
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(refusals[i].kind, expected[i].first) << i;
     EXPECT_EQ(refusals[i].what, expected[i].second) << i;
   }
-  EXPECT_EQ(refusals[3].where.line, line_of(deck, "*DYNAMIC"));
+  EXPECT_EQ(refusals[3].where.line, line_of(deck, "*FREQUENCY"));
   EXPECT_EQ(refusal_kind_name(Refusal::Kind::ParameterValue), "parameter value");
   EXPECT_TRUE(survey_deck(written("good.inp", kDeck)).empty());
 }
