@@ -336,45 +336,100 @@ TEST(ExplicitContact, ElasticBarHitsARigidWall) {
 TEST(ExplicitContact, CorrectorConservesLinearMomentum) {
   // Two free unit-density squares: A (0.8 x 0.8) moving at (2, 0.5) onto B
   // (1 x 1) at rest, A's right face the slave, B's left face the master;
-  // they touch at t = 0, slide along the face and part.
-  const std::string deck =
-      "*NODE\n1, -0.8, 0.1\n2, 0, 0.1\n3, 0, 0.9\n4, -0.8, 0.9\n5, 0, 0\n6, 1, 0\n7, 1, 1\n8, 0, 1\n"
-      "*ELEMENT, TYPE=CPE4, ELSET=A\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=CPE4, ELSET=B\n2, 5, 6, 7, 8\n"
-      "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n*SOLID SECTION, ELSET=A, MATERIAL=M\n"
-      "*SOLID SECTION, ELSET=B, MATERIAL=M\n*SURFACE, NAME=AR\n1, S2\n*SURFACE, NAME=BL\n2, S4\n"
-      "*SURFACE INTERACTION, NAME=I\n*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nAR, BL\n"
-      "*NSET, NSET=AN\n1, 2, 3, 4\n*INITIAL CONDITIONS, TYPE=VELOCITY\nAN, 1, 2.\nAN, 2, 0.5\n"
-      "*STEP\n*DYNAMIC, EXPLICIT\n, 0.2\n*END STEP\n";
-  const DeckRun run = run_deck_text(deck);
-  ASSERT_TRUE(run.summary.completed) << run.summary.message;
-  const double mass_a = 0.64 / 4, mass_b = 0.25;  // lumped, per node
-  const Eigen::Vector2d initial(4 * mass_a * 2, 4 * mass_a * 0.5);
-  bool touched = false;
-  for (const IncrementResults& r : run.recorder.results) {
-    Eigen::Vector2d momentum(0, 0);
-    for (int i = 0; i < 8; ++i) momentum += (i < 4 ? mass_a : mass_b) * r.velocity[static_cast<std::size_t>(i)];
-    EXPECT_NEAR((momentum - initial).norm(), 0, 1e-13 * initial.norm()) << "time " << r.step_time;
-    touched = touched || r.contact[0].total_force.norm() > 0;
-    EXPECT_GE(r.energy->numerical, -1e-12);  // the kinematic corrector never adds energy here
+  // they touch at t = 0, slide along the face (without friction, or stick
+  // and slip with mu = 0.5) and part.
+  for (const std::string friction : {"", "*FRICTION\n0.5\n"}) {
+    SCOPED_TRACE(friction.empty() ? "frictionless" : "mu = 0.5");
+    const std::string deck =
+        "*NODE\n1, -0.8, 0.1\n2, 0, 0.1\n3, 0, 0.9\n4, -0.8, 0.9\n5, 0, 0\n6, 1, 0\n7, 1, 1\n8, 0, 1\n"
+        "*ELEMENT, TYPE=CPE4, ELSET=A\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=CPE4, ELSET=B\n2, 5, 6, 7, 8\n"
+        "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n*SOLID SECTION, ELSET=A, MATERIAL=M\n"
+        "*SOLID SECTION, ELSET=B, MATERIAL=M\n*SURFACE, NAME=AR\n1, S2\n*SURFACE, NAME=BL\n2, S4\n"
+        "*SURFACE INTERACTION, NAME=I\n" +
+        friction +
+        "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nAR, BL\n"
+        "*NSET, NSET=AN\n1, 2, 3, 4\n*INITIAL CONDITIONS, TYPE=VELOCITY\nAN, 1, 2.\nAN, 2, 0.5\n"
+        "*STEP\n*DYNAMIC, EXPLICIT\n, 0.2\n*END STEP\n";
+    const DeckRun run = run_deck_text(deck);
+    ASSERT_TRUE(run.summary.completed) << run.summary.message;
+    const double mass_a = 0.64 / 4, mass_b = 0.25;  // lumped, per node
+    const Eigen::Vector2d initial(4 * mass_a * 2, 4 * mass_a * 0.5);
+    bool touched = false;
+    for (const IncrementResults& r : run.recorder.results) {
+      Eigen::Vector2d momentum(0, 0);
+      for (int i = 0; i < 8; ++i) momentum += (i < 4 ? mass_a : mass_b) * r.velocity[static_cast<std::size_t>(i)];
+      EXPECT_NEAR((momentum - initial).norm(), 0, 1e-13 * initial.norm()) << "time " << r.step_time;
+      touched = touched || r.contact[0].total_force.norm() > 0;
+      EXPECT_GE(r.energy->numerical, -1e-12);  // the kinematic corrector never adds energy here
+    }
+    EXPECT_TRUE(touched);
+    // Without friction B is pushed along x only (vertical face): its y momentum stays 0; friction drags it up.
+    double b_momentum_y = 0, b_momentum_x = 0;
+    for (int i = 4; i < 8; ++i) {
+      b_momentum_x += mass_b * run.last().velocity[static_cast<std::size_t>(i)].x();
+      b_momentum_y += mass_b * run.last().velocity[static_cast<std::size_t>(i)].y();
+    }
+    EXPECT_GT(b_momentum_x, 0.1 * initial.x());
+    if (friction.empty())
+      EXPECT_NEAR(b_momentum_y, 0, 0.02 * initial.norm());
+    else
+      EXPECT_GT(b_momentum_y, 0.02 * initial.norm());
   }
-  EXPECT_TRUE(touched);
-  // B was pushed along x only (frictionless, vertical face): its y momentum stays 0.
-  double b_momentum_y = 0, b_momentum_x = 0;
-  for (int i = 4; i < 8; ++i) {
-    b_momentum_x += mass_b * run.last().velocity[static_cast<std::size_t>(i)].x();
-    b_momentum_y += mass_b * run.last().velocity[static_cast<std::size_t>(i)].y();
-  }
-  EXPECT_GT(b_momentum_x, 0.1 * initial.x());
-  EXPECT_NEAR(b_momentum_y, 0, 0.02 * initial.norm());
 }
 
-TEST(ExplicitContact, FrictionIsRefusedByName) {
+TEST(ExplicitContact, SoftContactIsRefusedByName) {
   std::string deck = wall_deck(4, 0.01, 1, 1e-5);
-  deck.replace(deck.find("*SURFACE INTERACTION, NAME=I\n"), 29, "*SURFACE INTERACTION, NAME=I\n*FRICTION\n0.3\n");
+  deck.replace(deck.find("*SURFACE INTERACTION, NAME=I\n"), 29,
+               "*SURFACE INTERACTION, NAME=I\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e7\n");
   const DeckRun run = run_deck_text(deck);
   EXPECT_FALSE(run.summary.completed);
-  EXPECT_NE(run.summary.message.find("does not support friction"), std::string::npos) << run.summary.message;
+  EXPECT_NE(run.summary.message.find("soft pressure-overclosure"), std::string::npos) << run.summary.message;
   EXPECT_NE(run.summary.message.find("BAREND-WALLFACE"), std::string::npos) << run.summary.message;
+}
+
+/// A 0.1 m steel square (Poisson's ratio `nu`) on a held base, friction `mu`
+/// 0.3, pressed by p = 1e6 on its top and pushed sideways at its top nodes by
+/// `ratio` mu p A in all, both ramped over 5 ms (quasi-static normal force).
+std::string sliding_block_deck(double ratio, double nu) {
+  const double mu = 0.3, p = 1e6, a = 0.1;
+  return "*NODE\n1, 0, 0\n2, 0.1, 0\n3, 0.1, 0.1\n4, 0, 0.1\n11, -0.1, -0.1\n12, 0.2, -0.1\n13, 0.2, 0\n14, -0.1, 0\n"
+         "*ELEMENT, TYPE=CPE4, ELSET=BLOCK\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=CPE4, ELSET=BASE\n2, 11, 12, 13, 14\n"
+         "*NSET, NSET=BASEN\n11, 12, 13, 14\n*NSET, NSET=TOP\n3, 4\n*MATERIAL, NAME=STEEL\n*ELASTIC\n2e11, " + num(nu) +
+         "\n*DENSITY\n7800.\n*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL\n1.\n*SOLID SECTION, ELSET=BASE, MATERIAL=STEEL\n"
+         "1.\n*SURFACE, NAME=BOTTOM\n1, S1\n*SURFACE, NAME=FLOOR\n2, S3\n*SURFACE INTERACTION, NAME=I\n*FRICTION\n" +
+         num(mu) + "\n*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nBOTTOM, FLOOR\n*BOUNDARY\nBASEN, 1, 2\n"
+         "*STEP, AMPLITUDE=RAMP\n*DYNAMIC, EXPLICIT\n, 5e-3\n*DLOAD\n1, P3, " + num(p) + "\n*CLOAD\nTOP, 1, " +
+         num(ratio * mu * p * a / 2) + "\n*END STEP\n";
+}
+
+TEST(ExplicitContact, CoulombSlipOpposesTheMotionWithMuTimesTheNormalForce) {
+  // Pushed by 2 mu N(t) with N(t) = p A t / T: m v_x(T) = integral of (2 mu N - mu N) = mu p A T / 2.
+  const DeckRun run = run_deck_text(sliding_block_deck(2, 0.3));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const IncrementResults& end = run.last();
+  double momentum = 0;
+  for (int id : {1, 2, 3, 4}) momentum += 7800 * 0.01 / 4 * end.velocity[static_cast<std::size_t>(run.node(id))].x();
+  const double expected = 0.3 * 1e6 * 0.1 * 5e-3 / 2;
+  std::printf("block momentum %.6g against %.6g (%.3g %%); ALLFD %.6g ALLWK %.6g numerical %.3g\n", momentum, expected,
+              100 * (momentum / expected - 1), end.energy->friction, end.energy->work, end.energy->numerical);
+  EXPECT_NEAR(momentum / expected, 1, 0.01);
+  for (const ContactNodeValues& n : end.contact.at(0).nodes) {
+    EXPECT_EQ(n.status, ContactNodeValues::Status::Slip);
+    EXPECT_NEAR(std::abs(n.tangential_force), 0.3 * n.normal_force, 1e-9 * n.normal_force);
+  }
+  EXPECT_GT(end.energy->friction, 0.4 * end.energy->work);  // about half the work is dissipated
+  EXPECT_LT(std::abs(end.energy->numerical), 2e-3 * end.energy->work);
+}
+
+TEST(ExplicitContact, BelowTheFrictionLimitTheBlockSticks) {
+  const DeckRun run = run_deck_text(sliding_block_deck(0.2, 0));
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  for (const IncrementResults& r : run.recorder.results)
+    for (const ContactNodeValues& n : r.contact.at(0).nodes) {
+      EXPECT_EQ(n.status, ContactNodeValues::Status::Stick) << "time " << r.step_time;
+      EXPECT_LT(std::abs(r.displacement[static_cast<std::size_t>(n.node)].x()), 1e-15);
+    }
+  EXPECT_LT(std::abs(run.last().energy->friction), 1e-12 * run.last().energy->work);
 }
 
 }  // namespace

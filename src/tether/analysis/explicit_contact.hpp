@@ -1,7 +1,7 @@
 #pragma once
 /// \file Contact in explicit dynamics: the predictor–corrector with
 /// forward-increment Lagrange multipliers (Carpenter, Taylor & Katona 1991;
-/// ABAQUS/Explicit's kinematic contact), hard and frictionless, node to segment.
+/// ABAQUS/Explicit's kinematic contact), hard, with Coulomb friction, node to segment.
 ///
 /// After the central-difference predictor has moved every node without
 /// contact, each slave node is paired with its closest master segment
@@ -18,7 +18,16 @@
 /// forces sum to zero over each pair of slave and segment (sum N_a = 1), so
 /// the correction conserves linear momentum exactly. Prescribed dofs do not
 /// move (their inverse mass is 0): a held master is rigid, and the force on it
-/// goes into its reaction. See docs/theory/explicit_dynamics.md.
+/// goes into its reaction.
+///
+/// Coulomb friction (stick/slip): after the normal correction, each closed
+/// slave's tangential motion relative to the master's material point at ξ*
+/// over the increment, Δs_k = T_k (x' − x_n) with T_k = [t; −N_1 t; …], is
+/// removed by tangential multipliers (c T M⁻¹ Tᵀ λ_t = −Δs, stick); a slave
+/// whose |λ_t| would exceed μ λ_k slips with λ_t = ±μ λ_k (the sign of the
+/// stick force), and the others are solved again with it fixed. The
+/// dissipation −λ_t Δs' (Δs' the corrected slip) of each increment is
+/// added by commit(). See docs/theory/explicit_dynamics.md.
 
 #include <Eigen/Core>
 #include <vector>
@@ -33,25 +42,35 @@ class ExplicitContact {
  public:
   /// The contact pairs of `discretization` (must outlive this). Throws
   /// ModelError naming the pair for what the explicit corrector does not
-  /// support: a soft pressure–overclosure law, friction, SMOOTH.
+  /// support: a soft pressure–overclosure law, SMOOTH, a stick slope or ELASTIC SLIP.
   explicit ExplicitContact(const Discretization& discretization);
 
   [[nodiscard]] bool empty() const { return pairs_.empty(); }
 
   /// Contact forces f_c (over all unknowns; 0 where no contact) that remove
   /// the penetrations of the predicted displacements `u` when the nodes move by
-  /// c M^-1 f_c (`inverse_mass` over all unknowns, 0 at prescribed dofs).
-  /// Remembers each slave's pairing, gap and multiplier for values().
-  void correct(const Eigen::VectorXd& u, const Eigen::VectorXd& inverse_mass, double c, Eigen::VectorXd& force);
+  /// c M^-1 f_c (`inverse_mass` over all unknowns, 0 at prescribed dofs), and
+  /// with friction the slip relative to the displacements `u_now` at t_n
+  /// (stick) or oppose it with mu times the normal force (slip).
+  /// Remembers each slave's pairing, gap and forces for values().
+  void correct(const Eigen::VectorXd& u_now, const Eigen::VectorXd& u, const Eigen::VectorXd& inverse_mass, double c,
+               Eigen::VectorXd& force);
+  /// The increment whose forces the last correct() gave is taken: its
+  /// friction dissipation and slip join the totals.
+  void commit();
 
-  /// The contact output of the last correct(), per pair (normal forces at time t_n).
+  /// The contact output of the last correct(), per pair (forces at time t_n;
+  /// slip and dissipation totals as committed).
   [[nodiscard]] std::vector<ContactPairValues> values() const;
+  /// Friction dissipation committed so far, over every pair [energy].
+  [[nodiscard]] double dissipation() const;
 
  private:
   struct Constraint {
     int pair = 0, slave = 0;       ///< pair index, slave index in it
-    std::vector<int> dofs;         ///< slave x, y, then the segment nodes' x, y
-    std::vector<double> gradient;  ///< dg/d(dofs): n, -N_1 n, ...
+    std::vector<int> dofs;                 ///< slave x, y, then the segment nodes' x, y
+    std::vector<double> gradient;          ///< dg/d(dofs): n, -N_1 n, ...
+    std::vector<double> tangent_gradient;  ///< ds/d(dofs): t, -N_1 t, ...
     double gap = 0;                ///< predicted gap [length], < 0
   };
   struct Pair {
@@ -60,17 +79,33 @@ class ExplicitContact {
     MasterSurface surface;
     std::vector<ContactPairing> pairing;  ///< per slave, last search
     std::vector<double> multiplier;       ///< per slave, last correction [force]
-    std::vector<Eigen::Vector2d> normal;  ///< per slave, master normal of the last correction
+    std::vector<Eigen::Vector2d> normal;   ///< per slave, master normal of the last correction
+    std::vector<Eigen::Vector2d> tangent;  ///< per slave, master tangent of the last correction
+    std::vector<double> tangential;        ///< per slave, tangential multiplier of the last correction [force]
+    std::vector<double> slip;              ///< per slave, corrected slip of the last correction [length]
+    std::vector<bool> slipping;            ///< per slave, slip (true) or stick in the last correction
+    std::vector<double> total_slip, dissipation;  ///< per slave, committed totals
   };
   /// The penetrating slaves of the predicted positions.
   std::vector<Constraint> penetrations(const Eigen::VectorXd& u);
-  /// Solves c G M^-1 G^T lambda = -g over the `active` constraints.
+  /// Solves c G M^-1 G^T lambda = rhs over the `active` constraints, G their
+  /// `gradient` (normal) or `tangent_gradient` rows.
   [[nodiscard]] Eigen::VectorXd multipliers(const std::vector<Constraint>& constraints, const std::vector<int>& active,
-                                            const Eigen::VectorXd& inverse_mass, double c) const;
+                                            const Eigen::VectorXd& inverse_mass, double c, bool tangential,
+                                            const Eigen::VectorXd& rhs) const;
+  /// Normal multipliers of the penetrating constraints (0 for released ones).
+  [[nodiscard]] Eigen::VectorXd normal_multipliers(const std::vector<Constraint>& constraints,
+                                                   const Eigen::VectorXd& inverse_mass, double c) const;
+  /// Coulomb friction on the closed constraints (normal forces `normal`, already in `force`):
+  /// adds the tangential forces to `force`, records them per slave.
+  void add_friction(const std::vector<Constraint>& constraints, const Eigen::VectorXd& normal,
+                    const Eigen::VectorXd& u_now, const Eigen::VectorXd& u, const Eigen::VectorXd& inverse_mass,
+                    double c, Eigen::VectorXd& force);
 
   const Discretization& discretization_;
   std::vector<Pair> pairs_;
   std::vector<Eigen::Vector2d> positions_;  ///< current node positions (scratch)
+  Eigen::VectorXd friction_force_;          ///< tangential forces of the last correction (scratch)
 };
 
 }  // namespace tether

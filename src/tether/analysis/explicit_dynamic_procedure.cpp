@@ -132,6 +132,7 @@ void ExplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
     motion_.started = true;
   }
   work_ = motion_.energy.work;
+  friction_start_ = motion_.energy.friction;
 }
 
 void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
@@ -176,13 +177,14 @@ void ExplicitDynamicProcedure::contact_force(const Eigen::VectorXd& u, double h,
   const int n_disp = system_.discretization().dofs().n_displacement_dofs();
   predicted_ = u;
   for (int d = 0; d < n_disp; ++d) predicted_[d] += h * (half_velocity_[d] + h_average * accel_[d]);
-  contact_->correct(predicted_, inverse_mass_, h * h_average, force);
+  contact_->correct(u, predicted_, inverse_mass_, h * h_average, force);
 }
 
 void ExplicitDynamicProcedure::advance(Eigen::VectorXd& u, double t, double h) {
   prescribed_accelerations(u, t, h);
   if (contact_) {  // the contact forces at t_n, from the predicted positions
     contact_force(u, h, contact_force_);
+    contact_->commit();
     accel_ += inverse_mass_.cwiseProduct(contact_force_);
     residual_ -= contact_force_;
   }
@@ -295,8 +297,9 @@ IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttem
   e.strain = 0;
   for (const auto& el : disc.elements()) e.strain += el->strain_energy(s);
   e.work = work_ + 0.5 * (force_previous_ + force_).dot(step_u_);
-  e.friction = e.viscous = 0;
-  e.total = e.kinetic + e.strain - e.work;
+  e.viscous = 0;
+  e.friction = friction_start_ + (contact_ ? contact_->dissipation() : 0.0);
+  e.total = e.kinetic + e.strain + e.friction - e.work;
   e.numerical = motion_.balance_start - e.total;
   results.energy = e;
   results.step = attempt.step;

@@ -120,6 +120,7 @@ class ExplicitDynamicProcedure final : public Procedure {
   Eigen::VectorXd accel_;                ///< a_n
   Eigen::VectorXd u_previous_;           ///< u_{n-1} (evaluation state's u_start)
   Eigen::VectorXd force_previous_, force_, step_u_;  ///< work forces at n-1 and n; u_n - u_{n-1}
+  double friction_start_ = 0;            ///< ALLFD at the step's start
   double work_ = 0;                      ///< ALLWK up to u_{n-1} (the last increment's share is added later)
   double period_ = 1, motion_time_offset_ = 0;  ///< the step's period and its start in total time
   double h_previous_ = 0;                ///< h_{n-1/2} (0 before the first increment)
