@@ -262,12 +262,18 @@ TEST(ExplicitDynamics, AnIncrementJustAboveTheStableOneDivergesAndJustBelowDoesN
 
 TEST(ExplicitDynamics, UnsupportedContributionsAreRefusedByName) {
   const std::string base = bar_deck(2, 0.01, "", "*DYNAMIC, EXPLICIT\n, 1e-5\n");
-  std::string equation = base;
-  equation.replace(equation.find("*STEP"), 5, "*EQUATION\n2\n1, 1, 1., 3, 1, -1.\n*STEP");
-  const DeckRun eq = run_deck_text(equation);
-  EXPECT_FALSE(eq.summary.completed);
-  EXPECT_NE(eq.summary.message.find("*DYNAMIC, EXPLICIT (step"), std::string::npos) << eq.summary.message;
-  EXPECT_NE(eq.summary.message.find("does not support"), std::string::npos) << eq.summary.message;
+  // Constraints: exact multipliers only (eliminated, penalty and regularised ones are refused).
+  for (const auto& [enforcement, why] : std::vector<std::pair<std::string, std::string>>{
+           {"ENFORCEMENT=ELIMINATION", "does not support eliminated dofs"},
+           {"ENFORCEMENT=PENALTY, PENALTY=1e9", "without a multiplier"},
+           {"EPSILON=1e-9", "regularised"}}) {
+    std::string equation = base;
+    equation.replace(equation.find("*STEP"), 5, "*EQUATION, " + enforcement + "\n2\n2, 1, 1., 3, 1, -1.\n*STEP");
+    const DeckRun eq = run_deck_text(equation);
+    EXPECT_FALSE(eq.summary.completed) << enforcement;
+    EXPECT_NE(eq.summary.message.find("*DYNAMIC, EXPLICIT"), std::string::npos) << eq.summary.message;
+    EXPECT_NE(eq.summary.message.find(why), std::string::npos) << eq.summary.message;
+  }
 
   std::string no_density = base;
   no_density.erase(no_density.find("*DENSITY"), std::string("*DENSITY\n7800\n").size());
@@ -430,6 +436,63 @@ TEST(ExplicitContact, BelowTheFrictionLimitTheBlockSticks) {
       EXPECT_LT(std::abs(r.displacement[static_cast<std::size_t>(n.node)].x()), 1e-15);
     }
   EXPECT_LT(std::abs(run.last().energy->friction), 1e-12 * run.last().energy->work);
+}
+
+
+/// The bar of bar_deck cut at node `cut` (1 < cut <= n): the right part gets
+/// its own interface nodes (labels + 5000) tied to the left part's in x by *EQUATION.
+std::string tied_bar_deck(int n, double h, int cut, const std::string& bc, const std::string& step) {
+  std::string deck = bar_deck(n, h, bc, step);
+  std::ostringstream nodes, more;
+  nodes.precision(17);
+  const int bottom = cut, top = n + 1 + cut;
+  nodes << bottom + 5000 << ", " << (cut - 1) * h << ", 0\n" << top + 5000 << ", " << (cut - 1) * h << ", " << h << "\n";
+  deck.replace(deck.find("*ELEMENT"), 8, nodes.str() + "*ELEMENT");
+  more << "*NSET, NSET=ALLN\n" << bottom + 5000 << ", " << top + 5000 << "\n*NSET, NSET=INNER\n" << bottom + 5000
+       << ", " << top + 5000 << "\n*EQUATION\n2\n" << bottom << ", 1, 1., " << bottom + 5000 << ", 1, -1.\n2\n" << top
+       << ", 1, 1., " << top + 5000 << ", 1, -1.\n";
+  // Element `cut` (the first of the right part) takes the new nodes.
+  const std::string old_row = std::to_string(cut) + ", " + std::to_string(bottom) + ", " + std::to_string(bottom + 1) +
+                              ", " + std::to_string(top + 1) + ", " + std::to_string(top) + "\n";
+  const std::string new_row = std::to_string(cut) + ", " + std::to_string(bottom + 5000) + ", " +
+                              std::to_string(bottom + 1) + ", " + std::to_string(top + 1) + ", " +
+                              std::to_string(top + 5000) + "\n";
+  EXPECT_NE(deck.find(old_row), std::string::npos) << old_row;
+  deck.replace(deck.find(old_row), old_row.size(), new_row);
+  deck.replace(deck.find("*BOUNDARY"), 9, more.str() + "*BOUNDARY");
+  return deck;
+}
+
+TEST(ExplicitConstraints, ATiedBarCarriesTheWaveLikeOneBar) {
+  // The tie's correction makes the two interface nodes one node of their
+  // summed mass: the impact wave crosses it as if the bar were whole.
+  const int n = 40, cut = 15;
+  const double h = 0.01, transit = n * h / kCp;
+  const std::string bc = "LEFT, 1, 1\n*INITIAL CONDITIONS, TYPE=VELOCITY\nINNER, 1, -1.\nRIGHT, 1, -1.\n";
+  const std::string step = "*DYNAMIC, EXPLICIT\n, " + num(1.5 * transit) + "\n";
+  const DeckRun whole = run_deck_text(bar_deck(n, h, bc, step));
+  const DeckRun tied = run_deck_text(tied_bar_deck(n, h, cut, bc, step));
+  ASSERT_TRUE(whole.summary.completed) << whole.summary.message;
+  ASSERT_TRUE(tied.summary.completed) << tied.summary.message;
+  ASSERT_EQ(whole.recorder.results.size(), tied.recorder.results.size());
+  double worst = 0, multiplier = 0;
+  for (std::size_t k = 0; k < whole.recorder.results.size(); ++k) {
+    const IncrementResults& a = whole.recorder.results[k];
+    const IncrementResults& b = tied.recorder.results[k];
+    for (int id = 1; id <= 2 * n + 2; ++id) {
+      worst = std::max(worst, std::abs(a.velocity[static_cast<std::size_t>(whole.node(id))].x() -
+                                       b.velocity[static_cast<std::size_t>(tied.node(id))].x()));
+      if (id == cut || id == n + 1 + cut)
+        worst = std::max(worst, std::abs(b.velocity[static_cast<std::size_t>(tied.node(id))].x() -
+                                         b.velocity[static_cast<std::size_t>(tied.node(id + 5000))].x()));
+    }
+    for (const MultiplierValues& m : b.multipliers)
+      for (double v : m.value) multiplier = std::max(multiplier, std::abs(v));
+  }
+  std::printf("largest velocity difference %.3g (of v0 = 1); largest tie multiplier %.6g\n", worst, multiplier);
+  EXPECT_LT(worst, 1e-9);
+  // The tie carries the wave's force: half of rho c_p v0 A per node pair, at the front's passage more.
+  EXPECT_GT(multiplier, 0.4 * kRho * kCp * h);
 }
 
 }  // namespace

@@ -33,16 +33,14 @@ ExplicitDynamicProcedure::ExplicitDynamicProcedure(StepSystem& system, AnalysisO
   check_supported();
   if (!system.discretization().contact_pairs().empty())
     contact_ = std::make_unique<ExplicitContact>(system.discretization());
+  if (!system.discretization().constraints().empty() || !system.discretization().user_constraints().empty())
+    constraints_ = std::make_unique<ExplicitConstraints>(system.discretization(), u);
   update_limit(u, 0, true);
 }
 
 void ExplicitDynamicProcedure::check_supported() const {
   const Discretization& disc = system_.discretization();
   const std::string scheme = "*DYNAMIC, EXPLICIT (step " + system_.step().name + ") does not support ";
-  if (!disc.constraints().empty())
-    throw ModelError(scheme + "constraints with Lagrange multipliers yet: " + disc.constraints().front()->describe());
-  if (!disc.user_constraints().empty())
-    throw ModelError(scheme + "user constraints yet: " + disc.user_constraints().front()->describe());
   if (!disc.mortar_pairs().empty())
     throw ModelError(scheme + "mortar (SURFACE TO SURFACE) contact yet: " + disc.mortar_pairs().front()->describe() +
                      "; use TYPE=NODE TO SURFACE in explicit steps");
@@ -172,19 +170,28 @@ void ExplicitDynamicProcedure::work_force(Eigen::VectorXd& out) const {
   for (int d : prescribed_) out[d] += residual_[d] + mass_[d] * accel_[d];
 }
 
-void ExplicitDynamicProcedure::contact_force(const Eigen::VectorXd& u, double h, Eigen::VectorXd& force) {
-  const double h_average = 0.5 * (h_previous_ + h);
+void ExplicitDynamicProcedure::correction_force(Eigen::VectorXd& u, double h, Eigen::VectorXd& force) {
+  const double h_average = 0.5 * (h_previous_ + h), c = h * h_average;
   const int n_disp = system_.discretization().dofs().n_displacement_dofs();
   predicted_ = u;
   for (int d = 0; d < n_disp; ++d) predicted_[d] += h * (half_velocity_[d] + h_average * accel_[d]);
-  contact_->correct(u, predicted_, inverse_mass_, h * h_average, force);
+  force.setZero(u.size());
+  if (constraints_) {  // first the constraints, then contact from the constrained prediction
+    constraints_->correct(predicted_, inverse_mass_, c, constraint_force_, u);
+    force += constraint_force_;
+    predicted_ += c * inverse_mass_.cwiseProduct(constraint_force_);
+  }
+  if (contact_) {
+    contact_->correct(u, predicted_, inverse_mass_, c, contact_only_);
+    force += contact_only_;
+  }
 }
 
 void ExplicitDynamicProcedure::advance(Eigen::VectorXd& u, double t, double h) {
   prescribed_accelerations(u, t, h);
-  if (contact_) {  // the contact forces at t_n, from the predicted positions
-    contact_force(u, h, contact_force_);
-    contact_->commit();
+  if (contact_ || constraints_) {  // the contact and constraint forces at t_n, from the predicted positions
+    correction_force(u, h, contact_force_);
+    if (contact_) contact_->commit();
     accel_ += inverse_mass_.cwiseProduct(contact_force_);
     residual_ -= contact_force_;
   }
@@ -225,6 +232,10 @@ IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttemp
   IncrementOutcome out;
   std::optional<IncrementResults> results;
   const auto output_start = Clock::now();
+  if (u.allFinite() && accel_.allFinite()) {  // the accelerations and corrections at t_n (multipliers into u)
+    prescribed_accelerations(u, t.step_time, h_previous_);
+    if (contact_ || constraints_) correction_force(u, h_previous_, contact_force_);
+  }
   // The results may stream element values from `points` until on_results returns.
   const EvaluationState s{u, u_previous_, t.step_time, t.total_time, h_previous_, system_.step().nlgeom};
   const DiscretizationPoints points(system_.discretization(), s);
@@ -261,11 +272,9 @@ IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttem
   const Discretization& disc = system_.discretization();
   const DofMap& dofs = disc.dofs();
   const IncrementTimes& t = attempt.time;
-  prescribed_accelerations(u, t.step_time, h_previous_);
   // The state at t_n with the contact forces of t_n, as the next increment will find them.
   Eigen::VectorXd accel = accel_, residual = residual_;
-  if (contact_) {
-    contact_force(u, h_previous_, contact_force_);
+  if (contact_ || constraints_) {  // correction_force() was called by solve_increment
     accel += inverse_mass_.cwiseProduct(contact_force_);
     residual -= contact_force_;
   }

@@ -11,8 +11,10 @@
 /// those velocities. Full-step velocities v_n = v_{n-1/2} + h/2 a_n are what
 /// the results, the kinetic energy and the next step see.
 ///
-/// Contact: ExplicitContact's predictor–corrector adds the contact forces
-/// at t_n before the velocities and positions are advanced.
+/// Constraints and contact: ExplicitConstraints' and ExplicitContact's
+/// predictor–corrector add their forces at t_n before the velocities and
+/// positions are advanced (constraints first, contact from the constrained
+/// prediction; the two are not iterated together).
 ///
 /// Time stepping: the explicit increment is the data line's increment with
 /// DIRECT (used as given, with a warning above the stable estimate) and
@@ -28,6 +30,7 @@
 #include <memory>
 #include <vector>
 
+#include "tether/analysis/explicit_constraints.hpp"
 #include "tether/analysis/explicit_contact.hpp"
 #include "tether/analysis/analysis_observer.hpp"
 #include "tether/analysis/motion_state.hpp"
@@ -52,8 +55,8 @@ class ExplicitDynamicProcedure final : public Procedure {
 
   /// `system`, `observer` and `motion` must outlive the procedure; `u` is the
   /// state at the step's start (for the stable increment). Throws ModelError
-  /// for what the explicit scheme does not support (constraints, user
-  /// constraints, eliminated dofs, damping; contact other than hard and frictionless), naming it.
+  /// for what the explicit scheme does not support (eliminated dofs, damping;
+  /// constraints without exact multipliers; contact other than hard), naming it.
   ExplicitDynamicProcedure(StepSystem& system, AnalysisObserver& observer, bool stream_results, MotionState& motion,
                            const Eigen::VectorXd& u);
 
@@ -86,9 +89,11 @@ class ExplicitDynamicProcedure final : public Procedure {
   void prescribed_accelerations(const Eigen::VectorXd& u, double t, double h);
   /// Forces doing work: applied forces at free dofs, the reactions r + m a at prescribed ones.
   void work_force(Eigen::VectorXd& out) const;
-  /// The contact forces at t_n (ExplicitContact::correct) for the positions
-  /// the next increment h would predict from the state `u`, half_velocity_, accel_.
-  void contact_force(const Eigen::VectorXd& u, double h, Eigen::VectorXd& force);
+  /// The constraint and contact forces at t_n (ExplicitConstraints and
+  /// ExplicitContact::correct) for the positions the next increment h would
+  /// predict from the state `u`, half_velocity_, accel_; the constraints'
+  /// multipliers are written into `u`.
+  void correction_force(Eigen::VectorXd& u, double h, Eigen::VectorXd& force);
   /// One explicit increment h from step time t to t + h.
   void advance(Eigen::VectorXd& u, double t, double h);
   /// Results and energies at the end of an interval, state `s` (also sets the
@@ -105,8 +110,10 @@ class ExplicitDynamicProcedure final : public Procedure {
   bool stream_results_;
   MotionState& motion_;
   StableIncrement stable_;
-  std::unique_ptr<ExplicitContact> contact_;  ///< null without contact pairs
-  Eigen::VectorXd contact_force_, predicted_;  ///< contact forces at t_n; scratch predicted displacements
+  std::unique_ptr<ExplicitContact> contact_;          ///< null without contact pairs
+  std::unique_ptr<ExplicitConstraints> constraints_;  ///< null without constraints
+  Eigen::VectorXd contact_force_;  ///< constraint and contact forces at t_n
+  Eigen::VectorXd predicted_, constraint_force_, contact_only_;  ///< scratch
   double limit_ = 0;
   bool started_ = false;
   std::vector<int> free_, prescribed_;   ///< displacement dofs that move by the scheme / by their values
