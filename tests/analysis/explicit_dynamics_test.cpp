@@ -16,6 +16,7 @@
 #include "tether/analysis/stable_increment.hpp"
 #include "tether/analysis/step_system.hpp"
 #include "tether/io/deck_reader.hpp"
+#include "tether/output/restart_file.hpp"
 
 namespace tether {
 namespace {
@@ -493,6 +494,43 @@ TEST(ExplicitConstraints, ATiedBarCarriesTheWaveLikeOneBar) {
   EXPECT_LT(worst, 1e-9);
   // The tie carries the wave's force: half of rho c_p v0 A per node pair, at the front's passage more.
   EXPECT_GT(multiplier, 0.4 * kRho * kCp * h);
+}
+
+
+/// Keeps the restart states (through the file format) and the results.
+class StateRecorder final : public AnalysisObserver {
+ public:
+  void on_results(const IncrementResults& r, const Step&, bool) override { results.push_back(r); }
+  void on_restart_state(const RestartState& s) override {
+    states.push_back(decode_restart(encode_restart(s), "memory.rst"));
+  }
+  std::vector<IncrementResults> results;
+  std::vector<RestartState> states;
+};
+
+TEST(ExplicitDynamics, ARestartWithinTheStepContinuesTheSameMotion) {
+  // The bar on the wall, saved at every report: resumed during the contact
+  // and after it, the run ends where the uninterrupted one does.
+  std::string deck = wall_deck(40, 0.01, 1, 2.2 * 0.4 / kCp);
+  deck.replace(deck.find("*STEP"), 5, "*RESTART, WRITE, FREQUENCY=1\n*STEP");
+  const Model model = read_deck_string(deck, "test.inp");
+  StateRecorder full;
+  StaticAnalysis uninterrupted(model, full);
+  ASSERT_TRUE(uninterrupted.run().completed);
+  const Eigen::VectorXd u_full = uninterrupted.solution();
+  ASSERT_GE(full.states.size(), 90u);
+  for (const std::size_t k : {std::size_t{30}, std::size_t{95}}) {
+    StateRecorder resumed;
+    StaticAnalysis analysis(model, resumed);
+    analysis.resume(full.states[k], "memory.rst");
+    ASSERT_TRUE(analysis.run().completed) << "from report " << k + 1;
+    const Eigen::VectorXd u = analysis.solution();
+    const int n_disp = 2 * static_cast<int>(model.coords.size());
+    EXPECT_LT((u - u_full).head(n_disp).cwiseAbs().maxCoeff(), 1e-12 * u_full.head(n_disp).cwiseAbs().maxCoeff())
+        << "from report " << k + 1;
+    EXPECT_NEAR(resumed.results.back().velocity[0].x(), full.results.back().velocity[0].x(), 1e-9)
+        << "from report " << k + 1;
+  }
 }
 
 }  // namespace
