@@ -2,6 +2,7 @@
 // the table -> one handler per keyword -> whole-model checks.
 #include "tether/io/deck_reader.hpp"
 
+#include "tether/io/assembly_flattening.hpp"
 #include "tether/io/deck_state.hpp"
 #include "tether/io/keyword_table.hpp"
 #include "tether/io/line_reader.hpp"
@@ -138,12 +139,12 @@ Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& de
 }  // namespace
 
 Model read_deck(const std::string& path, std::vector<DeckWarning>* warnings, Dialect dialect) {
-  return read_blocks(deck::lex_deck_file(path), path, warnings, dialect);
+  return read_blocks(deck::flatten_assembly(deck::lex_deck_file(path)), path, warnings, dialect);
 }
 
 Model read_deck_string(const std::string& text, const std::string& name, std::vector<DeckWarning>* warnings,
                        Dialect dialect) {
-  return read_blocks(deck::lex_deck_text(text, name, ""), name, warnings, dialect);
+  return read_blocks(deck::flatten_assembly(deck::lex_deck_text(text, name, "")), name, warnings, dialect);
 }
 
 }  // namespace tether

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "tether/io/assembly_flattening.hpp"
 #include "tether/io/keyword_table.hpp"
 #include "tether/io/line_reader.hpp"
 #include "tether/model/element_type.hpp"
@@ -33,7 +34,7 @@ void survey_block(const KeywordBlock& block, std::vector<Refusal>& out) {
     out.push_back({Refusal::Kind::Keyword, kw, block.where});
     return;
   }
-  if (!spec->handler && spec->name != "INCLUDE") {
+  if (!spec->handler && spec->name != "INCLUDE" && !deck::is_assembly_keyword(spec->name)) {
     out.push_back({is_procedure(*spec) ? Refusal::Kind::Procedure : Refusal::Kind::Keyword, kw, block.where});
     return;
   }

@@ -11,6 +11,7 @@ namespace tether::deck {
 
 // mesh_keywords.cpp
 TETHER_DECK_HANDLER(handle_heading);
+TETHER_DECK_HANDLER(handle_preprint);
 TETHER_DECK_HANDLER(handle_node);
 TETHER_DECK_HANDLER(handle_element);
 // set_keywords.cpp

@@ -25,6 +25,11 @@ void handle_heading(DeckState& state, const KeywordBlock& block, const Parameter
   }
 }
 
+void handle_preprint(DeckState&, const KeywordBlock& block, const ParameterValues&) {
+  if (!block.data.empty())
+    throw InputError(block.data[0].where(), "*PREPRINT takes no data lines (it only sets ABAQUS's input printing)");
+}
+
 void handle_node(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   Model& m = state.model;
   std::vector<int> added;

@@ -90,4 +90,11 @@ std::string format_number(double v) {
   return s.str();
 }
 
+std::string format_number_exact(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
 }  // namespace tether::deck

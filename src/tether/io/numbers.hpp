@@ -29,4 +29,7 @@ std::string to_upper(std::string_view text);
 /// "%g"-like text of a number (6 significant digits) for messages.
 std::string format_number(double v);
 
+/// `v` with 17 significant digits: reads back as the same double.
+std::string format_number_exact(double v);
+
 }  // namespace tether::deck

@@ -38,7 +38,19 @@ std::vector<int> generate_labels(const DataLine& line, int n_defined, std::strin
 
 }  // namespace
 
+namespace {
+
+/// INSTANCE= is resolved when the assembly is flattened; anywhere else it has no meaning.
+void refuse_instance_outside_assembly(const KeywordBlock& block, const ParameterValues& params) {
+  if (params.given("INSTANCE"))
+    throw InputError(block.where, "INSTANCE= on *" + block.keyword + " outside *ASSEMBLY: it names an instance of a "
+                                  "*PART, and belongs to sets defined between *ASSEMBLY and *END ASSEMBLY");
+}
+
+}  // namespace
+
 void handle_nset(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  refuse_instance_outside_assembly(block, params);
   const bool generate = params.given("GENERATE");
   std::vector<int> members;
   for (const DataLine& line : block.data) {
@@ -59,6 +71,7 @@ void handle_nset(DeckState& state, const KeywordBlock& block, const ParameterVal
 }
 
 void handle_elset(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
+  refuse_instance_outside_assembly(block, params);
   const bool generate = params.given("GENERATE");
   std::vector<int> members;
   for (const DataLine& line : block.data) {

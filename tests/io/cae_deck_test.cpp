@@ -1,0 +1,65 @@
+// ABAQUS/CAE decks: parts, an assembly of placed instances, names qualified
+// by instance, and the CAE-only keywords and parameters.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "deck_test_support.hpp"
+
+using namespace tether;
+using namespace tether::test;
+
+namespace {
+
+const std::string kCaeDeck = decks_dir() + "/cae/two_instances.inp";
+
+std::string deck_text() {
+  std::ifstream in(kCaeDeck);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+TEST(CaeDeck, InstancesArePlacedAndTheirNamesQualified) {
+  std::vector<DeckWarning> warnings;
+  const Model m = read_deck(kCaeDeck, &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front().message;
+  ASSERT_EQ(m.n_nodes(), 8);
+  ASSERT_EQ(m.n_elements(), 2);
+  // Upper-1: translated by (1, 1), then turned by 90 degrees about z through (1, 1).
+  const auto at = [&](int label) { return m.coords[static_cast<std::size_t>(m.node_index.at(label))]; };
+  EXPECT_NEAR((at(11) - Eigen::Vector2d(1, 1)).norm(), 0, 1e-15);
+  EXPECT_NEAR((at(12) - Eigen::Vector2d(1, 2)).norm(), 0, 1e-15);
+  EXPECT_NEAR((at(13) - Eigen::Vector2d(0, 2)).norm(), 0, 1e-15);
+  EXPECT_NEAR((at(3) - Eigen::Vector2d(1, 1)).norm(), 0, 0);  // Lower-1 is not moved
+  EXPECT_EQ(m.element_sets.at("LOWER-1.SET-1"), (std::vector<int>{0}));
+  EXPECT_EQ(m.element_sets.at("UPPER-1.SET-1"), (std::vector<int>{1}));
+  EXPECT_EQ(m.node_sets.at("LOWER-1.BOTTOM").size(), 2u);
+  EXPECT_EQ(m.node_sets.at("TIED"), (std::vector<int>{m.node_index.at(11), m.node_index.at(14)}));
+  EXPECT_EQ(m.surfaces.at("TOP").faces.size(), 1u);
+  EXPECT_EQ(m.sections.size(), 2u);
+  EXPECT_EQ(m.elements[1].section, 1);
+  ASSERT_EQ(m.steps.size(), 1u);
+  EXPECT_EQ(m.steps[0].boundary.size(), 8u);  // Lower-1.Bottom encastre (2 x 2), Tied (2 x 2)
+  EXPECT_EQ(m.steps[0].pressures.size(), 1u);
+  EXPECT_EQ(m.steps[0].restart_frequency, 0);
+  // Errors keep the deck's own lines.
+  EXPECT_EQ(m.elements[1].where.line, line_of(deck_text(), "11, 11, 12, 13, 14"));
+}
+
+TEST(CaeDeck, BadStructureNamesItsLine) {
+  const std::string cae = deck_text();
+  expect_deck_error_at(replaced(cae, "part=Upper", "part=Uper"), "*Instance, name=Upper-1",
+                       {"*INSTANCE UPPER-1 of undefined part UPER"});
+  expect_deck_error_at(replaced(cae, "1.,           1.,           1.,          90.", "1.,           2.,           1.,          90."),
+                       "          90.", {"is not along z"});
+  expect_deck_error_at(replaced(cae, "*End Part\n*Assembly", "*Assembly"), "*Part, name=Upper",
+                       {"*PART UPPER is not closed"});
+  expect_deck_error_at(replaced(cae, "     11,           0.,           0.", "      1,           0.,           0."),
+                       "*Instance, name=Upper-1", {"instances LOWER-1 and UPPER-1 both have node 1"});
+  expect_deck_error_at(replaced(kDeck, "*NSET, NSET=LEFT", "*NSET, NSET=LEFT, INSTANCE=A"), "*NSET, NSET=LEFT",
+                       {"INSTANCE= on *NSET outside *ASSEMBLY"});
+  expect_deck_error_at(replaced(kDeck, "*HEADING", "*PREPRINT, ECHO=MAYBE\n*HEADING"), "*PREPRINT",
+                       {"bad value 'MAYBE' for ECHO"});
+}
