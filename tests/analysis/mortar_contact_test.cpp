@@ -138,6 +138,8 @@ PatchErrors run_patch(const PatchCase& c) {
     e.pressure = std::max(e.pressure, std::abs(v.pressure - kP) / kP);
   }
   for (const auto& pass : run.recorder.residuals) e.iterations += static_cast<int>(pass.size()) - 1;
+  // The iteration log counts the mortar pair's closed nodes.
+  EXPECT_EQ(run.recorder.norms.back().back().contact_closed, e.slaves);
   if (c.nlgeom) {
     // Follower pressure on the current faces: forces scale with the current lengths (not checked here).
   } else if (c.slope == 0) {

@@ -4,13 +4,15 @@
 #include <cmath>
 
 #include "tether/contact/contact_pair.hpp"
+#include "tether/contact/mortar_pair.hpp"
 
 namespace tether {
 
 IncrementProblem::IncrementProblem(Assembler& assembler, const DofMap& dofs, Eigen::VectorXd& u,
                                    const Eigen::VectorXd& u_start, const Eigen::VectorXd& external,
                                    std::vector<const Contribution*> loads, IncrementTime time, bool symmetric,
-                                   const std::vector<std::unique_ptr<ContactPair>>* contact)
+                                   const std::vector<std::unique_ptr<ContactPair>>* contact,
+                                   const std::vector<std::unique_ptr<MortarPair>>* mortar)
     : assembler_(assembler),
       dofs_(dofs),
       u_(u),
@@ -19,7 +21,8 @@ IncrementProblem::IncrementProblem(Assembler& assembler, const DofMap& dofs, Eig
       loads_(std::move(loads)),
       time_(time),
       symmetric_(symmetric),
-      contact_(contact && !contact->empty() ? contact : nullptr) {}
+      contact_(contact && !contact->empty() ? contact : nullptr),
+      mortar_(mortar && !mortar->empty() ? mortar : nullptr) {}
 
 EvaluationState IncrementProblem::state() const {
   return EvaluationState{u_, u_start_, time_.step_time, time_.total_time, time_.dt, time_.nlgeom};
@@ -54,7 +57,7 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, bool with_tangent, It
       norms.force_residual = std::max(norms.force_residual, a);  // forces (and moments at rotations)
   }
   norms.increment = (u_.head(n_disp) - u_start_.head(n_disp)).cwiseAbs().maxCoeff();
-  norms.contact_closed = contact_ ? 0 : -1;
+  norms.contact_closed = contact_ || mortar_ ? 0 : -1;
   norms.contact_changes = norms.contact_repaired = norms.contact_held = 0;
   if (contact_)
     for (const auto& pair : *contact_) {
@@ -63,6 +66,14 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, bool with_tangent, It
       norms.contact_changes += c.status_changes;
       norms.contact_repaired += c.repaired;
       norms.contact_held += c.held_closed;
+    }
+  if (mortar_)
+    for (const auto& pair : *mortar_) {
+      const MortarIterationStatistics& c = pair->statistics();
+      norms.contact_closed += c.closed;
+      norms.contact_changes += c.status_changes;
+      norms.contact_repaired += c.repaired;
+      norms.contact_held += c.held;
     }
 
   // Force scale q: mean magnitude of the nonzero nodal forces (reactions at

@@ -19,6 +19,7 @@ struct IncrementTime {
 };
 
 class ContactPair;
+class MortarPair;
 
 class IncrementProblem final : public NewtonProblem {
  public:
@@ -27,10 +28,12 @@ class IncrementProblem final : public NewtonProblem {
   /// nodal forces over all dofs; `loads` the load contributions (pressures),
   /// also assembled by `assembler`, used only to size the force scale;
   /// `contact` the contact pairs among the assembler's contributions, whose
-  /// search statistics evaluate() reports in the norms (contact_*).
+  /// search statistics evaluate() reports in the norms (contact_*), and
+  /// `mortar` the mortar pairs likewise.
   IncrementProblem(Assembler& assembler, const DofMap& dofs, Eigen::VectorXd& u, const Eigen::VectorXd& u_start,
                    const Eigen::VectorXd& external, std::vector<const Contribution*> loads, IncrementTime time,
-                   bool symmetric, const std::vector<std::unique_ptr<ContactPair>>* contact = nullptr);
+                   bool symmetric, const std::vector<std::unique_ptr<ContactPair>>* contact = nullptr,
+                   const std::vector<std::unique_ptr<MortarPair>>* mortar = nullptr);
 
   bool evaluate(Eigen::VectorXd& residual, bool with_tangent, IterationNorms& norms, double& force_scale) override;
   [[nodiscard]] const SparseMatrix& tangent() const override { return assembler_.tangent(); }
@@ -58,6 +61,7 @@ class IncrementProblem final : public NewtonProblem {
   IncrementTime time_;
   bool symmetric_;
   const std::vector<std::unique_ptr<ContactPair>>* contact_;
+  const std::vector<std::unique_ptr<MortarPair>>* mortar_;
   Eigen::VectorXd full_;
   double search_seconds_ = 0, assembly_seconds_ = 0;  ///< of the last evaluate()
 };

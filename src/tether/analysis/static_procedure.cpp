@@ -22,7 +22,7 @@ IncrementOutcome StaticProcedure::solve_increment(const IncrementAttempt& attemp
   system_.apply_loads(t, u, external_);
   IncrementProblem problem(system_.assembler(), disc.dofs(), u, u_start, external_, system_.load_contributions(),
                            IncrementTime{t.step_time, t.total_time, t.dt, system_.step().nlgeom}, system_.symmetric(),
-                           &disc.contact_pairs());
+                           &disc.contact_pairs(), &disc.mortar_pairs());
   int iterations = 0;
   const NewtonOutcome newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_,
                                                      force_average_.value, force_average_.n, iterations);
