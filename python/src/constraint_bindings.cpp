@@ -15,8 +15,14 @@ namespace {
 /// Calls the Python callables, with the GIL, and checks their shapes.
 class PythonConstraint final : public ExternalConstraint {
  public:
-  PythonConstraint(std::string name, py::object f, py::object gradient, py::object hessian, int m)
-      : name_(std::move(name)), f_(std::move(f)), gradient_(std::move(gradient)), hessian_(std::move(hessian)), m_(m) {}
+  /// `with_time`: the callables take the total time as a third argument.
+  PythonConstraint(std::string name, py::object f, py::object gradient, py::object hessian, int m, bool with_time)
+      : name_(std::move(name)),
+        f_(std::move(f)),
+        gradient_(std::move(gradient)),
+        hessian_(std::move(hessian)),
+        m_(m),
+        with_time_(with_time) {}
   PythonConstraint(const PythonConstraint&) = delete;
   PythonConstraint& operator=(const PythonConstraint&) = delete;
   ~PythonConstraint() override {
@@ -27,20 +33,22 @@ class PythonConstraint final : public ExternalConstraint {
 
   int n_equations() const override { return m_; }
 
-  void evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& reference, double, double, Eigen::VectorXd& f,
-                Eigen::MatrixXd& gradient, std::vector<Eigen::MatrixXd>* hessian) const override {
+  void evaluate(const Eigen::VectorXd& u, const Eigen::VectorXd& reference, double, double total_time,
+                Eigen::VectorXd& f, Eigen::MatrixXd& gradient, std::vector<Eigen::MatrixXd>* hessian) const override {
     py::gil_scoped_acquire gil;
     const auto n = static_cast<py::ssize_t>(u.size());
     py::array_t<double> u_py(n, u.data()), x_py(n, reference.data());
-    copy(f_(u_py, x_py), {m_}, f.data(), "f");
+    const auto call = [&](const py::object& function) {
+      return with_time_ ? function(u_py, x_py, total_time) : function(u_py, x_py);
+    };
+    copy(call(f_), {m_}, f.data(), "f");
     // Row-major (m, n) from Python into the column-major gradient.
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> g(m_, n);
-    copy(gradient_(u_py, x_py), {m_, n}, g.data(), "gradient");
+    copy(call(gradient_), {m_, n}, g.data(), "gradient");
     gradient = g;
     if (!hessian || hessian_.is_none()) return;
-    Eigen::MatrixXd h_all(n, n * m_);
     std::vector<double> h(static_cast<std::size_t>(m_ * n * n));
-    copy(hessian_(u_py, x_py), {m_, n, n}, h.data(), "hessian");
+    copy(call(hessian_), {m_, n, n}, h.data(), "hessian");
     for (py::ssize_t k = 0; k < m_; ++k)
       (*hessian)[static_cast<std::size_t>(k)] =
           Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(h.data() + k * n * n, n, n);
@@ -66,6 +74,7 @@ class PythonConstraint final : public ExternalConstraint {
   std::string name_;
   py::object f_, gradient_, hessian_;
   py::ssize_t m_;
+  bool with_time_;
 };
 
 Enforcement enforcement(const std::string& method, double epsilon, double penalty, double tolerance, int max_updates) {
@@ -85,7 +94,7 @@ Enforcement enforcement(const std::string& method, double epsilon, double penalt
 
 void add_constraint(Model& model, const std::string& name, const std::vector<int>& labels, const py::object& f,
                     const py::object& gradient, const py::object& hessian, const std::string& method, double epsilon,
-                    double penalty, double tolerance, int max_updates) {
+                    double penalty, double tolerance, int max_updates, bool with_time) {
   if (labels.empty()) throw py::value_error("constraint " + name + ": no nodes");
   ConstraintData c;
   c.kind = ConstraintData::Kind::External;
@@ -104,9 +113,10 @@ void add_constraint(Model& model, const std::string& name, const std::vector<int
     zero.mutable_at(k) = 0;
     reference.mutable_at(k) = model.coords[static_cast<std::size_t>(c.nodes[static_cast<std::size_t>(k / 2)])][k % 2];
   }
-  const auto f0 = py::array_t<double, py::array::forcecast>::ensure(f(zero, reference));
+  const auto f0 = py::array_t<double, py::array::forcecast>::ensure(with_time ? f(zero, reference, 0.0)
+                                                                             : f(zero, reference));
   if (!f0 || f0.ndim() > 1 || f0.size() == 0) throw py::value_error("constraint " + name + ": f must return a number or a 1-D array");
-  c.external = std::make_shared<PythonConstraint>(name, f, gradient, hessian, static_cast<int>(f0.size()));
+  c.external = std::make_shared<PythonConstraint>(name, f, gradient, hessian, static_cast<int>(f0.size()), with_time);
   model.constraints.push_back(std::move(c));
 }
 
@@ -117,6 +127,7 @@ void bind_constraints(py::module_& m) {
   model.def("add_constraint", &add_constraint, py::arg("name"), py::arg("nodes"), py::arg("f"), py::arg("gradient"),
             py::arg("hessian") = py::none(), py::arg("enforcement") = "lagrange", py::arg("epsilon") = 0.0,
             py::arg("penalty") = 0.0, py::arg("tolerance") = 0.0, py::arg("max_updates") = 100,
+            py::arg("time") = false,
             "Adds the constraint f(u, X) = 0 written in Python (see docs/python.md).");
   model.def(
       "remove_constraint",

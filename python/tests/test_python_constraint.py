@@ -139,3 +139,19 @@ def test_cost_of_one_evaluation(source):
     print(f"\nrigid link, 20 increments: native {t_native * 1e3:.2f} ms, Python {t_python * 1e3:.2f} ms, "
           f"{evaluations} evaluations, {per_evaluation * 1e6:.1f} us per evaluation (f, gradient, Hessian)")
     assert evaluations > 20
+
+
+def test_time_dependent_constraint():
+    # u_x of the bar's tip node 10 driven to 1e-3 t by a Python constraint
+    # (time=True: the callables get the total time), instead of the load.
+    from conftest import bar_deck
+    model = tether.read_deck_string(bar_deck(force=0.0), name="bar.inp")
+    model.add_constraint("DRIVE", nodes=[10], f=lambda u, X, t: u[0] - 1e-3 * t,
+                         gradient=lambda u, X, t: np.array([1.0, 0.0]), time=True)
+    job = tether.Job(model)
+    assert job.run(check=True)
+    tip = list(job.results[0].node_labels).index(10)
+    assert [inc.U[tip, 0] for inc in job.results] == pytest.approx([0.5e-3, 1e-3], abs=1e-15)
+    # The constraint's force is the reaction the tip needs: balanced by the support.
+    last = job.results[-1]
+    assert last.multipliers["DRIVE"].force[0, 0] == pytest.approx(-last.RF[:, 0].sum(), rel=1e-9)
