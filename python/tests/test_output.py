@@ -1,16 +1,13 @@
 """Job(output_dir=...) writes what `tether run` writes; without it nothing is written."""
 import os
 import subprocess
-import sys
 
 import numpy as np
 import pytest
 
 import tether
-from conftest import SOURCE, bar_deck
-
-sys.path.insert(0, str(SOURCE / "tools"))
-import tethertools.dat  # noqa: E402
+from conftest import bar_deck
+from tethertools import dat  # tools/ on PYTHONPATH
 
 
 def test_nothing_written_without_output_dir(tmp_path, monkeypatch):
@@ -34,8 +31,8 @@ def test_output_dir_gets_the_files_of_tether_run(tmp_path):
     subprocess.run([cli, "run", str(deck), "-o", str(tmp_path / "cli"), "-q"], check=True)
     names = sorted(p.name for p in (tmp_path / "py").iterdir())
     assert names == sorted(p.name for p in (tmp_path / "cli").iterdir())
-    py_blocks = tethertools.dat.parse((tmp_path / "py/bar.dat").read_text())
-    cli_blocks = tethertools.dat.parse((tmp_path / "cli/bar.dat").read_text())
+    py_blocks = dat.parse((tmp_path / "py/bar.dat").read_text())
+    cli_blocks = dat.parse((tmp_path / "cli/bar.dat").read_text())
     assert [(b["title"], b["set"], b["time"]) for b in py_blocks] == [(b["title"], b["set"], b["time"]) for b in cli_blocks]
     for a, b in zip(py_blocks, cli_blocks):
         assert np.array_equal(np.array(a["rows"]), np.array(b["rows"]))
