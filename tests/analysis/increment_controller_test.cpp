@@ -215,3 +215,35 @@ TEST(IncrementController, RestartStateRoundTrips) {
   EXPECT_EQ(a.total_time, b.total_time);
   EXPECT_EQ(c.dt(), d.dt());
 }
+
+TEST(IncrementController, AProceduresEstimateSetsTheNextIncrementWithinTheBounds) {
+  Step s = step_with();
+  s.period = 10;  // no clamping to the step's end here
+  s.max_increment = 0.3;
+  s.min_increment = 0.01;
+  s.controls.growth_factor = 1.5;
+  IncrementController c(s, 0.0);
+  c.accept(c.next_attempt(), 20, 1.2);  // grows by the estimate, however many iterations
+  EXPECT_DOUBLE_EQ(c.dt(), 0.12);
+  c.accept(c.next_attempt(), 1, 1.0);  // held, however easy
+  EXPECT_DOUBLE_EQ(c.dt(), 0.12);
+  c.accept(c.next_attempt(), 1, 4.0);  // at most the growth factor
+  EXPECT_DOUBLE_EQ(c.dt(), 0.18);
+  c.accept(c.next_attempt(), 1, 1.5);  // at most the maximum
+  EXPECT_DOUBLE_EQ(c.dt(), 0.27);
+  c.accept(c.next_attempt(), 1, 1.5);
+  EXPECT_DOUBLE_EQ(c.dt(), 0.3);
+  c.next_attempt();
+  EXPECT_EQ(c.cut_back(0.4), IncrementController::CutBack::Retry);  // the estimate, not the controls' 0.25
+  EXPECT_DOUBLE_EQ(c.dt(), 0.12);
+  EXPECT_EQ(c.cut_back(), IncrementController::CutBack::Retry);
+  EXPECT_DOUBLE_EQ(c.dt(), 0.12 * s.controls.cutback_factor);
+}
+
+TEST(IncrementController, ImplicitDynamicsGrowsOnlyWithHaftol) {
+  Step s = step_with();
+  s.procedure = StepProcedure::ImplicitDynamic;
+  EXPECT_DOUBLE_EQ(IncrementController(s, 0.0).max_dt(), 0.1);  // no error estimate: never above the initial
+  s.dynamic.half_increment_tolerance = 100;
+  EXPECT_DOUBLE_EQ(IncrementController(s, 0.0).max_dt(), 1.0);
+}

@@ -488,3 +488,41 @@ TEST(ElementFrequencies, EverySingleElementHasItsRigidModesAndConsistentBoundsLu
       }
     }
 }
+
+// Mass redistribution for impact (redistribute_mass): the flagged nodes carry
+// nothing, the total mass and the kinetic energy of rigid translations stay,
+// a lumped matrix stays diagonal, and an element with every node flagged
+// keeps its mass.
+TEST(MassRedistribution, FlaggedNodesLoseTheirMassToTheOthers) {
+  const ElementType cpe8 = *find_element_type("CPE8");
+  const std::vector<Eigen::Vector2d> X = {{0, 0}, {2, 0.2}, {2.2, 1.5}, {-0.1, 1.2},
+                                          {1, 0.05}, {2.15, 0.8}, {1.1, 1.4}, {-0.05, 0.6}};
+  const std::vector<bool> flagged = {true, true, false, false, true, false, false, false};  // edge 1-2 with its midside
+  for (const MassKind kind : {MassKind::Consistent, MassKind::Lumped}) {
+    Eigen::MatrixXd M;
+    expand_to_components(scalar_mass(kind, cpe8, X, kRho, kThickness), 2, M);
+    const Eigen::VectorXd weights = lumped_mass(cpe8, X, kRho, kThickness);
+    const Eigen::MatrixXd R = redistribute_mass(M, 2, weights, flagged, kind == MassKind::Lumped);
+    EXPECT_LT((R - R.transpose()).cwiseAbs().maxCoeff(), 1e-14 * M.cwiseAbs().maxCoeff());
+    for (int a = 0; a < 8; ++a)
+      if (flagged[static_cast<std::size_t>(a)])
+        EXPECT_EQ(R.row(2 * a).cwiseAbs().maxCoeff() + R.row(2 * a + 1).cwiseAbs().maxCoeff(), 0.0) << a;
+    Eigen::VectorXd translation(16);
+    for (int a = 0; a < 8; ++a) translation.segment<2>(2 * a) = Eigen::Vector2d(0.3, -1.7);
+    EXPECT_NEAR(translation.dot(R * translation), translation.dot(M * translation), 1e-12 * translation.dot(M * translation));
+    if (kind == MassKind::Lumped) EXPECT_EQ((R - Eigen::MatrixXd(R.diagonal().asDiagonal())).cwiseAbs().maxCoeff(), 0.0);
+    // Positive definite on the unflagged nodes' dofs.
+    std::vector<int> kept;
+    for (int a = 0; a < 8; ++a)
+      if (!flagged[static_cast<std::size_t>(a)]) kept.push_back(2 * a), kept.push_back(2 * a + 1);
+    Eigen::MatrixXd sub(kept.size(), kept.size());
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      for (std::size_t j = 0; j < kept.size(); ++j) sub(i, j) = R(kept[i], kept[j]);
+    EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(sub).info(), Eigen::Success);
+  }
+  Eigen::MatrixXd M;
+  expand_to_components(consistent_mass(cpe8, X, kRho, kThickness), 2, M);
+  const Eigen::VectorXd weights = lumped_mass(cpe8, X, kRho, kThickness);
+  EXPECT_EQ(redistribute_mass(M, 2, weights, std::vector<bool>(8, true), false), M);
+  EXPECT_EQ(redistribute_mass(M, 2, weights, std::vector<bool>(8, false), false), M);
+}

@@ -39,13 +39,24 @@ TEST(DynamicKeywords, ParametersAreReadOrRefusedWithAReason) {
   EXPECT_TRUE(m.steps[0].dynamic.lumped_mass);
   EXPECT_TRUE(m.steps[0].direct);
   EXPECT_TRUE(m.steps[0].ramp_loads);
+  EXPECT_TRUE(m.steps[0].dynamic.redistribute_contact_mass);  // the default
+  EXPECT_EQ(m.steps[0].dynamic.half_increment_tolerance, 0);  // none, and DIRECT would ignore it
+  const Model h = read_deck_string(replaced(kDynamic, "*DYNAMIC", "*DYNAMIC, HAFTOL=250., CONTACT MASS=KEPT"), "ok.inp");
+  EXPECT_DOUBLE_EQ(h.steps[0].dynamic.half_increment_tolerance, 250);
+  EXPECT_FALSE(h.steps[0].dynamic.redistribute_contact_mass);
   const Model e = read_deck_string(replaced(kDynamic, "*DYNAMIC\n0.01, 0.5", "*DYNAMIC, EXPLICIT\n1e-6, 0.5"), "ok.inp");
   EXPECT_EQ(e.steps[0].procedure, StepProcedure::ExplicitDynamic);
   EXPECT_TRUE(e.steps[0].dynamic.lumped_mass);
 
   expect_deck_error_at(replaced(kDynamic, "*DYNAMIC", "*DYNAMIC, ALPHA=-0.5"), "ALPHA", {"ALPHA=-0.5", "-1/3"});
   expect_deck_error_at(replaced(kDynamic, "*DYNAMIC", "*DYNAMIC, ALPHA=0.1"), "ALPHA", {"-1/3 <= alpha <= 0"});
-  expect_deck_error_at(replaced(kDynamic, "*DYNAMIC", "*DYNAMIC, HAFTOL=10"), "HAFTOL", {"HAFTOL", "not implemented"});
+  expect_deck_error_at(replaced(kDynamic, "*DYNAMIC", "*DYNAMIC, HAFTOL=0"), "HAFTOL", {"HAFTOL=0", "force > 0"});
+  expect_deck_error_at(replaced(kDynamic, "*DYNAMIC", "*DYNAMIC, HAFTOL=-5"), "HAFTOL", {"force > 0"});
+  expect_deck_error_at(replaced(kDynamic, "*DYNAMIC\n0.01, 0.5", "*DYNAMIC, EXPLICIT, HAFTOL=10\n1e-6, 0.5"), "HAFTOL",
+                       {"implicit"});
+  expect_deck_error_at(replaced(kDynamic, "*DYNAMIC\n0.01, 0.5", "*DYNAMIC, EXPLICIT, CONTACT MASS=KEPT\n1e-6, 0.5"),
+                       "CONTACT MASS", {"implicit"});
+  expect_deck_error_at(replaced(kDynamic, "*DYNAMIC", "*DYNAMIC, CONTACT MASS=ZERO"), "CONTACT MASS", {"REDISTRIBUTED"});
   expect_deck_error_at(replaced(kDynamic, "*DYNAMIC", "*DYNAMIC, EXPLICIT, ALPHA=-0.1"), "ALPHA", {"central"});
   expect_deck_error_at(replaced(kDynamic, "*DYNAMIC\n0.01, 0.5", "*DYNAMIC, EXPLICIT"), "*DYNAMIC",
                        {"needs a data line", "increment, period"});

@@ -1,7 +1,9 @@
 #include "tether/analysis/implicit_dynamic_procedure.hpp"
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <unordered_map>
 
 #include "tether/analysis/implicit_attempt.hpp"
@@ -19,16 +21,24 @@ void scatter(const Contribution& c, const Eigen::VectorXd& local, Eigen::VectorX
   for (std::size_t i = 0; i < dofs.size(); ++i) out[dofs[i]] += local[static_cast<Eigen::Index>(i)];
 }
 
-/// Solves M a = f over the free displacement equations of `system` (a = 0
-/// at prescribed, dependent and multiplier dofs). Constraints do not enter:
-/// the accelerations at the start ignore them (docs/theory/dynamics.md).
+/// Solves M a = f over the free displacement equations of `system` that
+/// carry mass (a = 0 at prescribed, dependent and multiplier dofs, and at
+/// massless contact-surface nodes). Constraints do not enter: the
+/// accelerations at the start ignore them (docs/theory/dynamics.md).
 Eigen::VectorXd solve_mass(const StepSystem& system, const Eigen::VectorXd& f) {
   const EquationMap& eqs = system.equations();
   const DofMap& dofs = system.discretization().dofs();
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(f.size());
+  for (const auto& m : system.inertia()) {
+    const auto d = m->dofs();
+    for (std::size_t i = 0; i < d.size(); ++i)
+      diagonal[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+  }
   std::unordered_map<int, int> index;
   std::vector<int> free;
   for (int e = 0; e < eqs.n_equations(); ++e)
-    if (!dofs.is_multiplier(eqs.dof(e))) index[eqs.dof(e)] = static_cast<int>(free.size()), free.push_back(eqs.dof(e));
+    if (!dofs.is_multiplier(eqs.dof(e)) && diagonal[eqs.dof(e)] > 0)
+      index[eqs.dof(e)] = static_cast<int>(free.size()), free.push_back(eqs.dof(e));
   std::vector<Eigen::Triplet<double>> entries;
   for (const auto& m : system.inertia()) {
     const auto d = m->dofs();
@@ -63,7 +73,10 @@ ImplicitDynamicProcedure::ImplicitDynamicProcedure(StepSystem& system, AnalysisO
       newton_(system.solver(), system.step().controls, system.discretization().length_scale()),
       alpha_(system.step().dynamic.alpha),
       beta_((1 - alpha_) * (1 - alpha_) / 4),
-      gamma_(0.5 - alpha_) {}
+      gamma_(0.5 - alpha_) {
+  if (system.step().dynamic.redistribute_contact_mass)
+    contact_mass_ = redistribute_contact_mass(system.discretization(), system.inertia());
+}
 
 void ImplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::VectorXd& u) {
   const Discretization& disc = system_.discretization();
@@ -86,6 +99,7 @@ void ImplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
                        (step.ramp_loads ? "ramped over the step (AMPLITUDE=RAMP)"
                                         : "applied at the step's start and held (AMPLITUDE=STEP, the default of "
                                           "dynamic steps)"));
+  if (!contact_mass_.describe().empty()) observer_.on_message(contact_mass_.describe());
   system_.apply_loads(start, u, cloads_);
   const EvaluationState s{u, u, 0, start.total_time, 0, system_.step().nlgeom};
   const Eigen::VectorXd r0 = static_residual(s);
@@ -172,13 +186,73 @@ IncrementOutcome ImplicitDynamicProcedure::solve_increment(const IncrementAttemp
   int iterations = 0;
   const NewtonOutcome newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_,
                                                      force_average_.value, force_average_.n, iterations);
-  const IncrementOutcome out = outcome_of(newton, iterations);
-  observer_.on_increment(report_of(attempt, newton, iterations));
+  IncrementOutcome out = outcome_of(newton, iterations);
+  IncrementReport report = report_of(attempt, newton, iterations);
+  if (out.converged && system_.step().dynamic.half_increment_tolerance > 0) judge_half_increment(t, problem, out, report);
+  observer_.on_increment(report);
   if (out.converged)
     complete(attempt, problem, iterations, newton.force_scale);
   else
     u = u_start;
   return out;
+}
+
+void ImplicitDynamicProcedure::judge_half_increment(const IncrementTimes& t, const IncrementProblem& problem,
+                                                    IncrementOutcome& out, IncrementReport& report) {
+  const double tolerance = system_.step().dynamic.half_increment_tolerance;
+  const double r = half_increment_residual(t, problem.state());
+  const double ratio = r / tolerance;
+  const double estimate = 0.85 / std::sqrt(std::max(ratio, 1e-12));  // the residual grows as dt^2
+  if (ratio > 1) {
+    out.converged = false;
+    out.increment_scale = std::clamp(estimate, 0.25, 0.75);
+    out.message = "half-increment residual " + format_time(r) + " above HAFTOL=" + format_time(tolerance);
+    report.converged = false;
+    report.note = out.message;
+    return;
+  }
+  out.increment_scale = ratio < 0.5 ? std::max(1.0, estimate) : 1.0;
+}
+
+double ImplicitDynamicProcedure::half_increment_residual(const IncrementTimes& t, const EvaluationState& end) {
+  const Discretization& disc = system_.discretization();
+  const DofMap& dofs = disc.dofs();
+  const EquationMap& eqs = system_.equations();
+  NewmarkIncrement& nm = system_.newmark();
+  const double h = 0.5 * t.dt;
+  const auto n = end.u.size();
+  Eigen::VectorXd u_h = 0.5 * (end.u_start + end.u), v_h = Eigen::VectorXd::Zero(n), a_h = Eigen::VectorXd::Zero(n);
+  for (int d = 0; d < dofs.n_displacement_dofs(); ++d) {
+    const double v_n = motion_.v[d], a_n = motion_.a[d];
+    a_h[d] = 0.5 * (a_n + nm.acceleration(end.u[d], end.u_start[d], v_n, a_n));
+    v_h[d] = v_n + h * ((1 - gamma_) * a_n + gamma_ * a_h[d]);
+    u_h[d] = end.u_start[d] + h * v_n + h * h * ((0.5 - beta_) * a_n + beta_ * a_h[d]);
+  }
+  const IncrementTimes middle{t.step_time - h, t.total_time - h, h, t.period, false};
+  Eigen::VectorXd forces;
+  system_.apply_loads(middle, u_h, forces);  // prescribed values and loads at the middle
+  const double scale = nm.scale;
+  nm.scale = 0;  // the inertia is added below with the middle's accelerations
+  Assembler& assembler = system_.assembler();
+  const EvaluationState s_h{u_h, end.u_start, end.step_time - h, end.total_time - h, h, end.nlgeom};
+  assembler.update_connectivity(s_h);
+  Eigen::VectorXd residual;
+  assembler.assemble(s_h, residual, false);
+  residual -= forces;
+  for (const auto& m : system_.inertia()) {
+    m->add_mass_times(a_h, residual);
+    m->add_damping_force(s_h, v_h, residual);
+  }
+  // Back to the increment's end: its loads, pairing and contact status.
+  Eigen::VectorXd u_end = end.u, unused;
+  system_.apply_loads(t, u_end, unused);
+  nm.scale = scale;
+  assembler.update_connectivity(end);
+  assembler.assemble(end, unused, false);
+  double largest = 0;
+  for (int e = 0; e < eqs.n_equations(); ++e)
+    if (!dofs.is_multiplier(eqs.dof(e))) largest = std::max(largest, std::abs(residual[eqs.dof(e)]));
+  return largest;
 }
 
 void ImplicitDynamicProcedure::complete(const IncrementAttempt& attempt, const IncrementProblem& problem,

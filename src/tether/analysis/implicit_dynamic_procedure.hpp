@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "tether/analysis/analysis_observer.hpp"
+#include "tether/analysis/contact_mass.hpp"
 #include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/increment_problem.hpp"
 #include "tether/analysis/motion_state.hpp"
@@ -54,6 +55,19 @@ class ImplicitDynamicProcedure final : public Procedure {
   /// work and viscous dissipation by the trapezoidal rule in u (force times
   /// displacement increment), friction from the contact results.
   void update_energy(const EvaluationState& s, const Eigen::VectorXd& force, const IncrementResults& results);
+  /// HAFTOL: rejects a converged attempt whose half_increment_residual()
+  /// exceeds the tolerance, with a cut-back estimate 0.85 sqrt(HAFTOL / r)
+  /// in [0.25, 0.75]; after an accepted one the next increment grows by that
+  /// estimate (within the growth factor) when r < HAFTOL / 2, else stays.
+  void judge_half_increment(const IncrementTimes& t, const IncrementProblem& problem, IncrementOutcome& out,
+                            IncrementReport& report);
+  /// Largest residual [force] of the equation of motion M a + C v + S(u) - f
+  /// over the free displacement equations at the middle of the converged
+  /// increment ending at `end`: u, v, a at t_n + dt/2 by Newmark's relations
+  /// over dt/2 with a(t_n + dt/2) = (a_n + a_n+1)/2, multipliers the mean of
+  /// both ends, loads and prescribed values at the middle. Leaves the loads,
+  /// pairing and contact status of `end` in place afterwards.
+  double half_increment_residual(const IncrementTimes& t, const EvaluationState& end);
   void complete(const IncrementAttempt& attempt, const IncrementProblem& problem, int iterations,
                 double force_scale);
 
@@ -67,6 +81,7 @@ class ImplicitDynamicProcedure final : public Procedure {
   Eigen::VectorXd cloads_;     ///< nodal forces at the attempt's end time, over all dofs
   Eigen::VectorXd external_;   ///< cloads_ + alpha/(1+alpha) * the previous static residual
   ForceAverage force_average_;
+  ContactMassSummary contact_mass_;
   double output_seconds_ = 0;
 };
 

@@ -22,8 +22,9 @@ IncrementController::IncrementController(const Step& step, double step_start_tim
       controls_(step.controls),
       step_start_time_(step_start_time) {
   // A dynamic step's increment is chosen for accuracy, not for Newton's ease:
-  // it never grows past the initial one (there is no error estimate yet).
-  if (step.procedure == StepProcedure::ImplicitDynamic) max_dt_ = std::min(max_dt_, dt_);
+  // without an error estimate (HAFTOL) it never grows past the initial one.
+  if (step.procedure == StepProcedure::ImplicitDynamic && step.dynamic.half_increment_tolerance == 0)
+    max_dt_ = std::min(max_dt_, dt_);
 }
 
 bool IncrementController::finished() const { return step_time_ >= period_ * (1 - 1e-12); }
@@ -35,11 +36,16 @@ IncrementTimes IncrementController::next_attempt() {
   return IncrementTimes{t_new, step_start_time_ + t_new, dt_, period_, t_new >= period_ * (1 - 1e-12)};
 }
 
-void IncrementController::accept(const IncrementTimes& t, int iterations) {
+void IncrementController::accept(const IncrementTimes& t, int iterations, double scale) {
   step_time_ = t.step_time;
   ++increment_;
   attempt_ = 1;
   if (direct_) return;
+  if (scale > 0) {  // the procedure's error estimate decides, within the growth factor and the bounds
+    dt_ = std::clamp(dt_ * std::min(scale, controls_.growth_factor), min_dt_, max_dt_);
+    easy_in_row_ = 0;
+    return;
+  }
   easy_in_row_ = iterations <= controls_.easy_iterations ? easy_in_row_ + 1 : 0;
   if (easy_in_row_ >= 2) {
     dt_ = std::min(dt_ * controls_.growth_factor, max_dt_);
@@ -47,10 +53,10 @@ void IncrementController::accept(const IncrementTimes& t, int iterations) {
   }
 }
 
-IncrementController::CutBack IncrementController::cut_back() {
+IncrementController::CutBack IncrementController::cut_back(double scale) {
   if (direct_) return CutBack::FixedIncrements;
   if (attempt_ > controls_.max_cutbacks) return CutBack::TooManyCutBacks;
-  dt_ *= controls_.cutback_factor;
+  dt_ *= scale > 0 && scale < 1 ? scale : controls_.cutback_factor;
   easy_in_row_ = 0;
   ++attempt_;
   if (dt_ < min_dt_ * (1 - 1e-12)) return CutBack::BelowMinimum;

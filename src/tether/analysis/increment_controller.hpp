@@ -50,14 +50,18 @@ class IncrementController {
   /// taken to the end when less than 1e-9 of the period would be left after it.
   [[nodiscard]] IncrementTimes next_attempt();
   /// The attempt `t` (from next_attempt()) converged in `iterations` Newton
-  /// iterations: the step time moves to its end; after two easy increments
-  /// in a row (at most the controls' easy_iterations) the increment grows by
-  /// the growth factor, up to the maximum (never with fixed increments).
-  void accept(const IncrementTimes& t, int iterations);
-  /// The attempt failed: shrinks the increment by the cut-back factor, or says
-  /// why the step cannot go on. The increment is not changed for
+  /// iterations: the step time moves to its end. With `scale` > 0 (the
+  /// procedure's error estimate, e.g. HAFTOL's) the next increment is this
+  /// one times `scale`, at most the growth factor, within [min, max];
+  /// otherwise, after two easy increments in a row (at most the controls'
+  /// easy_iterations) it grows by the growth factor, up to the maximum
+  /// (never with fixed increments).
+  void accept(const IncrementTimes& t, int iterations, double scale = 0);
+  /// The attempt failed: shrinks the increment by `scale` when 0 < scale < 1
+  /// (the procedure's estimate), else by the cut-back factor, or says why
+  /// the step cannot go on. The increment is not changed for
   /// FixedIncrements and TooManyCutBacks; for BelowMinimum it has been cut.
-  CutBack cut_back();
+  CutBack cut_back(double scale = 0);
   /// How a cut-back that ended the step reads after the solver's message:
   /// " with fixed increments (*STATIC, DIRECT)" (`keyword` names the
   /// procedure), " after 5 cut-backs", "; the increment would fall below the minimum 1e-05".

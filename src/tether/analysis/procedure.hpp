@@ -37,6 +37,11 @@ struct IncrementOutcome {
   /// not restrained or a constraint is redundant; a smaller increment will not help.
   bool singular_at_start = false;
   bool singular_multiplier = false;  ///< ... and the vanishing pivot is a constraint (multiplier) row
+  /// The procedure's own estimate of the next increment relative to this
+  /// one (an error estimate such as HAFTOL's): > 0 overrides the controls'
+  /// growth after a converged attempt and their cut-back factor after a
+  /// failed one; 0: none.
+  double increment_scale = 0;
 };
 
 class Procedure {

@@ -212,7 +212,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     }
     ++summary.cutbacks;
     if (outcome.singular_at_start) return stop(singular_explanation(outcome, disc));
-    const IncrementController::CutBack cut = clock.cut_back();
+    const IncrementController::CutBack cut = clock.cut_back(outcome.increment_scale);
     if (cut != IncrementController::CutBack::Retry)
       return stop(outcome.message + clock.stop_reason(cut, procedure->keyword()) + non_convergence_hint(disc));
     observer_.on_message("cut back to increment " + format_time(clock.dt()) + ": " + outcome.message);
@@ -226,7 +226,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
 bool StaticAnalysis::after_converged(int index, const IncrementAttempt& attempt, const IncrementOutcome& outcome,
                                      AnalysisSummary& summary, IncrementController& clock, const Procedure& procedure,
                                      const Eigen::VectorXd& u_step_start) {
-  clock.accept(attempt.time, outcome.iterations);
+  clock.accept(attempt.time, outcome.iterations, outcome.increment_scale);
   total_time_ = attempt.time.total_time;
   ++summary.increments;
   ++run_increments_;

@@ -1,10 +1,12 @@
 #include "tether/elements/element_inertia.hpp"
 
+#include <algorithm>
+
 namespace tether {
 
 ElementInertia::ElementInertia(const ContinuumElement& element, MassKind kind, double damping_alpha,
                                double damping_beta, const NewmarkIncrement& increment)
-    : element_(element), increment_(increment), damping_alpha_(damping_alpha), damping_beta_(damping_beta) {
+    : element_(element), increment_(increment), kind_(kind), damping_alpha_(damping_alpha), damping_beta_(damping_beta) {
   element_.mass(kind, mass_);
 }
 
@@ -28,6 +30,18 @@ void ElementInertia::evaluate(const EvaluationState& s, LocalSystem& out, bool n
   element_.evaluate(s, k, true);
   out.residual.noalias() += (n.scale * damping_beta_) * (k.tangent * v);
   if (need_tangent) out.tangent += (n.scale * damping_beta_ * c_v) * k.tangent;
+}
+
+bool ElementInertia::redistribute(const std::vector<bool>& massless) {
+  if (std::all_of(massless.begin(), massless.end(), [](bool f) { return f; })) return false;
+  Eigen::MatrixXd lumped;
+  element_.mass(MassKind::Lumped, lumped);
+  const auto n = static_cast<Eigen::Index>(massless.size());
+  const Eigen::Index c = mass_.rows() / n;  // components per node of the element's local dofs
+  Eigen::VectorXd weights(n);
+  for (Eigen::Index a = 0; a < n; ++a) weights[a] = lumped(c * a, c * a);
+  mass_ = redistribute_mass(mass_, static_cast<int>(c), weights, massless, kind_ == MassKind::Lumped);
+  return true;
 }
 
 double ElementInertia::kinetic_energy(const Eigen::VectorXd& v) const {

@@ -73,11 +73,18 @@ class ElementInertia final : public Contribution {
   [[nodiscard]] bool damped() const { return damping_alpha_ != 0 || damping_beta_ != 0; }
   /// Adds M_e x_e to `out` (global vectors).
   void add_mass_times(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
+  /// Moves the mass of the element's nodes flagged in `massless` (the
+  /// element's node order) to its other nodes (redistribute_mass, weights the
+  /// lumped nodal masses); a lumped mass stays diagonal. Returns false and
+  /// keeps the mass when every node is flagged. Rayleigh's mass-proportional
+  /// damping follows the new mass.
+  bool redistribute(const std::vector<bool>& massless);
 
  private:
   const ContinuumElement& element_;
   const NewmarkIncrement& increment_;
   Eigen::MatrixXd mass_;
+  MassKind kind_;
   double damping_alpha_ = 0, damping_beta_ = 0;
 };
 

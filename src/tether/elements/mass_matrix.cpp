@@ -1,6 +1,7 @@
 #include "tether/elements/mass_matrix.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fmt/format.h>
@@ -100,6 +101,28 @@ void expand_to_components(const Eigen::MatrixXd& scalar, int n_components, Eigen
   for (Eigen::Index a = 0; a < n; ++a)
     for (Eigen::Index b = 0; b < n; ++b)
       for (Eigen::Index i = 0; i < c; ++i) out(c * a + i, c * b + i) = scalar(a, b);
+}
+
+Eigen::MatrixXd redistribute_mass(const Eigen::MatrixXd& mass, int n_components, const Eigen::VectorXd& node_weights,
+                                  const std::vector<bool>& massless, bool diagonal) {
+  const auto n = static_cast<Eigen::Index>(massless.size()), c = static_cast<Eigen::Index>(n_components);
+  double kept_weight = 0;
+  for (Eigen::Index a = 0; a < n; ++a)
+    if (!massless[static_cast<std::size_t>(a)]) kept_weight += node_weights[a];
+  if (kept_weight == 0 || std::none_of(massless.begin(), massless.end(), [](bool f) { return f; })) return mass;
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(n * c, n * c);
+  for (Eigen::Index a = 0; a < n; ++a)
+    for (Eigen::Index i = 0; i < c; ++i) {
+      if (!massless[static_cast<std::size_t>(a)]) {
+        P(c * a + i, c * a + i) = 1;
+        continue;
+      }
+      for (Eigen::Index b = 0; b < n; ++b)
+        if (!massless[static_cast<std::size_t>(b)]) P(c * a + i, c * b + i) = node_weights[b] / kept_weight;
+    }
+  const Eigen::MatrixXd moved = P.transpose() * mass * P;
+  if (!diagonal) return moved;
+  return moved.rowwise().sum().asDiagonal();
 }
 
 }  // namespace tether

@@ -69,4 +69,20 @@ Eigen::MatrixXd scalar_mass(MassKind kind, const ElementType& type, std::span<co
 /// node: out(c a + i, c b + j) = delta_ij scalar(a, b).
 void expand_to_components(const Eigen::MatrixXd& scalar, int n_components, Eigen::MatrixXd& out);
 
+/// Mass redistribution away from contact surfaces (Khenous, Laborde & Renard
+/// 2008), used by implicit dynamics with contact: the nodes flagged in
+/// `massless` carry no mass afterwards. For the kinetic energy, a flagged
+/// node moves with the weighted mean of the element's other nodes
+/// (weights w_j = node_weights_j / their sum), i.e. M' = P^T M P with P the
+/// identity on unflagged nodes and the row w on flagged ones (per component).
+/// Keeps the element's total mass and the kinetic energy of every rigid
+/// translation; moves its centre of mass towards the unflagged nodes.
+/// `mass`: (n c) x (n c) over local dofs node by node (expand_to_components);
+/// `n_components` c >= 1; `node_weights`: n values > 0 (the lumped nodal
+/// masses); `diagonal`: keep a diagonal (lumped) matrix diagonal by taking
+/// the row sums of P^T M P. Returns `mass` unchanged when no node or every
+/// node is flagged.
+Eigen::MatrixXd redistribute_mass(const Eigen::MatrixXd& mass, int n_components, const Eigen::VectorXd& node_weights,
+                                  const std::vector<bool>& massless, bool diagonal);
+
 }  // namespace tether

@@ -229,8 +229,14 @@ std::vector<KeywordSpec> build_table() {
        {real("ALPHA", "-0.05", "HHT's alpha, -1/3 <= alpha <= 0 (0: trapezoidal Newmark, no numerical damping)."),
         flag("DIRECT", "Fixed increments of the initial size (implicit: no cut-back)."),
         flag("EXPLICIT", "Central-difference (explicit) integration."),
-        real("HAFTOL", "", "ABAQUS's half-increment residual tolerance: refused (not implemented yet); the implicit "
-                           "increment never grows past the initial one and is cut back when Newton fails."),
+        real("HAFTOL", "", "ABAQUS's half-increment residual tolerance [force] > 0 (implicit, without DIRECT): "
+                           "the increment is repeated smaller when the residual of the equation of motion at its "
+                           "middle exceeds HAFTOL, and grows when it stays below HAFTOL/2 "
+                           "(docs/theory/dynamics.md). Without it the increment never grows past the initial one."),
+        choice("CONTACT MASS", "REDISTRIBUTED", {"REDISTRIBUTED", "KEPT"},
+               "tether extension (implicit): contact-surface nodes carry no mass, their mass moved to the other "
+               "nodes of their elements, so that impacts with exact multipliers neither chatter nor gain energy "
+               "(REDISTRIBUTED), or every node keeps its mass (KEPT)."),
         choice("MASS", "CONSISTENT", {"CONSISTENT", "LUMPED"},
                "tether extension: mass matrix of the implicit procedure (EXPLICIT always lumps)."),
         name("SOLVER", "Accepted for CalculiX compatibility and ignored (tether chooses the linear solver).")},

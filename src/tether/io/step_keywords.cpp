@@ -175,7 +175,7 @@ void handle_dynamic(DeckState& state, const KeywordBlock& block, const Parameter
   s.direct = params.given("DIRECT");
   DynamicData& d = s.dynamic;
   if (explicit_scheme) {
-    for (std::string_view p : {"ALPHA", "HAFTOL"})
+    for (std::string_view p : {"ALPHA", "HAFTOL", "CONTACT MASS"})
       if (params.given(p))
         throw InputError(block.where, std::string(p) + "= belongs to the implicit *DYNAMIC; *DYNAMIC, EXPLICIT "
                                                        "integrates by central differences");
@@ -186,11 +186,16 @@ void handle_dynamic(DeckState& state, const KeywordBlock& block, const Parameter
     if (!(d.alpha >= -1.0 / 3.0 && d.alpha <= 0))
       throw InputError(block.where, "ALPHA=" + params.text("ALPHA") + ": expected -1/3 <= alpha <= 0 (HHT)");
     d.lumped_mass = params.name("MASS") == "LUMPED";
-    if (params.given("HAFTOL"))
-      throw InputError(block.where, "HAFTOL= (ABAQUS's half-increment residual control of the time increment) "
-                                    "is not implemented yet: tether's implicit *DYNAMIC keeps the initial "
-                                    "increment, cutting it back only when Newton fails; remove HAFTOL= or give "
-                                    "the increment you want");
+    d.redistribute_contact_mass = params.name("CONTACT MASS") != "KEPT";
+    if (params.given("HAFTOL")) {
+      d.half_increment_tolerance = params.real("HAFTOL");
+      if (!(d.half_increment_tolerance > 0))
+        throw InputError(block.where, "HAFTOL=" + params.text("HAFTOL") + ": expected a force > 0");
+      if (s.direct)
+        state.warn(block.where, "HAFTOL=" + params.text("HAFTOL") +
+                                    " ignored: DIRECT fixes the increments (ABAQUS ignores it likewise)");
+      if (s.direct) d.half_increment_tolerance = 0;
+    }
   }
   read_increments(block, s, "*DYNAMIC");
   if (explicit_scheme && block.data.empty())

@@ -191,6 +191,13 @@ struct DynamicData {
   double alpha = -0.05;
   /// Mass matrix: lumped (MASS=LUMPED, and always for EXPLICIT) or consistent.
   bool lumped_mass = false;
+  /// Implicit: contact-surface nodes lose their mass to their elements' other
+  /// nodes (impact stabilisation; CONTACT MASS=REDISTRIBUTED, the default, or KEPT).
+  bool redistribute_contact_mass = true;
+  /// Implicit: ABAQUS's HAFTOL [force], the largest half-increment residual
+  /// accepted; it turns on automatic incrementation. 0: none (the increment
+  /// never grows past the initial one).
+  double half_increment_tolerance = 0;
 };
 
 /// `*STEP` ... `*END STEP` with one procedure (`*STATIC` or `*DYNAMIC`).
