@@ -54,7 +54,7 @@ _COLUMNS = {
     "contact stress": (4, 0, None), "relative contact displacement": (4, 0, None),
     "contact state": (10, 0, 7), "total normal contact force": (3, None, None),
     "total shear contact force": (3, None, None), "constraint multipliers": (4, None, None),
-    "velocities": (4, 0, None), "accelerations": (4, 0, None), "energies": (7, None, None),
+    "velocities": (4, 0, None), "accelerations": (4, 0, None), "energies": (8, None, None),
 }
 
 
@@ -158,7 +158,7 @@ def check_output(out, job, requests):
 
 def check_energy(path, last_time):
     """The energy history of dynamic increments: its header, finite rows, the last at the last .vtu's time."""
-    header = "step,increment,time,ALLKE,ALLSE,ALLWK,ALLFD,ALLVD,NUMERICAL,ETOTAL"
+    header = "step,increment,time,ALLKE,ALLSE,ALLWK,ALLFD,ALLVD,ALLPD,NUMERICAL,ETOTAL"
     try:
         with open(path, encoding="utf-8") as f:
             lines = f.read().splitlines()
@@ -167,8 +167,8 @@ def check_energy(path, last_time):
     if not lines or lines[0] != header:
         raise SmokeError(f"{path}: header is not {header}")
     rows = [[float(x) for x in line.split(",")] for line in lines[1:]]
-    if not rows or any(len(r) != 10 or not all(math.isfinite(x) for x in r) for r in rows):
-        raise SmokeError(f"{path}: no rows, or a row without 10 finite values")
+    if not rows or any(len(r) != 11 or not all(math.isfinite(x) for x in r) for r in rows):
+        raise SmokeError(f"{path}: no rows, or a row without 11 finite values")
     if abs(rows[-1][2] - last_time) > 1e-9 * max(1.0, abs(last_time)):
         raise SmokeError(f"{path}: last row at time {rows[-1][2]}, the last .vtu at {last_time}")
 

@@ -309,7 +309,8 @@ void ImplicitDynamicProcedure::update_energy(const EvaluationState& s, const Eig
   for (const auto& el : system_.discretization().elements()) e.strain += el->strain_energy(s);
   e.friction = 0;
   for (const ContactPairValues& pair : results.contact) e.friction += pair.dissipation;
-  e.total = e.kinetic + e.strain + e.viscous + e.friction - e.work;
+  e.plastic = results.plastic_dissipation.value_or(0.0);
+  e.total = e.kinetic + e.strain + e.viscous + e.friction + e.plastic - e.work;
   e.numerical = motion_.balance_start - e.total;
 }
 

@@ -91,12 +91,15 @@ struct EnergyTotals {
   double work = 0;       ///< ALLWK: work of loads, pressures and reactions (trapezoidal in the displacements)
   double friction = 0;   ///< ALLFD: frictional dissipation of the contact pairs
   double viscous = 0;    ///< ALLVD: Rayleigh damping, C v times the displacement increments (trapezoidal)
+  /// ALLPD: plastic dissipation of the elements' material points up to now
+  /// (from their committed records; not in the restart file: recomputed).
+  double plastic = 0;
   /// Energy the time integration removed (HHT's numerical damping, and at
   /// impacts the contact treatment): the drop of the balance since the
   /// start of the first dynamic step; negative means the scheme added energy.
   double numerical = 0;
-  /// ETOTAL = ALLKE + ALLSE + ALLVD + ALLFD - ALLWK: constant for an exact
-  /// integration of an elastic model.
+  /// ETOTAL = ALLKE + ALLSE + ALLVD + ALLFD + ALLPD - ALLWK: constant for an
+  /// exact integration.
   double total = 0;
 };
 

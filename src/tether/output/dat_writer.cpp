@@ -278,10 +278,11 @@ std::string multiplier_set_name(const std::string& owner, int number) {
 /// The whole model's energies of a dynamic increment (one line, ABAQUS's names).
 void write_energy_block(std::string& text, const EnergyTotals& e, double time) {
   const auto out = std::back_inserter(text);
-  fmt::format_to(out, "\n energies (ALLKE,ALLSE,ALLWK,ALLFD,ALLVD,numerical,ETOTAL) for time {:14.7E}\n\n", time);
-  fmt::format_to(out, " {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}\n", unsigned_zero(e.kinetic),
-                 unsigned_zero(e.strain), unsigned_zero(e.work), unsigned_zero(e.friction), unsigned_zero(e.viscous),
-                 unsigned_zero(e.numerical), unsigned_zero(e.total));
+  fmt::format_to(out, "\n energies (ALLKE,ALLSE,ALLWK,ALLFD,ALLVD,ALLPD,numerical,ETOTAL) for time {:14.7E}\n\n",
+                 time);
+  fmt::format_to(out, " {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}\n",
+                 unsigned_zero(e.kinetic), unsigned_zero(e.strain), unsigned_zero(e.work), unsigned_zero(e.friction),
+                 unsigned_zero(e.viscous), unsigned_zero(e.plastic), unsigned_zero(e.numerical), unsigned_zero(e.total));
 }
 
 void write_multiplier_blocks(std::string& text, const std::vector<MultiplierValues>& multipliers, double time) {

@@ -82,11 +82,11 @@ void ResultWriter::write_energy_row(const IncrementResults& results) {
   const auto file = energy_path();
   const bool fresh = !energy_started_;
   std::ofstream out(file, fresh ? std::ios::trunc : std::ios::app);
-  if (fresh) out << "step,increment,time,ALLKE,ALLSE,ALLWK,ALLFD,ALLVD,NUMERICAL,ETOTAL\n";
+  if (fresh) out << "step,increment,time,ALLKE,ALLSE,ALLWK,ALLFD,ALLVD,ALLPD,NUMERICAL,ETOTAL\n";
   const EnergyTotals& e = *results.energy;
-  out << fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", results.step,
+  out << fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", results.step,
                      results.increment, results.total_time, e.kinetic, e.strain, e.work, e.friction, e.viscous,
-                     e.numerical, e.total);
+                     e.plastic, e.numerical, e.total);
   if (!out) throw std::runtime_error("error while writing '" + file.string() + "' (disk full?)");
   energy_started_ = true;
 }
