@@ -34,6 +34,7 @@ import time
 TOOLS = os.path.dirname(os.path.abspath(__file__))
 import tethertools.dat  # noqa: E402
 import tethertools.deck  # noqa: E402
+import tethertools.sta  # noqa: E402
 
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
 
@@ -156,32 +157,6 @@ def run_timed(cmd, cwd, timeout, env=None):
             "measured_by": "/usr/bin/time -v" if gnu_time else "getrusage(RUSAGE_CHILDREN)"}
 
 
-def sta_iterations(path, column):
-    """Sum of the iteration column over the increment rows of a .sta file (None when absent)."""
-    if not os.path.exists(path):
-        return None, None
-    total, increments = 0, 0
-    with open(path) as f:
-        for line in f:
-            tokens = line.split()
-            if len(tokens) > column and all(re.fullmatch(r"-?\d+", t) for t in tokens[:column + 1]):
-                total += int(tokens[column])
-                increments += 1
-    return total, increments
-
-
-# ----------------------------------------------------------------------------- .dat parsing
-_CONTACT_HEADER = re.compile(r"for all contact elements and time", re.I)
-
-
-def read_dat(path):
-    with open(path) as f:
-        text = f.read()
-    # ccx/tether write contact blocks "... for all contact elements and time T": give them a set name.
-    text = _CONTACT_HEADER.sub("for set CONTACT and time", text)
-    return tethertools.dat.parse(text)
-
-
 def kind_of(title):
     t = title.lower()
     if t.startswith("displacements"):
@@ -204,7 +179,7 @@ def index_blocks(blocks):
         kind = kind_of(b["title"])
         if kind is None:
             continue
-        out.setdefault((kind, b["set"].upper()), {})[b["time"]] = b
+        out.setdefault((kind, b["set"].upper() or "CONTACT"), {})[b["time"]] = b  # "": all contact elements
     return out
 
 
@@ -471,8 +446,9 @@ def run(args, deck, tether_deck, job, work, ccx, tether):
     if runs["tether"]["rc"] != 0:
         failed.append(f"tether failed (exit {runs['tether']['rc']}{', timed out' if runs['tether']['timed_out'] else ''}): "
                       + (runs["tether"]["stderr"].strip().splitlines() or [""])[-1])
-    runs["ccx"]["iterations"], runs["ccx"]["increments"] = sta_iterations(os.path.join(ccx_dir, job + ".sta"), 3)
-    runs["tether"]["iterations"], runs["tether"]["increments"] = sta_iterations(os.path.join(tet_dir, job + ".sta"), 3)
+    for code, folder in (("ccx", ccx_dir), ("tether", tet_dir)):
+        its, _, incs = tethertools.sta.iterations(os.path.join(folder, job + ".sta"))
+        runs[code]["iterations"], runs[code]["increments"] = its, incs
 
     print(f"deck    {deck}" + (f"\ntether  runs {tether_deck}" if tether_deck != deck else ""))
     print(f"work    {work}{' (temporary)' if args.workdir is None else ''}")
@@ -498,8 +474,8 @@ def run(args, deck, tether_deck, job, work, ccx, tether):
     info = DeckInfo(deck)
     fams = info.family()
     rf_scale = 180.0 if fams == {"CAX"} else 1.0
-    ccx_blocks = read_dat(os.path.join(ccx_dir, job + ".dat"))
-    tet_blocks = read_dat(os.path.join(tet_dir, job + ".dat"))
+    ccx_blocks = tethertools.dat.read(os.path.join(ccx_dir, job + ".dat"))
+    tet_blocks = tethertools.dat.read(os.path.join(tet_dir, job + ".dat"))
     stats, unmatched = compare(ccx_blocks, tet_blocks, info, rf_scale)
 
     tol = {"rtol_u": args.rtol_u, "rtol_rf": args.rtol_rf, "rtol_s": args.rtol_s, "rtol_p": args.rtol_p}

@@ -53,6 +53,7 @@ import time
 TOOLS = os.path.dirname(os.path.abspath(__file__))
 import hertz_summary  # noqa: E402
 import make_hertz_deck  # noqa: E402
+import tethertools.sta  # noqa: E402
 
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
 
@@ -96,24 +97,6 @@ def run_timed(cmd, cwd, timeout, env):
         with open(os.path.join(cwd, name + ".txt"), errors="replace") as f:
             result[name] = f.read()
     return result
-
-
-def sta_iterations(path):
-    """(converged iterations, all iterations, increments) from a .sta (columns STEP INC ATT ITRS [TOTITRS])."""
-    if not os.path.exists(path):
-        return None, None, None
-    its, total, incs = 0, 0, 0
-    with open(path) as f:
-        for line in f:
-            t = line.split()
-            if len(t) >= 5 and all(re.fullmatch(r"\d+", v) for v in t[:2]) and re.fullmatch(r"\d+U?", t[2]) \
-                    and re.fullmatch(r"\d+", t[3]):
-                if t[2].endswith("U"):
-                    continue  # ccx: an attempt that was cut back
-                its += int(t[3])
-                incs += 1
-                total += int(t[4]) if re.fullmatch(r"\d+", t[4]) else int(t[3])
-    return its, total, incs
 
 
 def cvg_iterations(path):
@@ -194,7 +177,7 @@ def run_code(code, deck, work, args):
         cmd = [args.tether, "run", "hertz.inp", "-o", d, "-q"]
     run = run_timed(cmd, d, args.timeout, env)
     row = {"code": code, "dir": d, **{k: v for k, v in run.items() if k not in ("stdout", "stderr")}}
-    its, total, incs = sta_iterations(os.path.join(d, "hertz.sta"))
+    its, total, incs = tethertools.sta.iterations(os.path.join(d, "hertz.sta"))
     if code == "ccx":
         total = cvg_iterations(os.path.join(d, "hertz.cvg"))
     row.update(iterations=its, iterations_all=total, increments=incs)

@@ -72,10 +72,6 @@ Deck = tethertools.deck.Deck  # elements {id: (type, nodes)}; face_nodes along t
 
 
 # ----------------------------------------------------------------------------- pressures
-def read_dat(path):
-    return tethertools.dat.read(path)  # reads ccx's and tether's contact headers too
-
-
 pick = tethertools.dat.pick  # the last block (or the one at `time`) with that title and set (None: any set)
 
 
@@ -251,7 +247,7 @@ def summarise(dat, deck_path=None, time=None, source="auto"):
     exact = hertz_exact.hertz(deck.number("P", hertz_exact.P), deck.number("R", hertz_exact.R),
                               deck.number("E", hertz_exact.E), deck.number("nu", hertz_exact.NU), rigid)
     half = exact["P"] / 2.0
-    blocks = read_dat(dat)
+    blocks = tethertools.dat.read(dat)  # ccx's and tether's contact headers
     result = {"dat": os.path.abspath(dat), "deck": os.path.abspath(deck_path), "exact": exact,
               "element": deck.heading.get("element"), "dofs": int(deck.number("dofs", 2 * len(deck.xy)))}
     tried = []

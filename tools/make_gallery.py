@@ -38,6 +38,7 @@ TOOLS = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
 import compare_ccx  # noqa: E402
 import tethertools.dat  # noqa: E402
+import tethertools.sta  # noqa: E402
 import make_cantilever_deck as cantilever  # noqa: E402
 import make_lame_deck as lame  # noqa: E402
 
@@ -65,7 +66,7 @@ class Runner:
         compare_ccx.copy_deck(deck, job, d)
         r = compare_ccx.run_timed([self.tether, "run", job + ".inp", "-o", d, "-q"], d, timeout or self.timeout,
                                   dict(os.environ, OMP_NUM_THREADS="1"))
-        r["iterations"], r["increments"] = compare_ccx.sta_iterations(os.path.join(d, job + ".sta"), 3)
+        r["iterations"], _, r["increments"] = tethertools.sta.iterations(os.path.join(d, job + ".sta"))
         r["dir"] = d
         r["blocks"] = tethertools.dat.read(os.path.join(d, job + ".dat")) if r["rc"] == 0 else None
         if r["rc"] != 0:
@@ -83,9 +84,9 @@ class Runner:
         r = compare_ccx.run_timed(["timeout", str(limit + 5), self.ccx, "-i", job], d, limit,
                                   dict(os.environ, OMP_NUM_THREADS="1"))
         r["dir"] = d
-        r["iterations"], r["increments"] = compare_ccx.sta_iterations(os.path.join(d, job + ".sta"), 3)
+        r["iterations"], _, r["increments"] = tethertools.sta.iterations(os.path.join(d, job + ".sta"))
         ok = r["rc"] == 0 and "Job finished" in r["stdout"]
-        r["blocks"] = compare_ccx.read_dat(os.path.join(d, job + ".dat")) if ok else None
+        r["blocks"] = tethertools.dat.read(os.path.join(d, job + ".dat")) if ok else None
         if not ok:
             print(f"warning: ccx failed on {deck} (exit {r['rc']})", file=sys.stderr)
         return r

@@ -6,8 +6,12 @@ per file kind.
                      elements, sets, surfaces, the *HEADING's key=value pairs
   tethertools.dat    .dat files of tether and CalculiX (*NODE PRINT, *EL PRINT,
                      *CONTACT PRINT blocks)
-  tethertools.sta    .sta files of tether and CalculiX
+  tethertools.sta    .sta files of tether and CalculiX (attempts, iterations,
+                     tether's verdict) and tether's .msg (converged increments)
+  tethertools.vtu    .pvd collections and .vtu files (standard library and NumPy;
+                     checks sizes, finiteness and connectivity)
 
-The scripts in tools/ import it directly (their folder is on Python's path);
-from elsewhere put tools/ on PYTHONPATH. Pure Python: the tether build is not needed.
+The scripts in tools/ import it directly (Python puts a script's folder on its
+path); everything else (tests, examples' plot scripts) runs with tools/ on
+PYTHONPATH, which CTest sets. Pure Python: the tether build is not needed.
 """
