@@ -6,12 +6,14 @@
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace tether {
 struct DeckWarning;
+struct Model;
 }
 
 namespace tether::python {
@@ -48,6 +50,8 @@ void bind_model(py::module_& m);
 void bind_results(py::module_& m);
 void bind_job(py::module_& m);
 void bind_constraints(py::module_& m);
+/// Mesh and section editing methods of tether.Model (mesh_bindings.cpp).
+void bind_mesh_editing(py::module_& m, py::class_<Model, std::shared_ptr<Model>>& model);
 
 /// A new (n, k) float64 array filled by `value(i, j)`.
 template <class F>
