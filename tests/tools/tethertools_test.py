@@ -156,3 +156,18 @@ def test_vtu_of_a_tether_run(tmp_path):
                                       '<DataSet timestep="1" file="none.vtu"/></Collection></VTKFile>')
     with pytest.raises(vtu.VtuError, match="does not exist"):
         vtu.check_collection(tmp_path / "bad.pvd")
+
+
+def test_every_tool_is_a_module_of_the_package_with_a_launcher():
+    """tools/NAME.py only launches tethertools.NAME.main (one package, no code outside it)."""
+    import importlib
+
+    tools = os.path.join(os.path.dirname(__file__), "..", "..", "tools")
+    launchers = sorted(f[:-3] for f in os.listdir(tools) if f.endswith(".py"))
+    assert "compare_ccx" in launchers and "make_gallery" in launchers and "hertz_bench" in launchers
+    for name in launchers:
+        assert callable(importlib.import_module("tethertools." + name).main), name
+        with open(os.path.join(tools, name + ".py")) as f:
+            code = [line for line in f if line.strip() and not line.startswith(("#", '"""'))]
+        assert code == [f"from tethertools.{name} import main\n", 'if __name__ == "__main__":\n',
+                        "    raise SystemExit(main())\n"], name
