@@ -37,8 +37,6 @@ def test_progress_callback_exception_ends_the_sta_with_a_verdict(tmp_path):
 def test_python_constraint_exception_ends_the_sta_with_a_verdict(tmp_path, source):
     model = tether.read_deck(source / "examples/rigid_link/rigid_link.inp")
     model.remove_constraint("LINK")
-    calls = {"n": 0}
-
     def f(u, X, t):
         if t > 0.25:
             raise RuntimeError(f"f cannot go past t = {t:g}")

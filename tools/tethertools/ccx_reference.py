@@ -27,10 +27,11 @@ import subprocess
 import sys
 import tempfile
 
-TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # tools/: the scripts
-import tethertools.dat  # noqa: E402
+import tethertools.dat
 
+TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # tools/: the scripts
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
+
 DECKS = os.path.join(ROOT, "tests", "verification", "decks")
 REFERENCE = os.path.join(ROOT, "tests", "verification", "reference")
 REACTION_SETS = ("BOTTOM", "TOP", "ROOT")

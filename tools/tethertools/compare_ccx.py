@@ -31,11 +31,11 @@ import sys
 import tempfile
 import time
 
-TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # tools/: the scripts
-import tethertools.dat  # noqa: E402
-import tethertools.deck  # noqa: E402
-import tethertools.sta  # noqa: E402
+import tethertools.dat
+import tethertools.deck
+import tethertools.sta
 
+TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # tools/: the scripts
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
 
 # Quantities: key -> (label, tolerance option, value columns compared)

@@ -50,13 +50,12 @@ import subprocess
 import sys
 import time
 
+from tethertools import hertz_summary
+from tethertools import make_hertz_deck
+import tethertools.sta
+
 TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # tools/: the scripts
-from tethertools import hertz_summary  # noqa: E402
-from tethertools import make_hertz_deck  # noqa: E402
-import tethertools.sta  # noqa: E402
-
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
-
 
 # ----------------------------------------------------------------------------- runs
 def run_timed(cmd, cwd, timeout, env):

@@ -60,12 +60,11 @@ import argparse
 import json
 import math
 import os
-import re
 import sys
 
-import tethertools.dat  # noqa: E402
-import tethertools.deck  # noqa: E402
-from tethertools import hertz_exact  # noqa: E402
+import tethertools.dat
+import tethertools.deck
+from tethertools import hertz_exact
 
 Deck = tethertools.deck.Deck  # elements {id: (type, nodes)}; face_nodes along the face (corner, mid, corner)
 

@@ -21,9 +21,9 @@ import json
 import os
 import sys
 
-import tethertools.dat  # noqa: E402
-import tethertools.deck  # noqa: E402
-import tethertools.sta  # noqa: E402
+import tethertools.dat
+import tethertools.deck
+import tethertools.sta
 
 
 def summarize(dat, deck_path, sta_path, label, steady):

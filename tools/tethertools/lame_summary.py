@@ -6,11 +6,10 @@ Prints the radial displacement at the bore and the outer surface, computed and
 exact, and exits 1 if the bore value is off by more than 0.5 %.
 """
 import math
-import os
 import sys
 
-import tethertools.dat  # noqa: E402
-from tethertools.make_lame_deck import A, B, E, NU, P  # noqa: E402
+import tethertools.dat
+from tethertools.make_lame_deck import A, B, E, NU, P
 
 
 def exact_ur(r):

@@ -34,15 +34,15 @@ import sys
 import tempfile
 import time
 
+from tethertools import compare_ccx
+import tethertools.dat
+import tethertools.sta
+from tethertools import make_cantilever_deck as cantilever
+from tethertools import make_lame_deck as lame
+import matplotlib
+
 TOOLS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # tools/: the scripts
 ROOT = os.path.normpath(os.path.join(TOOLS, ".."))
-from tethertools import compare_ccx  # noqa: E402
-import tethertools.dat  # noqa: E402
-import tethertools.sta  # noqa: E402
-from tethertools import make_cantilever_deck as cantilever  # noqa: E402
-from tethertools import make_lame_deck as lame  # noqa: E402
-
-import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -473,7 +473,7 @@ def contact_stress_extreme(blocks, deck_path, exact):
 
 
 def bench_contact(rn, images):
-    from tethertools import hertz_summary  # noqa: E402 (needs only the standard library and matplotlib)
+    from tethertools import hertz_summary  # (needs only the standard library and matplotlib)
     rows = []
     # Hertz: the 2k-dof deck of examples/hertz.
     deck = os.path.join(ROOT, "examples", "hertz", "hertz.inp")
@@ -570,11 +570,11 @@ def run_files(run, deck):
 
 
 def bench_mindlin(rn, images, quick):
-    import tethertools.dat  # noqa: E402
-    import tethertools.deck  # noqa: E402
-    import tethertools.sta  # noqa: E402
-    from tethertools import make_mindlin_deck  # noqa: E402
-    from tethertools import mindlin_summary  # noqa: E402
+    import tethertools.dat
+    import tethertools.deck
+    import tethertools.sta
+    from tethertools import make_mindlin_deck
+    from tethertools import mindlin_summary
     options = ["--element", "CPE4"]
     deck, t, ccx_deck, c, note = frictional_runs(rn, os.path.join(TOOLS, "make_mindlin_deck.py"), "mindlin_cpe4",
                                                  options, quick)
@@ -630,10 +630,10 @@ def bench_mindlin(rn, images, quick):
 
 
 def bench_ironing(rn, images, quick):
-    import tethertools.dat  # noqa: E402
-    import tethertools.deck  # noqa: E402
-    import tethertools.sta  # noqa: E402
-    from tethertools import ironing_summary  # noqa: E402
+    import tethertools.dat
+    import tethertools.deck
+    import tethertools.sta
+    from tethertools import ironing_summary
     options = ["--mu", "0.3", "--slide", "3", "--slide-increments", "24"]
     steady = 1.0  # mm: steady sliding from here (as the test)
     deck, t, ccx_deck, c, note = frictional_runs(rn, os.path.join(TOOLS, "make_ironing_deck.py"),

@@ -75,7 +75,7 @@ import subprocess
 import sys
 import tempfile
 
-from tethertools import hertz_exact  # noqa: E402
+from tethertools import hertz_exact
 
 R, E, NU = hertz_exact.R, hertz_exact.E, hertz_exact.NU
 TOL = 1e-7 * R

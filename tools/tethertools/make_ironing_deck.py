@@ -68,7 +68,7 @@ import os
 import sys
 import tempfile
 
-from tethertools import make_hertz_deck as hz  # noqa: E402
+from tethertools import make_hertz_deck as hz
 
 E, NU = 200000.0, 0.3
 TOL = 1e-7

@@ -66,8 +66,8 @@ import os
 import sys
 import tempfile
 
-from tethertools import hertz_exact  # noqa: E402
-from tethertools import make_hertz_deck as hz  # noqa: E402
+from tethertools import hertz_exact
+from tethertools import make_hertz_deck as hz
 
 R, E, NU = hertz_exact.R, hertz_exact.E, hertz_exact.NU
 TOL = 1e-7 * R

@@ -33,10 +33,10 @@ import math
 import os
 import sys
 
-import tethertools.dat  # noqa: E402
-import tethertools.deck  # noqa: E402
-import tethertools.sta  # noqa: E402
-from tethertools import hertz_summary  # noqa: E402
+import tethertools.dat
+import tethertools.deck
+import tethertools.sta
+from tethertools import hertz_summary
 
 
 def mindlin_q(x, a, c, p0, mu):

@@ -4,7 +4,6 @@ radial profiles of sigma_rr and sigma_tt against the exact solution.
 
 Usage: plot_lame.py RESULT.vtu OUT.png   (Debian's /usr/bin/python3: meshio, matplotlib)
 """
-import os
 import sys
 
 import matplotlib
