@@ -8,28 +8,16 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import tethertools.dat  # noqa: E402
+import tethertools.dat  # noqa: E402  (PYTHONPATH=../../tools)
+import tethertools.deck  # noqa: E402
 
 P = 10.0
-
-
-def nodes_of(deck):
-    x, reading = {}, False
-    for line in open(deck):
-        if line.startswith("*"):
-            reading = line.upper().startswith("*NODE") and not line.upper().startswith("*NODE PRINT")
-            continue
-        if reading:
-            f = line.split(",")
-            x[int(f[0])] = float(f[1])
-    return x
 
 
 def main():
     fig, ax = plt.subplots(figsize=(7, 4))
     for name, marker in (("fine_on_coarse", "o"), ("coarse_on_fine", "s")):
-        x = nodes_of(f"{name}.inp")
+        x = {n: xy[0] for n, xy in tethertools.deck.Deck(f"{name}.inp").xy.items()}
         blocks = [b for b in tethertools.dat.read(os.path.join(name, name + ".dat")) if b["title"].startswith("contact state")]
         rows = sorted(blocks[-1]["rows"], key=lambda r: x[int(r[0])])
         xs, ps = [x[int(r[0])] for r in rows], [r[3] for r in rows]

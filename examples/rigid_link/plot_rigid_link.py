@@ -14,8 +14,7 @@ import sys
 import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-import tethertools.dat  # noqa: E402
+import tethertools.dat  # noqa: E402  (PYTHONPATH=../../tools)
 
 import matplotlib  # noqa: E402
 

@@ -5,12 +5,21 @@
 
 #include <pybind11/stl.h>
 
+#include <cstdio>
+
 #include "bindings.hpp"
 #include "tether/model/model.hpp"
 
 namespace tether::python {
 
 namespace {
+
+/// `t` as `{:g}` formats it.
+std::string fmt_time(double t) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", t);
+  return buffer;
+}
 
 /// Calls the Python callables, with the GIL, and checks their shapes.
 class PythonConstraint final : public ExternalConstraint {
@@ -38,17 +47,22 @@ class PythonConstraint final : public ExternalConstraint {
     py::gil_scoped_acquire gil;
     const auto n = static_cast<py::ssize_t>(u.size());
     py::array_t<double> u_py(n, u.data()), x_py(n, reference.data());
-    const auto call = [&](const py::object& function) {
-      return with_time_ ? function(u_py, x_py, total_time) : function(u_py, x_py);
+    const auto call = [&](const py::object& function, const char* what) {
+      try {
+        return with_time_ ? function(u_py, x_py, total_time) : function(u_py, x_py);
+      } catch (py::error_already_set& e) {
+        throw CallbackError(std::move(e), std::string("raised by ") + what + " of constraint " + name_ +
+                                              " at total time " + fmt_time(total_time));
+      }
     };
-    copy(call(f_), {m_}, f.data(), "f");
+    copy(call(f_, "f"), {m_}, f.data(), "f");
     // Row-major (m, n) from Python into the column-major gradient.
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> g(m_, n);
-    copy(call(gradient_), {m_, n}, g.data(), "gradient");
+    copy(call(gradient_, "the gradient"), {m_, n}, g.data(), "gradient");
     gradient = g;
     if (!hessian || hessian_.is_none()) return;
     std::vector<double> h(static_cast<std::size_t>(m_ * n * n));
-    copy(call(hessian_), {m_, n, n}, h.data(), "hessian");
+    copy(call(hessian_, "the hessian"), {m_, n, n}, h.data(), "hessian");
     for (py::ssize_t k = 0; k < m_; ++k)
       (*hessian)[static_cast<std::size_t>(k)] =
           Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(h.data() + k * n * n, n, n);

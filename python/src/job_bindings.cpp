@@ -36,12 +36,18 @@ class PythonObserver final : public AnalysisObserver {
   }
   void on_iteration(int, const IterationNorms&) override {
     py::gil_scoped_acquire gil;
-    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (PyErr_CheckSignals() != 0) throw CallbackError(py::error_already_set(), "a signal arrived during the run");
   }
   void on_increment(const IncrementReport& r) override {
     if (!progress_) return;
     py::gil_scoped_acquire gil;
-    (*progress_)(r);
+    try {
+      (*progress_)(r);
+    } catch (py::error_already_set& e) {
+      throw CallbackError(std::move(e), "raised by the progress callback after step " + std::to_string(r.step) +
+                                            " increment " + std::to_string(r.increment) + " attempt " +
+                                            std::to_string(r.attempt));
+    }
   }
 
  private:
@@ -83,6 +89,11 @@ JobSummary run(PyJob& self, const std::optional<py::function>& progress, bool ch
   try {
     py::gil_scoped_release release;
     summary = self.job->run(&observer);
+  } catch (CallbackError& e) {
+    take_results();  // what converged before the callback raised
+    // The callback's own exception goes back to Python, noting where it was raised.
+    if (py::hasattr(e.error.value(), "add_note")) e.error.value().attr("add_note")(e.where + "; the run stopped");
+    throw e.error;
   } catch (...) {
     take_results();  // what converged before the error or the interruption
     throw;

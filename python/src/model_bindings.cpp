@@ -1,5 +1,6 @@
 // tether.Model and the parts of it a parameter study changes: materials,
-// steps, concentrated loads, prescribed displacements, pressures.
+// steps, concentrated loads, prescribed displacements, pressures (the mesh
+// and the sections: mesh_bindings.cpp).
 //
 // Python holds the model through a shared pointer; a material, step or load
 // object is a (model, index) handle, so it stays valid however long Python
@@ -234,16 +235,15 @@ std::vector<int> element_labels(const Model& model) {
 }
 
 void bind_model_class(py::module_& m) {
-  py::class_<Model, std::shared_ptr<Model>>(m, "Model", "A model read from a deck: mesh, materials, constraints, steps.")
+  py::class_<Model, std::shared_ptr<Model>> model(m, "Model", "A model read from a deck: mesh, materials, constraints, steps.");
+  bind_mesh_editing(m, model);
+  model
       .def_readonly("heading", &Model::heading)
       .def_readonly("deck_path", &Model::deck_path)
       .def_property_readonly("n_nodes", &Model::n_nodes)
       .def_property_readonly("n_elements", &Model::n_elements)
       .def_property_readonly("node_labels",
                              [](const Model& md) { return vector<int>(md.node_ids.size(), [&](std::size_t i) { return md.node_ids[i]; }); })
-      .def_property_readonly("coordinates",
-                             [](const Model& md) { return matrix(md.coords.size(), 2, [&](std::size_t i, std::size_t j) { return md.coords[i][static_cast<Eigen::Index>(j)]; }); },
-                             "reference coordinates (n, 2)")
       .def_property_readonly("element_labels", [](const Model& md) { return py::array_t<int>(py::cast(element_labels(md))); })
       .def_property_readonly("element_types",
                              [](const Model& md) {

@@ -105,7 +105,7 @@ def test_to_meshio():
 def test_ctrl_c_stops_a_long_run(source, tmp_path):
     # SIGINT (what Ctrl-C sends) 0.5 s into the ironing example (about 25 s, 44
     # increments): the run stops with KeyboardInterrupt within an iteration, so
-    # the status file holds only the first few increments.
+    # the status file holds only the first few increments, and its verdict.
     import os
     import signal
     import threading
@@ -122,7 +122,13 @@ def test_ctrl_c_stops_a_long_run(source, tmp_path):
     status = (tmp_path / "ironing.sta").read_text()
     attempts = [line for line in status.splitlines() if line.split()[:1] in (["1"], ["2"])]
     assert len(attempts) < 22, status  # the whole run: 44 increments
-    assert "COMPLETED" not in status
+    verdict = " THE ANALYSIS HAS NOT BEEN COMPLETED: stopped by an exception: KeyboardInterrupt (a signal arrived " \
+              "during the run); "
+    if job.results:
+        verdict += f"last increment written: step {job.results[-1].step} increment {job.results[-1].increment}"
+    else:
+        verdict += "no increment was written by this run"
+    assert verdict in status, status
     # The increments that converged before are kept.
     assert len(job.results) == len(attempts)
     assert [(inc.step, inc.increment) for inc in job.results] == [tuple(map(int, a.split()[:2])) for a in attempts]

@@ -13,11 +13,11 @@ import numpy as _np
 
 from ._errors import DeckWarning, InputError, ModelError, ResourceError, SolverError, TetherError
 from ._tether import (Boundary, ConcentratedLoad, Increment, IncrementReport, Interaction, Job, Material, Model,
-                      Pressure, Step, Summary, __version__)
+                      Pressure, Section, Step, Summary, __version__)
 from . import _tether
 
 __all__ = ["read_deck", "read_deck_string", "Job", "Model", "Increment", "Summary", "IncrementReport", "Material",
-           "Interaction", "Step", "ConcentratedLoad", "Boundary", "Pressure", "TetherError", "InputError", "ModelError",
+           "Interaction", "Section", "Step", "ConcentratedLoad", "Boundary", "Pressure", "TetherError", "InputError", "ModelError",
            "SolverError", "ResourceError", "DeckWarning", "__version__"]
 
 

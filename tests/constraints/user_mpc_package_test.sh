@@ -15,11 +15,10 @@ cmake -S "$source_dir/examples/user_mpc" -B "$work/example/build" -G Ninja -DCMA
   -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
 cmake --build "$work/example/build" >/dev/null
 "$work/prefix/bin/tether" run "$work/example/user_mpc.inp" -o "$work/out" -q
-/usr/bin/python3 - "$source_dir" "$work/out/user_mpc.dat" <<'PY'
+PYTHONPATH="$source_dir/tools" /usr/bin/python3 - "$work/out/user_mpc.dat" <<'PY'
 import sys
-sys.path.insert(0, sys.argv[1] + "/tools")
 import tethertools.dat
-blocks = tethertools.dat.read(sys.argv[2])
+blocks = tethertools.dat.read(sys.argv[1])
 link = tethertools.dat.last_block(blocks, "constraint multipliers", "LINK")["rows"][0][3]
 print(f"user_mpc example: LINK multiplier {link:.6f} (exact -3.715326)")
 sys.exit(0 if abs(link + 3.715326) < 2e-6 else 1)

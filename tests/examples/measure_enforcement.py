@@ -15,8 +15,7 @@ import re
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import tethertools.dat  # noqa: E402
+import tethertools.dat  # PYTHONPATH=tools
 
 CASES = [
     ("LAGRANGE", ""),

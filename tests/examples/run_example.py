@@ -15,6 +15,8 @@ import shutil
 import subprocess
 import sys
 
+import tethertools.dat  # tools/ on PYTHONPATH (set by CTest)
+
 TITLE = "constraint multipliers"
 
 
@@ -59,9 +61,6 @@ def main(argv):
         print(__doc__, file=sys.stderr)
         return 2
     example, tether, source, work, module = argv[1:]
-    sys.path.insert(0, os.path.join(source, "tools"))
-    global tethertools
-    import tethertools.dat  # noqa: F401
     os.makedirs(work, exist_ok=True)
     folder = os.path.join(source, "examples", example)
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "tether/io/deck_reader.hpp"
 #include "tether/job/job.hpp"
@@ -103,6 +104,29 @@ TEST(Job, WritesTheFilesOfTetherRunWithOutputDirectory) {
   EXPECT_NE(status.find("COMPLETED"), std::string::npos) << status;
   // ... and keeps the increments beside the files.
   EXPECT_EQ(job.results().size(), 2u);
+}
+
+TEST(Job, AnObserverExceptionClosesTheStaAndMsgWithTheLastIncrementWritten) {
+  // The observer throws after the second increment converged, before its results are written.
+  struct Throwing final : AnalysisObserver {
+    void on_increment(const IncrementReport& r) override {
+      if (r.increment == 2) throw std::runtime_error("observer gave up\n(a second line, not in the verdict)");
+    }
+  } observer;
+  const fs::path dir = fresh_directory("observer_exception");
+  JobOptions options;
+  options.output_dir = dir;
+  Job job(read_deck_string(bar_deck(), "bar.inp"), options);
+  EXPECT_THROW(job.run(&observer), std::runtime_error);
+  EXPECT_EQ(job.results().size(), 1u);
+  const std::string verdict =
+      "stopped by an exception: observer gave up; last increment written: step 1 increment 1, time 0.5";
+  std::ifstream sta(dir / "bar.sta");
+  const std::string status((std::istreambuf_iterator<char>(sta)), std::istreambuf_iterator<char>());
+  EXPECT_NE(status.find(" THE ANALYSIS HAS NOT BEEN COMPLETED: " + verdict + "\n"), std::string::npos) << status;
+  std::ifstream msg(dir / "bar.msg");
+  const std::string log((std::istreambuf_iterator<char>(msg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(log.find("  " + verdict + "\n"), std::string::npos) << log;
 }
 
 TEST(Job, RunsAgainWithTheEditedModelAndKeepsTheOldModelWithOldResults) {

@@ -21,8 +21,7 @@ import os
 import sys
 import xml.etree.ElementTree as ET
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
-import tethertools.dat  # noqa: E402
+import tethertools.dat  # tools/ on PYTHONPATH (set by the caller)
 
 TITLE = "constraint multipliers (constraint,equation,f,lambda)"
 

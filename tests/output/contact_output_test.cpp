@@ -427,13 +427,11 @@ bool python_available() { return std::filesystem::exists("/usr/bin/python3"); }
 TEST(ContactOutput, PythonReadersReadCalculixContactBlocks) {
   if (!python_available()) GTEST_SKIP() << "/usr/bin/python3 is not installed";
   // A real ccx 2.20 run (data/ccx220_contact_nts.inp): CSTR, CDIS and CELS
-  // ("forall contact elements") blocks, read by both .dat readers.
-  for (const char* script : {"parse_dat.py", "check_datfile.py"})
-    EXPECT_EQ(test::run_python(shell_arg(kScripts + script) + " " +
-                               shell_arg(kScripts + "data/ccx220_contact_nts.dat") + " " +
-                               shell_arg(kScripts + "data/ccx220_contact_nts.json")),
-              0)
-        << script;
+  // ("forall contact elements") blocks, read by tools/tethertools/dat.py.
+  EXPECT_EQ(test::run_python(shell_arg(kScripts + "check_datfile.py") + " " +
+                             shell_arg(kScripts + "data/ccx220_contact_nts.dat") + " " +
+                             shell_arg(kScripts + "data/ccx220_contact_nts.json")),
+            0);
 }
 
 TEST(ContactOutput, PythonReadersReadTetherContactBlocks) {
@@ -473,11 +471,9 @@ TEST(ContactOutput, PythonReadersReadTetherContactBlocks) {
   }
   json.back() = ']';
   std::ofstream(dir / "expected.json") << json;
-  for (const char* script : {"parse_dat.py", "check_datfile.py"})
-    EXPECT_EQ(test::run_python(shell_arg(kScripts + script) + " " + shell_arg(dir / "job.dat") + " " +
-                               shell_arg(dir / "expected.json")),
-              0)
-        << script;
+  EXPECT_EQ(test::run_python(shell_arg(kScripts + "check_datfile.py") + " " + shell_arg(dir / "job.dat") + " " +
+                             shell_arg(dir / "expected.json")),
+            0);
 }
 
 TEST(ContactOutput, MeshioReadsTheContactArrays) {

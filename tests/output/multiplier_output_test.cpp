@@ -1,5 +1,5 @@
 // Constraint multipliers in the result files: the .dat multiplier blocks (text
-// and tools/datfile.py), and the VTU's CONSTRAINT_FORCE / LAGRANGE_MULTIPLIER
+// and tools/tethertools/dat.py), and the VTU's CONSTRAINT_FORCE / LAGRANGE_MULTIPLIER
 // read back with meshio from a real run of the rigid link example.
 
 #include <gtest/gtest.h>

@@ -182,7 +182,7 @@ bool python_available() { return std::filesystem::exists("/usr/bin/python3"); }
 
 TEST(PythonReaders, DatParserReadsCalculixOutput) {
   if (!python_available()) GTEST_SKIP() << "/usr/bin/python3 is not installed";
-  EXPECT_EQ(test::run_python(shell_quoted(kScripts + "parse_dat.py") + " " + shell_quoted(kScripts + "data/ccx220_two_cpe4.dat") +
+  EXPECT_EQ(test::run_python(shell_quoted(kScripts + "check_datfile.py") + " " + shell_quoted(kScripts + "data/ccx220_two_cpe4.dat") +
                              " " + shell_quoted(kScripts + "data/ccx220_two_cpe4.json")),
             0);
 }
@@ -242,7 +242,7 @@ TEST(PythonReaders, DatParserReadsTetherOutput) {
   }
   o << ']';
   j.write(dir / "expected.json");
-  EXPECT_EQ(test::run_python(shell_quoted(kScripts + "parse_dat.py") + " " + shell_quoted(dir / "job.dat") + " " +
+  EXPECT_EQ(test::run_python(shell_quoted(kScripts + "check_datfile.py") + " " + shell_quoted(dir / "job.dat") + " " +
                              shell_quoted(dir / "expected.json")),
             0);
 }

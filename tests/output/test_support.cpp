@@ -26,7 +26,9 @@ bool python_with_meshio_available() {
 }
 
 int run_python(const std::string& arguments) {
-  const int status = std::system(("/usr/bin/python3 " + arguments).c_str());
+  // The scripts import the readers of tools/tethertools (no sys.path edits in them).
+  const std::string command = "PYTHONPATH='" + std::string(TETHER_SOURCE_DIR) + "/tools' /usr/bin/python3 " + arguments;
+  const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 

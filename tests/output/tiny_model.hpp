@@ -102,7 +102,8 @@ int count_temporary_files(const std::filesystem::path& dir);
 /// True when /usr/bin/python3 exists and imports meshio and numpy.
 bool python_with_meshio_available();
 
-/// Runs /usr/bin/python3 with `arguments` (already quoted); returns its exit status.
+/// Runs /usr/bin/python3 with `arguments` (already quoted) and tools/ on PYTHONPATH (for
+/// tethertools); returns its exit status.
 int run_python(const std::string& arguments);
 
 }  // namespace tether::test

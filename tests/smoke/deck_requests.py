@@ -21,8 +21,7 @@ VARIABLE=PRESELECT) like the print requests. A request with FREQUENCY=0
 writes nothing; file requests (*NODE FILE, *OUTPUT, FIELD, ...) write no
 .dat blocks. Variables tether does not print are left out (the reader warns).
 """
-import os
-import re
+import tethertools.deck  # tools/ on PYTHONPATH (set by CTest)
 
 _NODE_TITLES = {"U": ["displacements"], "RF": ["forces"], "V": ["velocities"], "A": ["accelerations"]}
 _ELEMENT_TITLES = {"S": ["stresses"], "E": ["strains"], "PEEQ": ["equivalent plastic strain"],
@@ -34,40 +33,8 @@ _CONSTRAINT_KEYWORDS = {"*EQUATION", "*MPC", "*CONSTRAINT", "*TIE", "*PERIODIC"}
 
 
 def _blocks(path):
-    """[(keyword upper, {PARAM: value upper}, [data lines])], *INCLUDE expanded."""
-    out = []
-    with open(path, encoding="utf-8") as f:
-        lines = f.read().splitlines()
-    i = 0
-    while i < len(lines):
-        line = lines[i].strip()
-        i += 1
-        if not line.startswith("*") or line.startswith("**"):
-            continue
-        while line.endswith(",") and i < len(lines):  # keyword line continued
-            line += lines[i].strip()
-            i += 1
-        fields = [f.strip() for f in line.split(",")]
-        keyword = re.sub(r"\s+", " ", fields[0].upper())
-        params = {}
-        for f in fields[1:]:
-            if not f:
-                continue
-            name, _, value = f.partition("=")
-            params[re.sub(r"\s+", " ", name.strip().upper())] = value.strip()
-        data = []
-        while i < len(lines):
-            text = lines[i].strip()
-            if text.startswith("*") and not text.startswith("**"):
-                break
-            if text and not text.startswith("**"):
-                data.append(text)
-            i += 1
-        if keyword == "*INCLUDE":
-            out.extend(_blocks(os.path.join(os.path.dirname(path), params["INPUT"])))
-        else:
-            out.append((keyword, params, data))
-    return out
+    """[(keyword upper, {PARAM: value}, [data lines])], *INCLUDE expanded (tethertools.deck.cards)."""
+    return [(params["_kw"], params, data) for params, data, _ in tethertools.deck.cards(path)]
 
 
 def _variables(data):

@@ -12,7 +12,7 @@ checks, for the run to pass:
   requests ask for at the last increment of each step (deck_requests.py), and
   constraint-multiplier blocks when the deck has constraints;
 - the `.pvd` lists at least one `.vtu`; each exists and parses
-  (vtu_reader.py: array lengths against NumberOfPoints / NumberOfCells,
+  (tools/tethertools/vtu.py: array lengths against NumberOfPoints / NumberOfCells,
   finite values, connectivity inside the mesh, TIME as in the .pvd);
 - no result file names a node or element outside the mesh: the node labels of
   the .dat's nodal and contact blocks are NodeIds of the .vtu, the element
@@ -36,13 +36,9 @@ import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-
-import tethertools.dat  # noqa: E402
-import deck_requests  # noqa: E402
-import vtu_reader  # noqa: E402
+import deck_requests  # next to this script
+import tethertools.dat  # tools/ on PYTHONPATH (set by CTest)
+import tethertools.vtu
 
 COMPLETED = "THE ANALYSIS HAS COMPLETED SUCCESSFULLY"
 
@@ -135,8 +131,8 @@ def check_output(out, job, requests):
     step_ends = step_end_times(os.path.join(out, job + ".sta"))
     pvd = os.path.join(out, job + ".pvd")
     try:
-        vtus = vtu_reader.check_collection(pvd)
-    except (OSError, vtu_reader.VtuError) as e:
+        vtus = tethertools.vtu.check_collection(pvd)
+    except (OSError, tethertools.vtu.VtuError) as e:
         raise SmokeError(str(e)) from e
     if not vtus:
         raise SmokeError(f"{pvd}: lists no .vtu")

@@ -23,12 +23,9 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-
-import deck_requests  # noqa: E402
-import run_smoke  # noqa: E402
-import vtu_reader  # noqa: E402
+import deck_requests  # next to this script
+import run_smoke
+import tethertools.vtu as vtu_reader  # tools/ on PYTHONPATH (set by CTest)
 
 failures = []
 

@@ -1,11 +1,11 @@
-"""tools/tethertools: the one reader of decks, .dat and .sta files the tools, the
-examples and the tests use (run with PYTHONPATH=tools)."""
+"""tools/tethertools: the one reader of decks, .dat, .sta/.msg and .vtu files the
+tools, the examples and the tests use (run with PYTHONPATH=tools)."""
 import os
 import subprocess
 
 import pytest
 
-from tethertools import dat, deck, sta
+from tethertools import dat, deck, sta, vtu
 
 DAT = """
  displacements (vx,vy,vz) for set B and time  0.5000000E+00
@@ -62,6 +62,29 @@ def test_sta(tmp_path):
     path = tmp_path / "job.sta"
     path.write_text(" SUMMARY OF JOB INFORMATION:\n STEP INC ATT ITRS\n 1 1 1U 5 0.1\n 1 1 2 3 0.05\n 1 2 1 2 0.1\n")
     assert sta.read(path) == [(1, 1, 1, 5, False), (1, 1, 2, 3, True), (1, 2, 1, 2, True)]
+    assert sta.iterations(path) == (5, 5, 2)  # converged attempts only; no TOTITRS column: ITRS
+    assert sta.verdict(path) is None  # ccx writes no verdict line
+    assert sta.iterations(tmp_path / "missing.sta") == (None, None, None)
+
+
+def test_tether_sta_and_msg(tmp_path):
+    path = tmp_path / "job.sta"
+    path.write_text(
+        " tether 0.1.0  job job  dialect abaqus\n SUMMARY OF JOB INFORMATION:\n"
+        "  STEP   INC  ATT  ITRS  TOTITRS      TOT TIME     STEP TIME      INC TIME      RESIDUAL\n"
+        "     1     1    1     4        4  0.100000E+00  0.100000E+00  0.100000E+00  0.290034E-07\n"
+        "     1     2    1    12       15  0.200000E+00  0.200000E+00  0.100000E+00  0.284849E-02\n"
+        " THE ANALYSIS HAS NOT BEEN COMPLETED: step 1: a Python callback raised ValueError: boom\n")
+    assert [a["total_iterations"] for a in sta.attempts(path)] == [4, 15]
+    assert sta.iterations(path) == (16, 19, 2)
+    assert sta.verdict(path) == (False, "step 1: a Python callback raised ValueError: boom")
+    path.write_text(" THE ANALYSIS HAS COMPLETED SUCCESSFULLY: analysis complete\n")
+    assert sta.verdict(path) == (True, "analysis complete")
+    msg = tmp_path / "job.msg"
+    msg.write_text("  step 1 increment 1 attempt 1: time 0.1, increment 0.1, 4 iterations, converged\n"
+                   "  step 1 increment 2 attempt 1: time 0.2, increment 0.1, 9 iterations, not converged\n"
+                   "  step 2 increment 1 attempt 2: time 1.5, increment 0.5, 2 iterations, converged\n")
+    assert sta.converged_increments_in_msg(msg) == [(1, 1, 0.1), (2, 1, 1.5)]
 
 
 def write_deck(tmp_path):
@@ -74,6 +97,14 @@ def write_deck(tmp_path):
         "*NSET, NSET=EVEN, GENERATE\n2, 8, 2\n*NSET, NSET=BOTH\nEVEN, 1\n*ELSET, ELSET=E1\nEALL\n"
         "*SURFACE, NAME=TOP\nE1, S3\n*SURFACE, NAME=PTS, TYPE=NODE\n3\n*STEP\n*STATIC\n*END STEP\n")
     return main
+
+
+def test_keyword_line_continued(tmp_path):
+    path = tmp_path / "cont.inp"
+    path.write_text("*NODE PRINT, NSET=TOP,\n  FREQUENCY=2, TOTALS = YES\nU\n*EL  PRINT,ELSET=E\nS\n")
+    c = deck.cards(path)
+    assert [(p["_kw"], data) for p, data, _ in c] == [("*NODE PRINT", ["U"]), ("*EL PRINT", ["S"])]
+    assert c[0][0]["FREQUENCY"] == "2" and c[0][0]["TOTALS"] == "YES" and c[1][0]["ELSET"] == "E"
 
 
 def test_deck(tmp_path):
@@ -105,3 +136,38 @@ def test_deck_counts_agree_with_tether(tmp_path):
         out = subprocess.run([cli, "check", path], capture_output=True, text=True, check=True).stdout
         d = deck.Deck(path)
         assert f"{len(d.xy)} nodes, {len(d.elements)} elements" in out, (name, out)
+
+
+def test_vtu_of_a_tether_run(tmp_path):
+    """The .pvd and .vtu files of a run read back with the mesh's sizes, labels and times."""
+    cli = os.environ.get("TETHER_CLI")
+    if not cli:
+        pytest.skip("TETHER_CLI not set")
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    subprocess.run([cli, "run", "-q", os.path.join(root, "examples/lame/lame.inp"), "-o", str(tmp_path)], check=True)
+    listed = vtu.check_collection(tmp_path / "lame.pvd")
+    d = deck.Deck(os.path.join(root, "examples/lame/lame.inp"))
+    assert [t for _, t, _ in listed] == sorted(t for _, t, _ in listed) and listed
+    last = listed[-1][2]
+    assert last["points"] == len(d.xy) and last["cells"] == len(d.elements)
+    assert sorted(int(n) for n in last["node_ids"]) == sorted(d.xy)
+    assert last["time"] == pytest.approx(listed[-1][1])
+    (tmp_path / "bad.pvd").write_text('<VTKFile type="Collection"><Collection>'
+                                      '<DataSet timestep="1" file="none.vtu"/></Collection></VTKFile>')
+    with pytest.raises(vtu.VtuError, match="does not exist"):
+        vtu.check_collection(tmp_path / "bad.pvd")
+
+
+def test_every_tool_is_a_module_of_the_package_with_a_launcher():
+    """tools/NAME.py only launches tethertools.NAME.main (one package, no code outside it)."""
+    import importlib
+
+    tools = os.path.join(os.path.dirname(__file__), "..", "..", "tools")
+    launchers = sorted(f[:-3] for f in os.listdir(tools) if f.endswith(".py"))
+    assert "compare_ccx" in launchers and "make_gallery" in launchers and "hertz_bench" in launchers
+    for name in launchers:
+        assert callable(importlib.import_module("tethertools." + name).main), name
+        with open(os.path.join(tools, name + ".py")) as f:
+            code = [line for line in f if line.strip() and not line.startswith(("#", '"""'))]
+        assert code == [f"from tethertools.{name} import main\n", 'if __name__ == "__main__":\n',
+                        "    raise SystemExit(main())\n"], name

@@ -2,8 +2,9 @@
 keywords as plain dicts. It reads what the tools need and trusts the deck
 (tether's own reader validates; run `tether check` for that).
 
-  cards(path)          [(params, data lines, file)] per keyword line, *INCLUDEs
-                       followed (relative to the including file)
+  cards(path)          [(params, data lines, file)] per keyword line (a keyword line
+                       ending with a comma continues on the next), *INCLUDEs followed
+                       (relative to the including file)
   parse_keyword(line)  {"_kw": "*NAME WITH SPACES", "PARAM": "value", ...}
   include_files(path)  the files a deck *INCLUDEs, relative to its folder
   Deck(path)           nodes, elements, sets, surfaces, heading, keywords
@@ -27,7 +28,7 @@ def parse_keyword(line):
             continue
         if "=" in p:
             k, v = p.split("=", 1)
-            params[k.strip().upper()] = v.strip()
+            params[" ".join(k.split()).upper()] = v.strip()
         else:
             params[p.strip().upper()] = ""
     return params
@@ -43,11 +44,17 @@ def cards(path, _seen=None):
     seen.add(path)
     out, current = [], None
     with open(path, errors="replace") as f:
-        for raw in f:
+        lines = iter(f.read().splitlines())
+        for raw in lines:
             line = raw.strip()
             if not line or line.startswith("**"):
                 continue
             if line.startswith("*"):
+                while line.endswith(","):  # a keyword line continued on the next line
+                    more = next(lines, "").strip()
+                    if not more:
+                        break
+                    line += more
                 params = parse_keyword(line)
                 if params["_kw"] == "*INCLUDE" and "INPUT" in params:
                     inc = params["INPUT"]

@@ -80,6 +80,40 @@ class ExpressionConstraint::Compiler {
     return r;
   }
 
+  /// A text of `e` that does not depend on the order GiNaC keeps operands in
+  /// (an order of hashes that change from one process to the next): the
+  /// operands of sums and products sorted by their own keys.
+  const std::string& key(const ex& e) {
+    if (const auto it = keys_.find(e); it != keys_.end()) return it->second;
+    std::string k;
+    const bool commutative = GiNaC::is_exactly_a<GiNaC::add>(e) || GiNaC::is_exactly_a<GiNaC::mul>(e);
+    if (commutative || GiNaC::is_exactly_a<GiNaC::power>(e) || GiNaC::is_exactly_a<GiNaC::function>(e)) {
+      std::vector<std::string> parts;
+      for (std::size_t i = 0; i < e.nops(); ++i) parts.push_back(key(e.op(i)));
+      if (commutative) std::sort(parts.begin(), parts.end());
+      k = GiNaC::is_exactly_a<GiNaC::add>(e)     ? "add("
+          : GiNaC::is_exactly_a<GiNaC::mul>(e)   ? "mul("
+          : GiNaC::is_exactly_a<GiNaC::power>(e) ? "pow("
+                                                 : GiNaC::ex_to<GiNaC::function>(e).get_name() + "(";
+      for (const std::string& part : parts) k += part + ",";
+      k += ")";
+    } else {
+      k = text(e);  // a symbol, a number, a constant such as Pi
+    }
+    return keys_.emplace(e, std::move(k)).first->second;
+  }
+
+  /// The operands of a sum or a product in the order of their keys, so that
+  /// the program (and its round-off) is the same in every run.
+  std::vector<ex> sorted_operands(const ex& e) {
+    std::vector<std::pair<std::string, ex>> keyed;
+    for (std::size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(key(e.op(i)), e.op(i));
+    std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<ex> out;
+    for (auto& [k, operand] : keyed) out.push_back(operand);
+    return out;
+  }
+
   static bool negative_coefficient(const ex& t) {
     if (is_real_number(t)) return GiNaC::ex_to<numeric>(t).is_negative();
     if (!GiNaC::is_exactly_a<GiNaC::mul>(t)) return false;
@@ -99,9 +133,9 @@ class ExpressionConstraint::Compiler {
     }
     if (is_exactly_a<GiNaC::add>(e)) {
       std::optional<int> sum;
-      for (std::size_t i = 0; i < e.nops(); ++i) {
-        const bool negative = negative_coefficient(e.op(i));
-        const int r = reg(negative ? ex(-e.op(i)) : e.op(i));
+      for (const ex& term : sorted_operands(e)) {
+        const bool negative = negative_coefficient(term);
+        const int r = reg(negative ? ex(-term) : term);
         sum = !sum ? (negative ? emit(Op::Neg, r) : r) : emit(negative ? Op::Sub : Op::Add, *sum, r);
       }
       return *sum;
@@ -109,8 +143,7 @@ class ExpressionConstraint::Compiler {
     if (is_exactly_a<GiNaC::mul>(e)) {
       std::vector<int> numerator, denominator;
       bool negate = false;
-      for (std::size_t i = 0; i < e.nops(); ++i) {
-        const ex f = e.op(i);
+      for (const ex& f : sorted_operands(e)) {
         if (is_real_number(f) && f.is_equal(-1)) {
           negate = true;
         } else if (is_exactly_a<GiNaC::power>(f) && is_real_number(f.op(1)) &&
@@ -158,6 +191,7 @@ class ExpressionConstraint::Compiler {
   }
 
   std::map<ex, int, GiNaC::ex_is_less> memo_;
+  std::map<ex, std::string, GiNaC::ex_is_less> keys_;  ///< key() of every expression seen
   int n_inputs_;
   std::vector<double> constants_;
   std::vector<Instruction> program_;

@@ -28,6 +28,9 @@ class Job::Recorder final : public AnalysisObserver {
   std::shared_ptr<const Model> model;  ///< the model the kept increments belong to
   JobOptions::Keep keep = JobOptions::Keep::All;
   std::vector<JobIncrement>* kept = nullptr;
+  /// The last increment whose results were written (step 0: none yet).
+  int written_step = 0, written_increment = 0;
+  double written_time = 0;
 
   void on_iteration(int i, const IterationNorms& n) override {
     if (files) files->on_iteration(i, n);
@@ -38,7 +41,10 @@ class Job::Recorder final : public AnalysisObserver {
     if (user) user->on_increment(r);
   }
   void on_results(const IncrementResults& r, const Step& s, bool last) override {
-    if (files) files->on_results(r, s, last);
+    if (files) {
+      files->on_results(r, s, last);
+      written_step = r.step, written_increment = r.increment, written_time = r.total_time;
+    }
     if (keep != JobOptions::Keep::None) {
       if (keep == JobOptions::Keep::Last) kept->clear();
       kept->push_back({model, r});
@@ -55,6 +61,25 @@ class Job::Recorder final : public AnalysisObserver {
     if (user) user->on_message(m);
   }
 };
+
+namespace {
+
+/// The first line of `text` (an exception's message may carry a traceback).
+std::string first_line(const std::string& text) {
+  const std::string line = text.substr(0, text.find('\n'));
+  return line.empty() ? "an exception without a message" : line;
+}
+
+}  // namespace
+
+std::string Job::stopped_verdict(const std::string& what) const {
+  const std::string written =
+      recorder_->written_step == 0
+          ? "no increment was written by this run"
+          : fmt::format("last increment written: step {} increment {}, time {:g}", recorder_->written_step,
+                        recorder_->written_increment, recorder_->written_time);
+  return "stopped by an exception: " + first_line(what) + "; " + written;
+}
 
 Job::Job(Model model, JobOptions options) : Job(std::make_shared<Model>(std::move(model)), std::move(options)) {}
 
@@ -132,6 +157,13 @@ JobSummary Job::run(AnalysisObserver* observer) {
   } catch (const ResourceError& e) {
     if (files_)
       files_->writer().finish(false, std::string(e.what()) + "; the increments that converged before have been written");
+    throw;
+  } catch (const std::exception& e) {  // the observer's or a constraint callback's (Python, a plug-in)
+    if (files_) {
+      const std::string verdict = stopped_verdict(e.what());
+      files_->log(verdict);
+      files_->writer().finish(false, verdict);
+    }
     throw;
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -106,8 +106,11 @@ class Job {
   /// the increments. Never throws because the model does not converge or a
   /// step cannot be solved: the summary says why it stopped. Throws
   /// ModelError / ResourceError (after closing the `.sta` with the reason),
-  /// InputError for a bad output request, what the observer throws; after an
-  /// exception results() holds the increments kept until then. A Job can run
+  /// InputError for a bad output request, and rethrows any other exception
+  /// of the run (the observer's, a constraint callback's) after closing the
+  /// `.sta` and the `.msg` with the verdict "stopped by an exception: <first
+  /// line of what()>; last increment written: step S increment I, time T";
+  /// after an exception results() holds the increments kept until then. A Job can run
   /// again: each run starts from the beginning with the model as it is then
   /// and replaces the kept increments and the files.
   JobSummary run(AnalysisObserver* observer = nullptr);
@@ -132,6 +135,8 @@ class Job {
   class Recorder;
   /// Creates the files and the writer's history (restart), logs what waits.
   void open_files();
+  /// The verdict of a run stopped by an exception with message `what`.
+  [[nodiscard]] std::string stopped_verdict(const std::string& what) const;
 
   std::shared_ptr<Model> model_;            ///< the model the next run solves
   std::shared_ptr<const Model> run_model_;  ///< the prepared analysis' model: model_, or a copy when increments are kept
