@@ -14,14 +14,14 @@ void DeckState::warn(const SourceLocation& where, std::string message) const {
 int DeckState::node(int label, const SourceLocation& where) const {
   const auto it = model.node_index.find(label);
   if (it == model.node_index.end())
-    throw InputError(where, "undefined node " + std::to_string(label) + ": expected a node defined by *NODE");
+    throw InputError(where, "undefined node " + label_text(model.instances, label) + ": expected a node defined by *NODE");
   return it->second;
 }
 
 int DeckState::element(int label, const SourceLocation& where) const {
   const auto it = model.element_index.find(label);
   if (it == model.element_index.end())
-    throw InputError(where, "undefined element " + std::to_string(label) +
+    throw InputError(where, "undefined element " + label_text(model.instances, label) +
                                 ": expected an element defined by *ELEMENT");
   return it->second;
 }

@@ -74,7 +74,10 @@ std::vector<KeywordSpec> build_table() {
       {"PART", kModelData,
        "ABAQUS/CAE: starts a part; its *NODE, *ELEMENT, *NSET, *ELSET, *SURFACE and *SOLID SECTION lines are "
        "copied into each *INSTANCE of it, with set and surface names qualified by the instance "
-       "(`Part-1-1.Set-1`). Node and element labels are kept, so instances must not share labels.",
+       "(`Part-1-1.Set-1`). An instance keeps the part's node and element labels when no earlier instance uses "
+       "them; otherwise they are all moved by one round offset (10, 100, ...) inside tether, and messages and "
+       "the .dat rows of a set within one instance name them as the user knows them (`Upper-1.3`, or the part's "
+       "label under the set's header). Assembly and step data may name a node or element `Instance.label`.",
        "", {name("NAME", "Name of the part.", true)}, nullptr, ""},
       {"END PART", kModelData, "ABAQUS/CAE: ends a part.", "", {}, nullptr, ""},
       {"ASSEMBLY", kModelData, "ABAQUS/CAE: starts the assembly of part instances.", "",
@@ -295,7 +298,11 @@ std::vector<KeywordSpec> build_table() {
       {"OUTPUT", kAnyStep, "Starts an ABAQUS output block: FIELD (result files) or HISTORY (text report).", "",
        {flag("FIELD", "Field output: *NODE OUTPUT / *ELEMENT OUTPUT go to the result files."),
         flag("HISTORY", "History output: they go to the text report."), frequency_param(),
-        choice("VARIABLE", "", {"PRESELECT", "ALL"}, "Request U, RF, S and E for the whole model.")},
+        choice("VARIABLE", "", {"PRESELECT", "ALL"},
+               "ABAQUS's default variables for the whole model: FIELD requests U, RF, S and E (and CSTR, CDIS "
+               "when the model has contact pairs) in the result files; HISTORY means the whole-model energies, "
+               "which tether writes to the .dat of dynamic steps anyway (static steps have none yet), so it "
+               "requests nothing more.")},
        handle_output, ""},
       {"NODE OUTPUT", kAnyStep, "Nodal variables of the current *OUTPUT block.", "variables: U, RF",
        {name("NSET", "Node set (default: all nodes).")}, handle_node_output, ""},

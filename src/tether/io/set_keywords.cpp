@@ -158,7 +158,7 @@ void handle_surface(DeckState& state, const KeywordBlock& block, const Parameter
       for (int n : state.nodes_of(f[0], at)) {
         const auto [it, added] = area.try_emplace(n, a, at);
         if (!added && it->second.first != a)
-          throw InputError(at, "node " + std::to_string(state.model.node_ids[static_cast<std::size_t>(n)]) +
+          throw InputError(at, "node " + label_text(state.model.instances, state.model.node_ids[static_cast<std::size_t>(n)]) +
                                    " is given the area " + format_number(a) + " here (1 when omitted) and " +
                                    format_number(it->second.first) + " at " + it->second.second.str());
       }

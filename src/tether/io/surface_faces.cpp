@@ -1,6 +1,7 @@
 #include "tether/io/surface_faces.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace tether::deck {
 
@@ -12,7 +13,8 @@ std::pair<int, int> edge_key(int a, int b) { return {std::min(a, b), std::max(a,
 std::array<int, 3> face_node_indices(const Element& e, int f) {
   const auto local = face_nodes(e.type.shape, f);
   std::array<int, 3> out{};
-  for (int i = 0; i < 3; ++i) out[static_cast<std::size_t>(i)] = local[static_cast<std::size_t>(i)] < 0 ? -1 : e.nodes[static_cast<std::size_t>(local[static_cast<std::size_t>(i)])];
+  for (std::size_t i = 0; i < 3; ++i)
+    out[i] = local[i] < 0 ? -1 : e.nodes[static_cast<std::size_t>(local[i])];
   return out;
 }
 
@@ -65,7 +67,7 @@ std::vector<ElementFace> faces_under_lines(const DeckState& state, const FaceInd
     const auto n = face_node_indices(m.elements[static_cast<std::size_t>(faces[0].element)], faces[0].face);
     const int mid = line.nodes.size() > 2 ? line.nodes[2] : -1;
     if (mid >= 0 && n[2] >= 0 && mid != n[2])
-      throw InputError(at, name + " has mid-side node " + std::to_string(m.node_ids[static_cast<std::size_t>(mid)]) +
+      throw InputError(at, name + " has mid-side node " + label_text(m.instances, m.node_ids[static_cast<std::size_t>(mid)]) +
                                " but the face of element " + element_label(m, faces[0].element) + " under it has " +
                                std::to_string(m.node_ids[static_cast<std::size_t>(n[2])]) +
                                ": expected the same mid-side node");
