@@ -103,6 +103,9 @@ TEST(CaeDeck, MessagesNameNodesAndElementsByInstance) {
                                    "      9,           1.,           1.\n     20,           2.,           2.\n");
   expect_deck_error_at(replaced(gap, "Upper-1.8, 1, 1", "Upper-1.15, 1, 1"), "Upper-1.15",
                        {"undefined node UPPER-1.15"});
+  // A part keyword whose labels tether would not move for the second instance.
+  expect_deck_error_at(replaced(deck, "*End Part", "*Equation\n2\n7, 1, 1., 9, 1, -1.\n*End Part"), "*Equation",
+                       {"*EQUATION inside a *PART instanced more than once", "UPPER-1"});
   expect_deck_error_at(replaced(deck, "1, 1, 2, 5, 4", "1, 1, 4, 5, 2"), "1, 1, 4, 5, 2",
                        {"element LOWER-1.1 (CPE4) is inverted", "corner node LOWER-1."});
 }

@@ -217,8 +217,22 @@ class Flattener {
     PartInstance placed{name, label_offset(low, high), 0, 0};
     placed.first = low + placed.offset;
     placed.last = high + placed.offset;
+    if (placed.offset != 0) refuse_unmovable_labels(it->second, name);
     if (low <= high) instances_.push_back(placed);
     emit_instance(it->second, name, placement(b), placed.offset, out_);
+  }
+
+  /// A moved instance may only copy part blocks whose labels shift_labels() moves (or that hold none).
+  static void refuse_unmovable_labels(const std::vector<KeywordBlock>& part, const std::string& instance) {
+    for (const KeywordBlock& b : part) {
+      const std::string& k = b.keyword;
+      if (k == "NODE" || k == "ELEMENT" || k == "NSET" || k == "ELSET" || k == "SURFACE" || k == "SOLID SECTION")
+        continue;
+      throw InputError(b.where, "*" + k + " inside a *PART instanced more than once: instance " + instance +
+                                    " gets new labels, and tether moves the labels of *NODE, *ELEMENT, *NSET, "
+                                    "*ELSET and *SURFACE only; expected *" + k + " in the assembly or the model "
+                                    "data, naming nodes as Instance.label or by instance-qualified sets");
+    }
   }
 
   const PartInstance* find_instance(const std::string& name) const {
