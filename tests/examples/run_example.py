@@ -3,7 +3,8 @@
 
 Usage: run_example.py EXAMPLE TETHER_EXE SOURCE_DIR WORK_DIR USER_CONSTRAINT_MODULE
 
-EXAMPLE is rigid_link, formula_constraint, user_constraint, periodic_rve or hertz. The deck is copied
+EXAMPLE is rigid_link, formula_constraint, user_constraint, periodic_rve, hertz or gmsh_lame (meshed
+here by gmsh from its .geo; exit 77 when gmsh is missing). The deck is copied
 into WORK_DIR (the user constraint's LIBRARY= is pointed at the module the build
 made), run with `tether run -q`, and its .dat is read with tools/tethertools/dat.py.
 The expected values are the exact ones quoted in the example's README.
@@ -123,6 +124,27 @@ def main(argv):
         print(f"hertz: peak contact pressure {peak:.1f} MPa (exact p0 = {p0}), error {100 * (peak / p0 - 1):+.2f} %")
         if abs(peak / p0 - 1) > 0.01:
             fail("peak pressure more than 1 % from Hertz")
+    elif example == "gmsh_lame":
+        gmsh = shutil.which("gmsh")
+        if not gmsh:
+            print("gmsh_lame: gmsh is not installed (scripts/install-deps.sh installs it); skipped")
+            return 77
+        shutil.copy(os.path.join(folder, "lame_quarter.inp"), work)
+        mesh = os.path.join(work, "lame_quarter_mesh.inp")
+        subprocess.run([gmsh, "-2", "-format", "inp", os.path.join(folder, "lame_quarter.geo"), "-o", mesh],
+                       check=True, capture_output=True, timeout=100)
+        blocks = run(tether, os.path.join(work, "lame_quarter.inp"), work)
+        # Lame, plane strain: u(r) = (1 + nu) a^2 p / (E (b^2 - a^2)) ((1 - 2 nu) r + b^2 / r), radial.
+        a, b, p, e, nu = 10.0, 20.0, 100.0, 200000.0, 0.3
+        exact = lambda r: (1 + nu) * a * a * p / (e * (b * b - a * a)) * ((1 - 2 * nu) * r + b * b / r)
+        worst = 0.0
+        for set_name, r in (("INNER", a), ("OUTER", b)):
+            for row in blocks_of(blocks, "displacements", set_name)[-1]["rows"]:
+                worst = max(worst, abs(math.hypot(row[1], row[2]) / exact(r) - 1))
+        print(f"gmsh_lame: radial displacement at r = a, b within {worst:.1e} of Lame "
+              f"(u(a) = {exact(a):.6e}, u(b) = {exact(b):.6e})")
+        if worst > 1e-4:
+            fail("radial displacement differs from Lame by more than 1e-4")
     else:
         fail(f"unknown example {example}")
     return 0

@@ -56,10 +56,56 @@ TEST(CaeDeck, BadStructureNamesItsLine) {
                        "          90.", {"is not along z"});
   expect_deck_error_at(replaced(cae, "*End Part\n*Assembly", "*Assembly"), "*Part, name=Upper",
                        {"*PART UPPER is not closed"});
-  expect_deck_error_at(replaced(cae, "     11,           0.,           0.", "      1,           0.,           0."),
-                       "*Instance, name=Upper-1", {"instances LOWER-1 and UPPER-1 both have node 1"});
+  expect_deck_error_at(replaced(cae, "instance=Upper-1", "instance=Upper-9"), "*Nset, nset=Tied",
+                       {"INSTANCE=UPPER-9 on *NSET names no *INSTANCE"});
   expect_deck_error_at(replaced(kDeck, "*NSET, NSET=LEFT", "*NSET, NSET=LEFT, INSTANCE=A"), "*NSET, NSET=LEFT",
                        {"INSTANCE= on *NSET outside *ASSEMBLY"});
   expect_deck_error_at(replaced(kDeck, "*HEADING", "*PREPRINT, ECHO=MAYBE\n*HEADING"), "*PREPRINT",
                        {"bad value 'MAYBE' for ECHO"});
+}
+
+TEST(CaeDeck, TwoInstancesOfOnePartGetDistinctLabelsNamedByInstance) {
+  const std::string path = decks_dir() + "/cae/one_part_twice.inp";
+  const Model m = read_deck(path);
+  ASSERT_EQ(m.n_nodes(), 18);
+  ASSERT_EQ(m.n_elements(), 8);
+  ASSERT_EQ(m.instances.size(), 2u);
+  EXPECT_EQ(m.instances[0].offset, 0);   // Lower-1 keeps the part's labels 1-9
+  EXPECT_EQ(m.instances[1].offset, 10);  // Upper-1: 11-19
+  EXPECT_EQ(label_text(m.instances, 15), "UPPER-1.5");
+  EXPECT_EQ(label_text(m.instances, 5), "LOWER-1.5");
+  const auto at = [&](int label) { return m.coords[static_cast<std::size_t>(m.node_index.at(label))]; };
+  EXPECT_NEAR((at(19) - Eigen::Vector2d(1, 2)).norm(), 0, 1e-15);
+  EXPECT_EQ(m.elements[static_cast<std::size_t>(m.element_index.at(14))].nodes[2], m.node_index.at(19));
+  EXPECT_EQ(m.node_sets.at("UPPER-1.TOP"),
+            (std::vector<int>{m.node_index.at(17), m.node_index.at(18), m.node_index.at(19)}));
+  const Surface& slave = m.surfaces.at("SLAVE");
+  ASSERT_EQ(slave.faces.size(), 2u);
+  EXPECT_EQ(m.elements[static_cast<std::size_t>(slave.faces[0].element)].id, 11);
+  // Lower-1.Bottom encastre (3 x 2), Upper-1.Top along y (3), Upper-1.8 along x (internal node 18).
+  ASSERT_EQ(m.steps[0].boundary.size(), 10u);
+  EXPECT_EQ(m.steps[0].boundary.back().node, m.node_index.at(18));
+  // *Output, field, variable=PRESELECT: U, RF, S, E and, with contact, CSTR, CDIS; history: nothing more;
+  // then the *Node Print and *El Print.
+  using K = OutputRequest::Kind;
+  std::vector<K> kinds;
+  for (const OutputRequest& r : m.steps[0].outputs) kinds.push_back(r.kind);
+  EXPECT_EQ(kinds, (std::vector<K>{K::NodeFile, K::ElementFile, K::ContactFile, K::NodePrint, K::ElementPrint}));
+}
+
+TEST(CaeDeck, MessagesNameNodesAndElementsByInstance) {
+  std::ifstream in(decks_dir() + "/cae/one_part_twice.inp");
+  const std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  expect_deck_error_at(replaced(deck, "Upper-1.8, 1, 1", "Upper-1.99, 1, 1"), "Upper-1.99",
+                       {"undefined node or element UPPER-1.99", "labels 1-9"});
+  // Inside the instance's range but not a node of it: named as the user knows it.
+  const std::string gap = replaced(deck, "      9,           1.,           1.\n",
+                                   "      9,           1.,           1.\n     20,           2.,           2.\n");
+  expect_deck_error_at(replaced(gap, "Upper-1.8, 1, 1", "Upper-1.15, 1, 1"), "Upper-1.15",
+                       {"undefined node UPPER-1.15"});
+  // A part keyword whose labels tether would not move for the second instance.
+  expect_deck_error_at(replaced(deck, "*End Part", "*Equation\n2\n7, 1, 1., 9, 1, -1.\n*End Part"), "*Equation",
+                       {"*EQUATION inside a *PART instanced more than once", "UPPER-1"});
+  expect_deck_error_at(replaced(deck, "1, 1, 2, 5, 4", "1, 1, 4, 5, 2"), "1, 1, 4, 5, 2",
+                       {"element LOWER-1.1 (CPE4) is inverted", "corner node LOWER-1."});
 }

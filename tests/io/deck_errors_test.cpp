@@ -108,7 +108,7 @@ TEST(DeckErrors, UnsupportedAndUnknownElementTypes) {
                        {"unsupported element type CPE4R", "hourglass", "CPE4"});
   expect_deck_error_at(replaced(kDeck, "TYPE=CPE4", "TYPE=C3D8"), "C3D8",
                        {"unsupported element type C3D8", "2D continuum", "CPE8R"});
-  expect_deck_error_at(replaced(kDeck, "TYPE=CPE4", "TYPE=T3D2"), "T3D2", {"unsupported element type T3D2"});
+  expect_deck_error_at(replaced(kDeck, "TYPE=CPE4", "TYPE=B21"), "B21", {"unsupported element type B21", "T3D2"});
 }
 
 TEST(DeckErrors, InvertedTriangleAndFoldedQuad) {

@@ -319,7 +319,7 @@ U, RF
 *ELEMENT OUTPUT
 E
 *END STEP)");
-  deck += "*STEP\n*STATIC\n*OUTPUT, FIELD, VARIABLE=PRESELECT\n*END STEP\n";
+  deck += "*STEP\n*STATIC\n*OUTPUT, FIELD, VARIABLE=PRESELECT\n*OUTPUT, HISTORY, VARIABLE=PRESELECT\n*END STEP\n";
   std::vector<DeckWarning> warnings;
   const Model m = read_deck_string(deck, "out.inp", &warnings);
   ASSERT_EQ(m.steps.size(), 2u);
@@ -345,7 +345,7 @@ E
   EXPECT_EQ(o[5].kind, K::ElementPrint);
   EXPECT_EQ(o[5].frequency, 1);
   const auto& o2 = m.steps[1].outputs;
-  ASSERT_EQ(o2.size(), 2u);
+  ASSERT_EQ(o2.size(), 2u);  // HISTORY PRESELECT: ABAQUS's whole-model energies, no nodal or element request
   EXPECT_EQ(o2[0].kind, K::NodeFile);
   EXPECT_EQ(o2[0].variables, (std::vector<std::string>{"U", "RF"}));
   EXPECT_EQ(o2[1].kind, K::ElementFile);

@@ -45,6 +45,11 @@ TEST(DeckSurvey, FindsEveryRefusalPastTheFirst) {
   EXPECT_TRUE(survey_deck(written("good.inp", kDeck)).empty());
 }
 
+TEST(DeckSurvey, GmshLineElementsAreNotRefused) {
+  const std::string deck = replaced(kDeck, "*NSET, NSET=LEFT", "*ELEMENT, TYPE=T3D2, ELSET=EDGE\n9, 1, 4\n*NSET, NSET=LEFT");
+  EXPECT_TRUE(survey_deck(written("gmsh_lines.inp", deck)).empty());
+}
+
 TEST(DeckSurvey, ADeckThatCannotBeLexedIsOneUnreadableRefusal) {
   const auto r = survey_deck(written("include.inp", "*NODE\n*INCLUDE, INPUT=missing_nodes.inp\n"));
   ASSERT_EQ(r.size(), 1u);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <limits>
 #include <set>
 
 #include "tether/io/numbers.hpp"
@@ -81,6 +82,35 @@ std::string qualified(const std::string& instance, const std::string& name) {
   return instance + "." + name;
 }
 
+/// The data line rebuilt from its fields (a trailing ',' kept: it continues an *ELEMENT line).
+std::string joined(const DataFields& d) {
+  std::string text;
+  for (std::size_t i = 0; i < d.fields.size(); ++i) text += (i ? ", " : "") + d.fields[i];
+  return d.trailing_comma ? text + "," : text;
+}
+
+/// `label + offset` for an integer field; other fields unchanged.
+void shift(std::string& field, int offset, const SourceLocation& at) {
+  if (is_integer_token(field)) field = std::to_string(parse_label(field, at, "label") + offset);
+}
+
+/// The node and element labels of a part's block moved by `offset`: *NODE
+/// labels, *ELEMENT labels and nodes, *NSET/*ELSET members (GENERATE: first
+/// and last), element labels of *SURFACE lines.
+void shift_labels(KeywordBlock& b, int offset) {
+  const std::string& k = b.keyword;
+  if (offset == 0 || (k != "NODE" && k != "ELEMENT" && k != "NSET" && k != "ELSET" && k != "SURFACE")) return;
+  const bool generate = has_parameter(b, "GENERATE");
+  for (DataLine& line : b.data) {
+    DataFields d = split_data_line(line.text);
+    std::size_t n = d.fields.size();
+    if (k == "NODE" || k == "SURFACE") n = std::min<std::size_t>(n, 1);
+    if (generate) n = std::min<std::size_t>(n, 2);
+    for (std::size_t i = 0; i < n; ++i) shift(d.fields[i], offset, line.where());
+    line.text = joined(d);
+  }
+}
+
 /// Data fields that are names (not labels) qualified: *NSET/*ELSET members and
 /// the first field of *SURFACE lines.
 void qualify_data(KeywordBlock& b, const std::string& instance) {
@@ -90,16 +120,15 @@ void qualify_data(KeywordBlock& b, const std::string& instance) {
     std::vector<std::string> f = split_data_line(line.text).fields;
     const std::size_t n = sets ? f.size() : std::min<std::size_t>(1, f.size());
     for (std::size_t i = 0; i < n; ++i) f[i] = qualified(instance, f[i]);
-    std::string text;
-    for (std::size_t i = 0; i < f.size(); ++i) text += (i ? ", " : "") + f[i];
-    line.text = text;
+    line.text = joined({f, split_data_line(line.text).trailing_comma});
   }
 }
 
 /// The blocks of one instance: the part's blocks with names qualified and nodes placed.
 void emit_instance(const std::vector<KeywordBlock>& part, const std::string& instance, const Placement& place,
-                   std::vector<KeywordBlock>& out) {
+                   int offset, std::vector<KeywordBlock>& out) {
   for (KeywordBlock b : part) {
+    shift_labels(b, offset);
     for (Parameter& p : b.parameters)
       if (p.name == "NSET" || p.name == "ELSET" || (p.name == "NAME" && b.keyword == "SURFACE"))
         p.value = qualified(instance, p.value);
@@ -126,6 +155,9 @@ class Flattener {
     return std::move(out_);
   }
 
+  /// The instances placed, with their label offsets.
+  [[nodiscard]] const std::vector<PartInstance>& instances() const { return instances_; }
+
  private:
   void step(KeywordBlock b) {
     const std::string& k = b.keyword;
@@ -145,8 +177,14 @@ class Flattener {
     if (k == "END INSTANCE") return;
     if (in_assembly_ && (k == "NSET" || k == "ELSET") && has_parameter(b, "INSTANCE")) {
       const std::string instance = normalize_name(parameter(b, "INSTANCE"));
+      const PartInstance* placed = find_instance(instance);
+      if (!placed)
+        throw InputError(b.where, "INSTANCE=" + instance + " on *" + k + " names no *INSTANCE placed before it");
       std::erase_if(b.parameters, [](const Parameter& p) { return p.name == "INSTANCE"; });
+      shift_labels(b, placed->offset);
       qualify_data(b, instance);
+    } else {
+      resolve_qualified_labels(b);
     }
     out_.push_back(std::move(b));
   }
@@ -174,34 +212,99 @@ class Flattener {
     if (it == parts_.end())
       throw InputError(b.where, "*INSTANCE " + name + " of undefined part " + part + ": expected a *PART, NAME=" +
                                     part + " before the assembly");
-    check_labels(it->second, name, b.where);
-    emit_instance(it->second, name, placement(b), out_);
+    if (find_instance(name)) throw InputError(b.where, "*INSTANCE " + name + " is defined twice");
+    const auto [low, high] = label_range(it->second);
+    PartInstance placed{name, label_offset(low, high), 0, 0};
+    placed.first = low + placed.offset;
+    placed.last = high + placed.offset;
+    if (placed.offset != 0) refuse_unmovable_labels(it->second, name);
+    if (low <= high) instances_.push_back(placed);
+    emit_instance(it->second, name, placement(b), placed.offset, out_);
   }
 
-  /// Labels are kept, so two instances may not share one.
-  void check_labels(const std::vector<KeywordBlock>& part, const std::string& instance, const SourceLocation& at) {
+  /// A moved instance may only copy part blocks whose labels shift_labels() moves (or that hold none).
+  static void refuse_unmovable_labels(const std::vector<KeywordBlock>& part, const std::string& instance) {
+    for (const KeywordBlock& b : part) {
+      const std::string& k = b.keyword;
+      if (k == "NODE" || k == "ELEMENT" || k == "NSET" || k == "ELSET" || k == "SURFACE" || k == "SOLID SECTION")
+        continue;
+      throw InputError(b.where, "*" + k + " inside a *PART instanced more than once: instance " + instance +
+                                    " gets new labels, and tether moves the labels of *NODE, *ELEMENT, *NSET, "
+                                    "*ELSET and *SURFACE only; expected *" + k + " in the assembly or the model "
+                                    "data, naming nodes as Instance.label or by instance-qualified sets");
+    }
+  }
+
+  const PartInstance* find_instance(const std::string& name) const {
+    for (const PartInstance& i : instances_)
+      if (i.name == name) return &i;
+    return nullptr;
+  }
+
+  /// Smallest and largest node or element label of a part (low > high when it has none).
+  static std::pair<int, int> label_range(const std::vector<KeywordBlock>& part) {
+    int low = std::numeric_limits<int>::max(), high = std::numeric_limits<int>::min();
     for (const KeywordBlock& b : part) {
       if (b.keyword != "NODE" && b.keyword != "ELEMENT") continue;
-      auto& owners = b.keyword == "NODE" ? node_owner_ : element_owner_;
       bool continuation = false;  // an *ELEMENT line continued from the previous one starts with a node
       for (const DataLine& line : b.data) {
         const DataFields split = split_data_line(line.text);
         const bool skip = continuation;
         continuation = b.keyword == "ELEMENT" && split.trailing_comma;
-        const auto& f = split.fields;
-        if (skip || f.empty() || !is_integer_token(f[0])) continue;
-        const auto [it, fresh] = owners.try_emplace(f[0], instance);
-        if (!fresh && it->second != instance)
-          throw InputError(at, "instances " + it->second + " and " + instance + " both have " +
-                                   (b.keyword == "NODE" ? "node " : "element ") + f[0] +
-                                   ": tether keeps the part's labels, so instances must not share labels (give the "
-                                   "parts distinct label ranges, or write the model flat)");
+        if (skip || split.fields.empty() || !is_integer_token(split.fields[0])) continue;
+        const int label = parse_label(split.fields[0], line.where(), b.keyword == "NODE" ? "node label" : "element label");
+        low = std::min(low, label), high = std::max(high, label);
       }
+    }
+    return {low, high};
+  }
+
+  /// 0 when [low, high] is free of earlier instances' labels; else the smallest
+  /// multiple of 10^d (10^d > high) that moves the range past every label used.
+  int label_offset(int low, int high) const {
+    if (low > high) return 0;
+    int used = 0;
+    bool overlap = false;
+    for (const PartInstance& i : instances_) {
+      used = std::max(used, i.last);
+      overlap = overlap || (low <= i.last && i.first <= high);
+    }
+    if (!overlap) return 0;
+    long long round = 10;
+    while (round <= high) round *= 10;
+    const long long offset = (static_cast<long long>(used) - low + round) / round * round;
+    if (offset + high > std::numeric_limits<int>::max())
+      throw InputError(part_where_, "node and element labels of the instances do not fit in an int");
+    return static_cast<int>(offset);
+  }
+
+  /// Data fields `INSTANCE.label` (a node or element of a placed instance, as
+  /// ABAQUS writes them in assembly and history data) replaced by the internal label.
+  void resolve_qualified_labels(KeywordBlock& b) const {
+    if (instances_.empty()) return;
+    for (DataLine& line : b.data) {
+      DataFields d = split_data_line(line.text);
+      bool changed = false;
+      for (std::string& f : d.fields) {
+        const auto dot = f.rfind('.');
+        if (dot == std::string::npos || dot + 1 == f.size() || !is_integer_token(f.substr(dot + 1))) continue;
+        const PartInstance* i = find_instance(normalize_name(f.substr(0, dot)));
+        if (!i) continue;
+        const int label = parse_label(f.substr(dot + 1), line.where(), "label");
+        if (label + i->offset < i->first || label + i->offset > i->last)
+          throw InputError(line.where(), "undefined node or element " + i->name + "." + std::to_string(label) +
+                                             ": instance " + i->name + " has the labels " +
+                                             std::to_string(i->first - i->offset) + "-" +
+                                             std::to_string(i->last - i->offset) + " of its part");
+        f = std::to_string(label + i->offset);
+        changed = true;
+      }
+      if (changed) line.text = joined(d);
     }
   }
 
   std::map<std::string, std::vector<KeywordBlock>> parts_;
-  std::map<std::string, std::string> node_owner_, element_owner_;
+  std::vector<PartInstance> instances_;
   std::vector<KeywordBlock> out_;
   bool part_ = false, in_assembly_ = false;
   std::string part_name_;
@@ -215,11 +318,14 @@ bool is_assembly_keyword(std::string_view keyword) {
          keyword == "INSTANCE" || keyword == "END INSTANCE";
 }
 
-std::vector<KeywordBlock> flatten_assembly(std::vector<KeywordBlock> blocks) {
+std::vector<KeywordBlock> flatten_assembly(std::vector<KeywordBlock> blocks, std::vector<PartInstance>* instances) {
   const bool cae =
       std::any_of(blocks.begin(), blocks.end(), [](const KeywordBlock& b) { return is_assembly_keyword(b.keyword); });
   if (!cae) return blocks;
-  return Flattener().run(std::move(blocks));
+  Flattener flattener;
+  blocks = flattener.run(std::move(blocks));
+  if (instances) *instances = flattener.instances();
+  return blocks;
 }
 
 }  // namespace tether::deck

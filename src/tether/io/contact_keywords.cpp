@@ -190,7 +190,7 @@ void handle_contact_pair(DeckState& state, const KeywordBlock& block, const Para
         if (std::count_if(local.begin(), local.end(), [](int n) { return n >= 0; }) > 2 && pair.smoothing > 0)
           throw InputError(pair.where, "SMOOTH applies to linear (2-node) master faces only: master surface '" +
                                             f[1] + "' has quadratic faces, which are already curved (element " +
-                                            std::to_string(e.id) + ")");
+                                            label_text(state.model.instances, e.id) + ")");
       }
     }
     state.model.contact_pairs.push_back(std::move(pair));

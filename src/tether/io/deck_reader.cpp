@@ -112,12 +112,13 @@ std::vector<const KeywordSpec*> check_blocks(const DeckState& state, const std::
 }
 
 Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& deck_path,
-                  std::vector<DeckWarning>* warnings, Dialect dialect) {
+                  std::vector<DeckWarning>* warnings, Dialect dialect, std::vector<PartInstance> instances) {
   if (blocks.empty()) throw InputError({deck_path, 0}, "the deck is empty: expected keyword lines such as *NODE");
   DeckState state;
   state.warnings = warnings;
   state.model.deck_path = deck_path;
   state.model.dialect = dialect;
+  state.model.instances = std::move(instances);
   const std::vector<const KeywordSpec*> specs = check_blocks(state, blocks);
   for (const std::size_t i : deck::reading_order(blocks)) {
     const KeywordSpec* spec = specs[i];
@@ -139,12 +140,16 @@ Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& de
 }  // namespace
 
 Model read_deck(const std::string& path, std::vector<DeckWarning>* warnings, Dialect dialect) {
-  return read_blocks(deck::flatten_assembly(deck::lex_deck_file(path)), path, warnings, dialect);
+  std::vector<PartInstance> instances;
+  auto blocks = deck::flatten_assembly(deck::lex_deck_file(path), &instances);
+  return read_blocks(blocks, path, warnings, dialect, std::move(instances));
 }
 
 Model read_deck_string(const std::string& text, const std::string& name, std::vector<DeckWarning>* warnings,
                        Dialect dialect) {
-  return read_blocks(deck::flatten_assembly(deck::lex_deck_text(text, name, "")), name, warnings, dialect);
+  std::vector<PartInstance> instances;
+  auto blocks = deck::flatten_assembly(deck::lex_deck_text(text, name, ""), &instances);
+  return read_blocks(blocks, name, warnings, dialect, std::move(instances));
 }
 
 }  // namespace tether

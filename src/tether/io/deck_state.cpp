@@ -1,6 +1,7 @@
 #include "tether/io/deck_state.hpp"
 
 #include <algorithm>
+#include <charconv>
 
 #include "tether/io/numbers.hpp"
 
@@ -13,14 +14,14 @@ void DeckState::warn(const SourceLocation& where, std::string message) const {
 int DeckState::node(int label, const SourceLocation& where) const {
   const auto it = model.node_index.find(label);
   if (it == model.node_index.end())
-    throw InputError(where, "undefined node " + std::to_string(label) + ": expected a node defined by *NODE");
+    throw InputError(where, "undefined node " + label_text(model.instances, label) + ": expected a node defined by *NODE");
   return it->second;
 }
 
 int DeckState::element(int label, const SourceLocation& where) const {
   const auto it = model.element_index.find(label);
   if (it == model.element_index.end())
-    throw InputError(where, "undefined element " + std::to_string(label) +
+    throw InputError(where, "undefined element " + label_text(model.instances, label) +
                                 ": expected an element defined by *ELEMENT");
   return it->second;
 }
@@ -36,6 +37,11 @@ const std::vector<int>& DeckState::node_set(std::string_view name, const SourceL
 
 const std::vector<int>& DeckState::element_set(std::string_view name, const SourceLocation& where) const {
   const auto it = model.element_sets.find(to_upper(name));
+  if (it == model.element_sets.end() && line_sets.count(to_upper(name)))
+    throw InputError(where, "element set '" + std::string(name) + "' holds only line elements (" +
+                                lines[static_cast<std::size_t>(line_sets.at(to_upper(name)).front())].type +
+                                "), which carry no stiffness in tether: expected a set of solid elements here (a "
+                                "set of line elements names faces in *SURFACE, TYPE=ELEMENT, without a face id)");
   if (it == model.element_sets.end())
     throw InputError(where, "undefined element set '" + std::string(name) +
                                 "': expected an element label or a set defined by *ELSET or ELSET= (a set named "
@@ -49,8 +55,41 @@ std::vector<int> DeckState::nodes_of(std::string_view token, const SourceLocatio
 }
 
 std::vector<int> DeckState::elements_of(std::string_view token, const SourceLocation& where) const {
-  if (is_integer_token(token)) return {element(parse_label(token, where, "element label"), where)};
+  if (is_integer_token(token)) {
+    const int label = parse_label(token, where, "element label");
+    if (line_index.count(label) && !model.element_index.count(label))
+      throw InputError(where, "element " + std::to_string(label) + " is a line element (" +
+                                  lines[static_cast<std::size_t>(line_index.at(label))].type +
+                                  "), which carries no stiffness in tether: expected a solid element here (a line "
+                                  "element names a face in *SURFACE, TYPE=ELEMENT, without a face id)");
+    return {element(label, where)};
+  }
   return element_set(token, where);
+}
+
+namespace {
+
+/// The line-element index of an integer token, -1 when it is not a line element's label.
+int line_label_index(const DeckState& state, std::string_view token) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  int label = 0;
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), label);
+  if (ec != std::errc() || end != token.data() + token.size()) return -1;
+  const auto it = state.line_index.find(label);
+  return it == state.line_index.end() ? -1 : it->second;
+}
+
+}  // namespace
+
+bool DeckState::names_lines(std::string_view token) const {
+  if (is_integer_token(token)) return line_label_index(*this, token) >= 0;
+  return line_sets.count(to_upper(token)) > 0;
+}
+
+std::vector<int> DeckState::lines_of(std::string_view token) const {
+  if (!names_lines(token)) return {};
+  if (is_integer_token(token)) return {line_label_index(*this, token)};
+  return line_sets.at(to_upper(token));
 }
 
 int DeckState::amplitude(std::string_view name, const SourceLocation& where) const {

@@ -2,8 +2,10 @@
 /// \file The reader's working state while keyword handlers run, and the
 /// lookups they share (nodes, elements, sets, amplitudes by label or name).
 
+#include <map>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "tether/io/deck_reader.hpp"
@@ -41,6 +43,19 @@ struct DeckState {
   bool output_field = true;  ///< FIELD (file) or HISTORY (print)
   int output_frequency = 1;
 
+  // --- line elements (T2D2/T2D3/T3D2/T3D3, as Gmsh writes physical curves) ---
+  /// A line element: no stiffness and not part of the model; it only names the
+  /// faces of the solid elements it lies on (*SURFACE, TYPE=ELEMENT).
+  struct LineElement {
+    int id = 0;              ///< user label (shares the label space of *ELEMENT)
+    std::vector<int> nodes;  ///< node indices: two corners, then the mid-side node of T*D3
+    std::string type;        ///< as written, upper case
+    SourceLocation where;
+  };
+  std::vector<LineElement> lines;
+  std::unordered_map<int, int> line_index;                 ///< label -> index into `lines`
+  std::map<std::string, std::vector<int>> line_sets;       ///< line members of element sets (indices into `lines`)
+
   // --- resolved after the whole deck is read ---
   std::vector<std::string> section_material;  ///< material name of each section (upper case)
 
@@ -62,6 +77,10 @@ struct DeckState {
   [[nodiscard]] const std::vector<int>& node_set(std::string_view name, const SourceLocation& where) const;
   /// Members of a named element set (upper-cased); InputError if undefined.
   [[nodiscard]] const std::vector<int>& element_set(std::string_view name, const SourceLocation& where) const;
+  /// True when `token` is the label of a line element or the name of a set holding line elements.
+  [[nodiscard]] bool names_lines(std::string_view token) const;
+  /// Line-element indices of a data token (label or set name); empty when it names none.
+  [[nodiscard]] std::vector<int> lines_of(std::string_view token) const;
   /// Amplitude index by name, -1 for an empty name; InputError if undefined.
   [[nodiscard]] int amplitude(std::string_view name, const SourceLocation& where) const;
 };

@@ -53,6 +53,7 @@ void survey_block(const KeywordBlock& block, std::vector<Refusal>& out) {
     for (const deck::Parameter& given : block.parameters) {
       if (given.name != "TYPE") continue;
       const std::string type = deck::normalize_name(given.value);
+      if (line_element_nodes(type) > 0) continue;  // line elements only name faces
       const auto t = find_element_type(type);
       if (!t || !unsupported_reason(*t).empty()) out.push_back({Refusal::Kind::ElementType, type, block.where});
     }

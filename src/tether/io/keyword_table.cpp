@@ -74,7 +74,10 @@ std::vector<KeywordSpec> build_table() {
       {"PART", kModelData,
        "ABAQUS/CAE: starts a part; its *NODE, *ELEMENT, *NSET, *ELSET, *SURFACE and *SOLID SECTION lines are "
        "copied into each *INSTANCE of it, with set and surface names qualified by the instance "
-       "(`Part-1-1.Set-1`). Node and element labels are kept, so instances must not share labels.",
+       "(`Part-1-1.Set-1`). An instance keeps the part's node and element labels when no earlier instance uses "
+       "them; otherwise they are all moved by one round offset (10, 100, ...) inside tether, and messages and "
+       "the .dat rows of a set within one instance name them as the user knows them (`Upper-1.3`, or the part's "
+       "label under the set's header). Assembly and step data may name a node or element `Instance.label`.",
        "", {name("NAME", "Name of the part.", true)}, nullptr, ""},
       {"END PART", kModelData, "ABAQUS/CAE: ends a part.", "", {}, nullptr, ""},
       {"ASSEMBLY", kModelData, "ABAQUS/CAE: starts the assembly of part instances.", "",
@@ -99,9 +102,13 @@ std::vector<KeywordSpec> build_table() {
        "`label, x, y[, z]` ((r, z) for axisymmetric models; a non-zero z is ignored with a warning; empty or "
        "missing coordinates are 0, as in CalculiX)",
        {name("NSET", "Also add the nodes to this node set.")}, handle_node, ""},
-      {"ELEMENT", kModelData, "Defines 2D continuum elements of one type.",
+      {"ELEMENT", kModelData,
+       "Defines 2D continuum elements of one type, or line elements (T2D2/T2D3/T3D2/T3D3, as Gmsh writes "
+       "physical curves), which carry no stiffness: they only name the faces of the solid elements they lie on "
+       "in *SURFACE, TYPE=ELEMENT (a line element in any other place is an error).",
        "`label, n1, n2, ...` in ABAQUS node order; a line ending with ',' continues on the next",
-       {name("TYPE", "Element type: CPE3/4/6/8/8R, CPS3/4/6/8/8R, CAX3/4/6/8/8R.", true),
+       {name("TYPE", "Element type: CPE3/4/6/8/8R, CPS3/4/6/8/8R, CAX3/4/6/8/8R; T2D2, T2D3, T3D2, T3D3 (line "
+                     "elements).", true),
         name("ELSET", "Also add the elements to this element set.")},
        handle_element, ""},
       {"NSET", kModelData | kStep, "Defines or extends a node set (also inside a step, as CalculiX allows).",
@@ -118,7 +125,9 @@ std::vector<KeywordSpec> build_table() {
         flag("INTERNAL", "ABAQUS/CAE: a set CAE made for its own use; read like any other.")},
        handle_elset, ""},
       {"SURFACE", kModelData, "Defines a surface from element faces or from nodes.",
-       "TYPE=ELEMENT: `element_or_elset, S1..S4`; TYPE=NODE: `node_or_nset[, area]` (the area of each node, default 1: a node-based contact slave's pressure is its force / area)",
+       "TYPE=ELEMENT: `element_or_elset, S1..S4`, or `element_or_elset` alone: the exposed faces of those solid "
+       "elements (faces no other element shares, as in ABAQUS), and for line elements (a Gmsh physical curve) the "
+       "face of the solid element each lies on; TYPE=NODE: `node_or_nset[, area]` (the area of each node, default 1: a node-based contact slave's pressure is its force / area)",
        {name("NAME", "Name of the surface.", true),
         choice("TYPE", "ELEMENT", {"ELEMENT", "NODE"}, "Element-face surface or node surface.")},
        handle_surface, ""},
@@ -175,7 +184,10 @@ std::vector<KeywordSpec> build_table() {
        "optional `thickness` (default 1; ignored for axisymmetric elements)",
        {name("ELSET", "Element set the section applies to.", true),
         name("MATERIAL", "Name of the material.", true),
-        real("OFFSET", "0", "Accepted for CalculiX compatibility: only 0 (a solid section has no offset).")},
+        real("OFFSET", "0", "Accepted for CalculiX compatibility: only 0 (a solid section has no offset)."),
+        choice("FAMILY", "", {"PLANE STRAIN", "PLANE STRESS", "AXISYMMETRIC"},
+               "tether extension: turns the set's elements into this family, keeping their shape and integration "
+               "(CPS4 becomes CPE4 or CAX4), e.g. for a Gmsh export, which writes plane-stress CPS elements only.")},
        handle_solid_section, ""},
       {"AMPLITUDE", kModelData | kStep, "Piecewise-linear time function, constant beyond its ends.",
        "pairs `t, a` (any number per line, over as many lines as needed), times strictly increasing",
@@ -292,7 +304,11 @@ std::vector<KeywordSpec> build_table() {
       {"OUTPUT", kAnyStep, "Starts an ABAQUS output block: FIELD (result files) or HISTORY (text report).", "",
        {flag("FIELD", "Field output: *NODE OUTPUT / *ELEMENT OUTPUT go to the result files."),
         flag("HISTORY", "History output: they go to the text report."), frequency_param(),
-        choice("VARIABLE", "", {"PRESELECT", "ALL"}, "Request U, RF, S and E for the whole model.")},
+        choice("VARIABLE", "", {"PRESELECT", "ALL"},
+               "ABAQUS's default variables for the whole model: FIELD requests U, RF, S and E (and CSTR, CDIS "
+               "when the model has contact pairs) in the result files; HISTORY means the whole-model energies, "
+               "which tether writes to the .dat of dynamic steps anyway (static steps have none yet), so it "
+               "requests nothing more.")},
        handle_output, ""},
       {"NODE OUTPUT", kAnyStep, "Nodal variables of the current *OUTPUT block.", "variables: U, RF",
        {name("NSET", "Node set (default: all nodes).")}, handle_node_output, ""},

@@ -110,7 +110,7 @@ void check_body_load_geometry(const DeckState& state, const BodyLoad& b, const s
   const Element& e = state.model.elements[static_cast<std::size_t>(b.element)];
   const bool axisymmetric = e.type.family == Family::Axisymmetric;
   constexpr double kTol = 1e-12;
-  const std::string elem = "element " + std::to_string(e.id) + " (" + std::string(e.type.name) + ") of " + token;
+  const std::string elem = "element " + label_text(state.model.instances, e.id) + " (" + std::string(e.type.name) + ") of " + token;
   if (b.kind == BodyLoad::Kind::Gravity) {
     if (std::abs(b.direction.z()) > kTol)
       throw InputError(b.where, "GRAV direction has an out-of-plane (z) component: " + elem +

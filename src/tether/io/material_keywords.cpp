@@ -84,6 +84,20 @@ void handle_density(DeckState& state, const KeywordBlock& block, const Parameter
   current_material(state).density = v[0];
 }
 
+namespace {
+
+/// FAMILY= of *SOLID SECTION: the set's elements become `family` ("PLANE STRAIN", ...) with the same shape and
+/// integration, e.g. CPS8R -> CPE8R.
+void change_family(Model& m, const std::string& elset, const std::string& family) {
+  const std::string prefix = family == "PLANE STRAIN" ? "CPE" : family == "PLANE STRESS" ? "CPS" : "CAX";
+  for (int e : m.element_sets.at(elset)) {
+    Element& el = m.elements[static_cast<std::size_t>(e)];
+    el.type = *find_element_type(prefix + std::string(el.type.name.substr(3)));
+  }
+}
+
+}  // namespace
+
 void handle_solid_section(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   SolidSection s;
   s.elset = params.name("ELSET");
@@ -100,6 +114,7 @@ void handle_solid_section(DeckState& state, const KeywordBlock& block, const Par
     if (!(s.thickness > 0))
       throw InputError(block.data[0].where(), "thickness " + f[0] + ": expected a thickness > 0");
   }
+  if (params.given("FAMILY")) change_family(state.model, s.elset, params.name("FAMILY"));
   state.model.sections.push_back(std::move(s));
   state.section_material.push_back(params.name("MATERIAL"));
 }

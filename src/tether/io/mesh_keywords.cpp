@@ -16,6 +16,78 @@ void add_to_set(std::map<std::string, std::vector<int>>& sets, const std::string
   sort_unique(set);
 }
 
+/// Reads the data lines of *ELEMENT into `(label, node labels, line)` rows,
+/// joining continuation lines; `n_nodes` nodes per element.
+struct ElementRow {
+  std::vector<std::string> fields;  ///< label, then the node labels
+  SourceLocation where;
+};
+std::vector<ElementRow> element_rows(const KeywordBlock& block, int n_nodes, const std::string& type_name) {
+  const std::string expected = "`label, n1, ..., n" + std::to_string(n_nodes) + "` for " + type_name;
+  const auto wanted = static_cast<std::size_t>(n_nodes) + 1;
+  std::vector<ElementRow> rows;
+  ElementRow row;
+  for (const DataLine& line : block.data) {
+    DataFields split = split_data_line(line.text);
+    if (row.fields.empty()) row.where = line.where();
+    row.fields.insert(row.fields.end(), split.fields.begin(), split.fields.end());
+    if (split.trailing_comma && row.fields.size() < wanted) continue;  // continues on the next line
+    if (row.fields.size() != wanted)
+      throw InputError(row.where, "wrong number of nodes for " + type_name + " element: expected " +
+                                      std::to_string(n_nodes) + " nodes but found " +
+                                      std::to_string(static_cast<int>(row.fields.size()) - 1) + " (" + expected + ")");
+    for (std::size_t i = 1; i < row.fields.size(); ++i)
+      if (row.fields[i].empty())
+        throw InputError(row.where, "empty node field in element " + row.fields[0] + ": expected " + expected);
+    rows.push_back(std::move(row));
+    row = ElementRow{};
+  }
+  if (!row.fields.empty())
+    throw InputError(row.where, "element line ends with ',' but no continuation follows: expected " + expected);
+  return rows;
+}
+
+/// Node index of `field` in element `label`; InputError if the node is undefined.
+int element_node(const Model& m, const std::string& field, const std::string& label, const SourceLocation& at) {
+  const int node = parse_label(field, at, "node label");
+  const auto it = m.node_index.find(node);
+  if (it == m.node_index.end())
+    throw InputError(at, "element " + label + " references undefined node " + std::to_string(node) +
+                             ": expected nodes defined by *NODE");
+  return it->second;
+}
+
+/// InputError when `label` is already used by a solid or a line element.
+void check_new_element_label(const DeckState& state, int label, const SourceLocation& at) {
+  const Model& m = state.model;
+  std::string before;
+  if (m.element_index.count(label)) before = m.elements[static_cast<std::size_t>(m.element_index.at(label))].where.str();
+  if (state.line_index.count(label)) before = state.lines[static_cast<std::size_t>(state.line_index.at(label))].where.str();
+  if (!before.empty())
+    throw InputError(at, "duplicate element " + std::to_string(label) +
+                             ": element labels must be unique (it is already defined at " + before + ")");
+}
+
+/// *ELEMENT of line elements (ABAQUS node order: end, middle, end): kept beside the model, without stiffness, to name faces.
+void read_line_elements(DeckState& state, const KeywordBlock& block, const ParameterValues& params, int n_nodes) {
+  const std::string type_name = params.name("TYPE");
+  std::vector<int> added;
+  for (const ElementRow& row : element_rows(block, n_nodes, type_name)) {
+    DeckState::LineElement l;
+    l.id = parse_label(row.fields[0], row.where, "element label");
+    l.type = type_name;
+    l.where = row.where;
+    for (std::size_t i = 1; i < row.fields.size(); ++i)
+      l.nodes.push_back(element_node(state.model, row.fields[i], row.fields[0], row.where));
+    if (l.nodes.size() == 3) std::swap(l.nodes[1], l.nodes[2]);  // ABAQUS's end, middle, end -> corners first
+    check_new_element_label(state, l.id, row.where);
+    state.line_index.emplace(l.id, static_cast<int>(state.lines.size()));
+    added.push_back(static_cast<int>(state.lines.size()));
+    state.lines.push_back(std::move(l));
+  }
+  add_to_set(state.line_sets, params.name("ELSET"), added);
+}
+
 }  // namespace
 
 void handle_heading(DeckState& state, const KeywordBlock& block, const ParameterValues&) {
@@ -61,52 +133,30 @@ void handle_node(DeckState& state, const KeywordBlock& block, const ParameterVal
 void handle_element(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   Model& m = state.model;
   const std::string type_name = params.name("TYPE");
+  if (const int n = line_element_nodes(type_name); n > 0) return read_line_elements(state, block, params, n);
   const auto type = find_element_type(type_name);
   if (!type)
     throw InputError(block.where, "unsupported element type " + type_name +
                                       ": tether has 2D continuum elements only; expected one of CPE3, CPE4, "
                                       "CPE6, CPE8, CPE8R, CPS3, CPS4, CPS6, CPS8, CPS8R, CAX3, CAX4, CAX6, "
-                                      "CAX8, CAX8R");
+                                      "CAX8, CAX8R (or the line elements T2D2, T2D3, T3D2, T3D3, which only name "
+                                      "faces)");
   if (const std::string reason = unsupported_reason(*type); !reason.empty())
     throw InputError(block.where, "unsupported element type " + type_name + ": " + reason);
 
-  const std::string expected = "`label, n1, ..., n" + std::to_string(type->n_nodes) + "` for " + type_name;
   std::vector<int> added;
-  std::vector<std::string> fields;  // gathered over continuation lines
-  SourceLocation first;
-  for (const DataLine& line : block.data) {
-    DataFields split = split_data_line(line.text);
-    if (fields.empty()) first = line.where();
-    fields.insert(fields.end(), split.fields.begin(), split.fields.end());
-    const auto wanted = static_cast<std::size_t>(type->n_nodes) + 1;
-    if (split.trailing_comma && fields.size() < wanted) continue;  // continues on the next line
-    if (fields.size() != wanted)
-      throw InputError(first, "wrong number of nodes for " + type_name + " element: expected " +
-                                  std::to_string(type->n_nodes) + " nodes but found " +
-                                  std::to_string(static_cast<int>(fields.size()) - 1) + " (" + expected + ")");
+  for (const ElementRow& row : element_rows(block, type->n_nodes, type_name)) {
     Element e;
-    e.id = parse_label(fields[0], first, "element label");
+    e.id = parse_label(row.fields[0], row.where, "element label");
     e.type = *type;
-    e.where = first;
-    for (std::size_t i = 1; i < fields.size(); ++i) {
-      if (fields[i].empty()) throw InputError(first, "empty node field in element " + fields[0] + ": expected " + expected);
-      const int label = parse_label(fields[i], first, "node label");
-      if (!m.node_index.count(label))
-        throw InputError(first, "element " + std::to_string(e.id) + " references undefined node " +
-                                    std::to_string(label) + ": expected nodes defined by *NODE");
-      e.nodes.push_back(m.node_index.at(label));
-    }
-    if (m.element_index.count(e.id))
-      throw InputError(first, "duplicate element " + std::to_string(e.id) +
-                                  ": element labels must be unique (it is already defined at " +
-                                  m.elements[static_cast<std::size_t>(m.element_index.at(e.id))].where.str() + ")");
+    e.where = row.where;
+    for (std::size_t i = 1; i < row.fields.size(); ++i)
+      e.nodes.push_back(element_node(m, row.fields[i], row.fields[0], row.where));
+    check_new_element_label(state, e.id, row.where);
     m.element_index.emplace(e.id, m.n_elements());
     added.push_back(m.n_elements());
     m.elements.push_back(std::move(e));
-    fields.clear();
   }
-  if (!fields.empty())
-    throw InputError(first, "element line ends with ',' but no continuation follows: expected " + expected);
   add_to_set(m.element_sets, params.name("ELSET"), added);
 }
 

@@ -65,7 +65,7 @@ void resolve_sections(DeckState& state) {
     for (int e : m.element_sets.at(section.elset)) {
       Element& element = m.elements[static_cast<std::size_t>(e)];
       if (element.section >= 0)
-        throw InputError(section.where, "element " + std::to_string(element.id) +
+        throw InputError(section.where, "element " + label_text(m.instances, element.id) +
                                             " is in two sections: it already has the section at " +
                                             m.sections[static_cast<std::size_t>(element.section)].where.str() +
                                             " (expected each element in exactly one *SOLID SECTION)");
@@ -74,7 +74,7 @@ void resolve_sections(DeckState& state) {
   }
   for (const Element& e : m.elements)
     if (e.section < 0)
-      throw InputError(e.where, "element " + std::to_string(e.id) + " (" + std::string(e.type.name) +
+      throw InputError(e.where, "element " + label_text(m.instances, e.id) + " (" + std::string(e.type.name) +
                                     ") has no section: expected a *SOLID SECTION whose ELSET contains it");
 }
 
@@ -93,18 +93,18 @@ void check_geometry(const Model& m) {
       xmin = std::min(xmin, x.x()), xmax = std::max(xmax, x.x());
       ymin = std::min(ymin, x.y()), ymax = std::max(ymax, x.y());
       if (e.type.family == Family::Axisymmetric && x.x() < 0)
-        throw InputError(e.where, "axisymmetric element " + std::to_string(e.id) + " has node " +
-                                      std::to_string(m.node_ids[static_cast<std::size_t>(n)]) +
+        throw InputError(e.where, "axisymmetric element " + label_text(m.instances, e.id) + " has node " +
+                                      label_text(m.instances, m.node_ids[static_cast<std::size_t>(n)]) +
                                       " at radius r = x < 0: expected r >= 0");
     }
     const double scale = std::max((xmax - xmin) * (xmax - xmin), (ymax - ymin) * (ymax - ymin));
     const auto dets = corner_jacobians(m, e);
     for (std::size_t c = 0; c < dets.size(); ++c)
       if (!(dets[c] > 1e-12 * scale))
-        throw InputError(e.where, "element " + std::to_string(e.id) + " (" + std::string(e.type.name) +
+        throw InputError(e.where, "element " + label_text(m.instances, e.id) + " (" + std::string(e.type.name) +
                                       ") is inverted or degenerate: Jacobian " + std::to_string(dets[c]) +
                                       " <= 0 at corner node " +
-                                      std::to_string(m.node_ids[static_cast<std::size_t>(e.nodes[c])]) +
+                                      label_text(m.instances, m.node_ids[static_cast<std::size_t>(e.nodes[c])]) +
                                       " (expected corners numbered counter-clockwise and a convex shape)");
   }
 }
@@ -118,7 +118,7 @@ void check_body_load_densities(const Model& m) {
           m.materials[static_cast<std::size_t>(m.sections[static_cast<std::size_t>(e.section)].material)];
       if (!material.density)
         throw InputError(b.where, std::string(b.kind == BodyLoad::Kind::Gravity ? "GRAV" : "CENTRIF") +
-                                      " on element " + std::to_string(e.id) + " needs the density of its material " +
+                                      " on element " + label_text(m.instances, e.id) + " needs the density of its material " +
                                       material.name + ": expected *DENSITY under *MATERIAL, NAME=" + material.name +
                                       " (" + material.where.str() + ")");
     }

@@ -101,12 +101,17 @@ void handle_output(DeckState& state, const KeywordBlock& block, const ParameterV
   state.output_frequency = params.integer("FREQUENCY");
   if (state.output_frequency < 0)
     throw InputError(block.where, "FREQUENCY=" + params.text("FREQUENCY") + ": expected a value >= 0");
-  if (params.given("VARIABLE")) {  // PRESELECT / ALL: the variables tether has, for the whole model
+  // VARIABLE=PRESELECT / ALL, as ABAQUS means them: FIELD, the default field variables (tether's: U, RF, S, E,
+  // and the contact stress and opening when the model has contact); HISTORY, the whole-model energies, which
+  // tether writes to the .dat of every dynamic step anyway, so it adds no request.
+  if (params.given("VARIABLE") && field) {
     using K = OutputRequest::Kind;
-    state.step().outputs.push_back({field ? K::NodeFile : K::NodePrint, "", {"U", "RF"}, state.output_frequency,
-                                    false, false, block.where});
-    state.step().outputs.push_back({field ? K::ElementFile : K::ElementPrint, "", {"S", "E"},
-                                    state.output_frequency, false, false, block.where});
+    state.step().outputs.push_back({K::NodeFile, "", {"U", "RF"}, state.output_frequency, false, false, block.where});
+    state.step().outputs.push_back({K::ElementFile, "", {"S", "E"}, state.output_frequency, false, false,
+                                    block.where});
+    if (!state.model.contact_pairs.empty())
+      state.step().outputs.push_back({K::ContactFile, "", {"CSTR", "CDIS"}, state.output_frequency, false, false,
+                                      block.where});
   }
 }
 

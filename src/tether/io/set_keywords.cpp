@@ -1,10 +1,12 @@
 // *NSET, *ELSET, *SURFACE.
 #include <map>
+#include <optional>
 #include <set>
 
 #include "tether/io/deck_state.hpp"
 #include "tether/io/keyword_handlers.hpp"
 #include "tether/io/numbers.hpp"
+#include "tether/io/surface_faces.hpp"
 
 namespace tether::deck {
 
@@ -47,6 +49,37 @@ void refuse_instance_outside_assembly(const KeywordBlock& block, const Parameter
                                   "*PART, and belongs to sets defined between *ASSEMBLY and *END ASSEMBLY");
 }
 
+/// Faces of a TYPE=ELEMENT surface: `element_or_elset, Sn` lines; an element or
+/// set given without a face id means its exposed faces, and line elements (or
+/// their sets) the faces of the solids they lie on.
+std::vector<ElementFace> element_surface_faces(const DeckState& state, const KeywordBlock& block) {
+  std::vector<ElementFace> faces;
+  std::set<long long> seen;  // element * 4 + face
+  const auto add = [&](const std::vector<ElementFace>& more) {
+    for (const ElementFace& face : more)
+      if (seen.insert(4LL * face.element + face.face).second) faces.push_back(face);
+  };
+  std::optional<FaceIndex> index;  // built on first use
+  for (const DataLine& line : block.data) {
+    const SourceLocation at = line.where();
+    const auto f = data_fields(line, 1, 2, "`element_or_elset[, S1..S4]`");
+    const bool lines = state.names_lines(f[0]);
+    const bool solids = !lines || (!is_integer_token(f[0]) && state.model.element_sets.count(to_upper(f[0])));
+    if (f.size() == 2 && !f[1].empty()) {
+      if (!solids)
+        throw InputError(at, "'" + f[0] + "' names line elements, which have no faces " + f[1] +
+                                 ": expected it without a face id (the faces of the solid elements the lines lie on)");
+      for (int e : state.elements_of(f[0], at))
+        add({ElementFace{e, parse_face_id(f[1], state.model.elements[static_cast<std::size_t>(e)], at, 'S')}});
+      continue;
+    }
+    if (!index) index.emplace(state.model);
+    if (lines) add(faces_under_lines(state, *index, state.lines_of(f[0]), at));
+    if (solids) add(exposed_faces(state.model, *index, state.elements_of(f[0], at)));
+  }
+  return faces;
+}
+
 }  // namespace
 
 void handle_nset(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
@@ -73,23 +106,37 @@ void handle_nset(DeckState& state, const KeywordBlock& block, const ParameterVal
 void handle_elset(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   refuse_instance_outside_assembly(block, params);
   const bool generate = params.given("GENERATE");
-  std::vector<int> members;
+  std::vector<int> members, lines;  // solid elements; line elements (kept apart, see DeckState::lines)
+  const auto add = [&](std::string_view token, const SourceLocation& at) {
+    const std::vector<int> l = state.lines_of(token);
+    lines.insert(lines.end(), l.begin(), l.end());
+    const bool solid_set = !is_integer_token(token) && state.model.element_sets.count(to_upper(token));
+    if (!l.empty() && !solid_set && !is_integer_token(token)) return;  // a set of line elements only
+    if (!l.empty() && is_integer_token(token)) return;                   // a line element's label
+    const auto e = state.elements_of(token, at);
+    members.insert(members.end(), e.begin(), e.end());
+  };
+  const int n_defined = state.model.n_elements() + static_cast<int>(state.lines.size());
   for (const DataLine& line : block.data) {
     const SourceLocation at = line.where();
     if (generate) {
-      for (int label : generate_labels(line, state.model.n_elements(), "element"))
-        members.push_back(state.element(label, at));
+      for (int label : generate_labels(line, n_defined, "element")) add(std::to_string(label), at);
       continue;
     }
-    for (const std::string& f : data_fields(line, 1, 0, "element labels or element set names")) {
-      if (f.empty()) continue;
-      const auto elements = state.elements_of(f, at);
-      members.insert(members.end(), elements.begin(), elements.end());
-    }
+    for (const std::string& f : data_fields(line, 1, 0, "element labels or element set names"))
+      if (!f.empty()) add(f, at);
   }
-  auto& set = state.model.element_sets[params.name("ELSET")];
-  set.insert(set.end(), members.begin(), members.end());
-  sort_unique(set);
+  const std::string name = params.name("ELSET");
+  if (!lines.empty()) {
+    auto& set = state.line_sets[name];
+    set.insert(set.end(), lines.begin(), lines.end());
+    sort_unique(set);
+  }
+  if (!members.empty() || lines.empty() || state.model.element_sets.count(name)) {
+    auto& set = state.model.element_sets[name];
+    set.insert(set.end(), members.begin(), members.end());
+    sort_unique(set);
+  }
 }
 
 void handle_surface(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
@@ -111,7 +158,7 @@ void handle_surface(DeckState& state, const KeywordBlock& block, const Parameter
       for (int n : state.nodes_of(f[0], at)) {
         const auto [it, added] = area.try_emplace(n, a, at);
         if (!added && it->second.first != a)
-          throw InputError(at, "node " + std::to_string(state.model.node_ids[static_cast<std::size_t>(n)]) +
+          throw InputError(at, "node " + label_text(state.model.instances, state.model.node_ids[static_cast<std::size_t>(n)]) +
                                    " is given the area " + format_number(a) + " here (1 when omitted) and " +
                                    format_number(it->second.first) + " at " + it->second.second.str());
       }
@@ -119,15 +166,7 @@ void handle_surface(DeckState& state, const KeywordBlock& block, const Parameter
     for (const auto& [n, a] : area) s.nodes.push_back(n), s.node_areas.push_back(a.first);
   } else {
     s.kind = Surface::Kind::ElementFaces;
-    std::set<long long> seen;  // element * 4 + face
-    for (const DataLine& line : block.data) {
-      const SourceLocation at = line.where();
-      const auto f = data_fields(line, 2, 2, "`element_or_elset, S1..S4`");
-      for (int e : state.elements_of(f[0], at)) {
-        const ElementFace face{e, parse_face_id(f[1], state.model.elements[static_cast<std::size_t>(e)], at, 'S')};
-        if (seen.insert(4LL * face.element + face.face).second) s.faces.push_back(face);
-      }
-    }
+    s.faces = element_surface_faces(state, block);
   }
   state.model.surfaces.emplace(s.name, std::move(s));
 }

@@ -77,7 +77,7 @@ ConstraintData tie_constraint(const Model& model, int slave, const std::map<int,
                               const std::string& name, const SourceLocation& at, const Enforcement& enforcement) {
   ConstraintData c;
   c.kind = ConstraintData::Kind::Linear;
-  c.name = name + " node " + std::to_string(model.node_ids[static_cast<std::size_t>(slave)]);
+  c.name = name + " node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(slave)]);
   c.where = at;
   c.enforcement = enforcement;
   c.nodes.push_back(slave);
@@ -217,12 +217,12 @@ void handle_periodic(DeckState& state, const KeywordBlock& block, const Paramete
     for (const std::vector<int>* side : {&a, &b})
       for (int n : *side)
         if (n == r1 || n == r2)
-          throw InputError(at, "reference node " + std::to_string(model.node_ids[static_cast<std::size_t>(n)]) +
+          throw InputError(at, "reference node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(n)]) +
                                    " is in a paired set: expected the reference nodes apart from the cell "
                                    "(they carry the macroscopic displacement gradient)");
     for (int n : a)
       if (std::find(b.begin(), b.end(), n) != b.end())
-        throw InputError(at, "node " + std::to_string(model.node_ids[static_cast<std::size_t>(n)]) + " is in both " +
+        throw InputError(at, "node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(n)]) + " is in both " +
                                  f[0] + " and " + f[1] + ": expected two disjoint sets of opposite nodes");
     std::vector<Eigen::Vector2d> xa, xb;
     for (int n : a) xa.push_back(model.coords[static_cast<std::size_t>(n)]);
@@ -243,7 +243,7 @@ void handle_periodic(DeckState& state, const KeywordBlock& block, const Paramete
     const PeriodicPairing pairing = pair_by_translation(xa, xb, translation, tolerance);
     if (pairing.unpaired_a >= 0) {
       const int n = a[static_cast<std::size_t>(pairing.unpaired_a)];
-      throw InputError(at, "node " + std::to_string(model.node_ids[static_cast<std::size_t>(n)]) + " of " + f[0] +
+      throw InputError(at, "node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(n)]) + " of " + f[0] +
                                " at " + point(xa[static_cast<std::size_t>(pairing.unpaired_a)]) +
                                " has no partner in " + f[1] + ": expected a node at " +
                                point(xa[static_cast<std::size_t>(pairing.unpaired_a)] + translation) +
@@ -252,7 +252,7 @@ void handle_periodic(DeckState& state, const KeywordBlock& block, const Paramete
     }
     if (pairing.unpaired_b >= 0) {
       const int n = b[static_cast<std::size_t>(pairing.unpaired_b)];
-      throw InputError(at, "node " + std::to_string(model.node_ids[static_cast<std::size_t>(n)]) + " of " + f[1] +
+      throw InputError(at, "node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(n)]) + " of " + f[1] +
                                " at " + point(xb[static_cast<std::size_t>(pairing.unpaired_b)]) +
                                " has no partner in " + f[0] + ": expected a node at " +
                                point(xb[static_cast<std::size_t>(pairing.unpaired_b)] - translation) +
@@ -266,8 +266,8 @@ void handle_periodic(DeckState& state, const KeywordBlock& block, const Paramete
       const Eigen::Vector2d d = xb[static_cast<std::size_t>(j)] - xa[static_cast<std::size_t>(i)];
       ConstraintData c;
       c.kind = ConstraintData::Kind::Linear;
-      c.name = name + " " + std::to_string(model.node_ids[static_cast<std::size_t>(na)]) + "-" +
-               std::to_string(model.node_ids[static_cast<std::size_t>(nb)]);
+      c.name = name + " " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(na)]) + "-" +
+               label_text(model.instances, model.node_ids[static_cast<std::size_t>(nb)]);
       c.where = at;
       c.enforcement = enforcement;
       c.nodes = {na, nb, r1, r2};

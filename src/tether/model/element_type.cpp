@@ -44,6 +44,12 @@ std::optional<ElementType> find_element_type(std::string_view name) {
   return std::nullopt;
 }
 
+int line_element_nodes(std::string_view name) {
+  if (name == "T3D2" || name == "T2D2") return 2;
+  if (name == "T3D3" || name == "T2D3") return 3;
+  return 0;
+}
+
 std::string unsupported_reason(const ElementType& type) {
   if (type.reduced && (type.shape == Shape::Quad4))
     return "reduced-integration 4-node element " + std::string(type.name) +

@@ -33,6 +33,11 @@ struct ElementType {
 /// can refuse them with a clear reason) but flagged by is_supported().
 std::optional<ElementType> find_element_type(std::string_view name);
 
+/// Nodes of a line-element type the reader accepts only to name faces: the
+/// trusses T3D2/T3D3 Gmsh writes for physical curves and their 2D twins
+/// T2D2/T2D3 (upper-case name); 0 for any other type.
+int line_element_nodes(std::string_view name);
+
 /// Empty when the type is supported, else the reason it is refused.
 std::string unsupported_reason(const ElementType& type);
 

@@ -20,6 +20,7 @@
 #include "tether/model/constraint_data.hpp"
 #include "tether/model/contact_data.hpp"
 #include "tether/model/element_type.hpp"
+#include "tether/model/part_instance.hpp"
 
 namespace tether {
 
@@ -251,6 +252,9 @@ struct Model {
   std::unordered_map<int, int> node_index;     ///< label -> index
   std::vector<Element> elements;
   std::unordered_map<int, int> element_index;  ///< label -> index
+  /// ABAQUS/CAE part instances (empty for a flat deck): which labels belong to
+  /// which instance, for naming them `INSTANCE.label` (label_text()).
+  std::vector<PartInstance> instances;
 
   // --- named things (keys upper case) ---
   std::map<std::string, std::vector<int>> node_sets;     ///< node indices, sorted, unique

@@ -39,7 +39,21 @@ constexpr std::array<std::string_view, 7> kContactPrintVariables = {"CSTR", "CDI
 struct Selection {
   std::string name;
   std::vector<int> indices;
+  /// Subtracted from the labels printed: the offset of the ABAQUS/CAE instance
+  /// holding every member of the set (its rows then carry the part's labels,
+  /// as the user knows them), else 0.
+  int label_offset = 0;
 };
+
+/// The offset of the one instance holding every label of `labels`, else 0.
+template <class LabelOf>
+int common_instance_offset(const Model& model, const std::vector<int>& indices, LabelOf label_of) {
+  if (model.instances.empty() || indices.empty()) return 0;
+  const PartInstance* first = instance_of(model.instances, label_of(indices.front()));
+  for (const int i : indices)
+    if (instance_of(model.instances, label_of(i)) != first) return 0;
+  return first ? first->offset : 0;
+}
 
 Selection select(const Model& model, const OutputRequest& r) {
   const bool nodal = r.kind == OutputRequest::Kind::NodePrint;
@@ -53,6 +67,10 @@ Selection select(const Model& model, const OutputRequest& r) {
   const auto& sets = nodal ? model.node_sets : model.element_sets;
   s.name = r.set;
   s.indices = sets.at(r.set);
+  s.label_offset = nodal ? common_instance_offset(model, s.indices,
+                                                  [&](int i) { return model.node_ids[static_cast<std::size_t>(i)]; })
+                         : common_instance_offset(model, s.indices,
+                                                  [&](int e) { return model.elements[static_cast<std::size_t>(e)].id; });
   return s;
 }
 
@@ -71,7 +89,7 @@ void write_nodal(Out out, const Model& model, const Selection& sel, const std::v
   if (rows) {
     write_header(out, what, sel.name, time);
     for (const int i : sel.indices)
-      fmt::format_to(out, "{:10d} {:13.6E} {:13.6E} {:13.6E}\n", model.node_ids[static_cast<std::size_t>(i)],
+      fmt::format_to(out, "{:10d} {:13.6E} {:13.6E} {:13.6E}\n", model.node_ids[static_cast<std::size_t>(i)] - sel.label_offset,
                      unsigned_zero(v[static_cast<std::size_t>(i)].x()),
                      unsigned_zero(v[static_cast<std::size_t>(i)].y()), 0.0);
   }
@@ -95,7 +113,7 @@ void write_points(Out out, const Model& model, const Selection& sel, const Incre
   std::vector<PointValues> buffer;
   for (const int e : sel.indices) {
     const auto& points = element_points(r, static_cast<std::size_t>(e), buffer);
-    const int label = model.elements[static_cast<std::size_t>(e)].id;
+    const int label = model.elements[static_cast<std::size_t>(e)].id - sel.label_offset;
     for (std::size_t k = 0; k < points.size(); ++k) {
       const Tensor4& t = stress ? points[k].stress : points[k].strain;
       fmt::format_to(out, "{:10d}{:4d} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}\n", label, k + 1,
@@ -114,7 +132,7 @@ void write_plastic_points(Out out, const Model& model, const Selection& sel, con
   std::vector<PointValues> buffer;
   for (const int e : sel.indices) {
     const auto& points = element_points(r, static_cast<std::size_t>(e), buffer);
-    const int label = model.elements[static_cast<std::size_t>(e)].id;
+    const int label = model.elements[static_cast<std::size_t>(e)].id - sel.label_offset;
     for (std::size_t k = 0; k < points.size(); ++k) {
       if (peeq) {
         fmt::format_to(out, "{:10d}{:4d} {:13.6E}\n", label, k + 1, unsigned_zero(points[k].peeq));
