@@ -19,7 +19,9 @@ FrontISTR's test suite models it (units are consistent, none implied):
     match the foundation's (1/2 long): non-matching meshes;
   * both E = 1100, nu = 0, thickness 1;
   * contact: slave = the block's bottom faces (SLAVE), master = the
-    foundation's top faces (MASTER), *SURFACE BEHAVIOR HARD, *FRICTION mu;
+    foundation's top faces (MASTER), *SURFACE BEHAVIOR HARD (or, with
+    --linear K, LINEAR: a penalty law both tether and CalculiX model),
+    *FRICTION mu (none when mu = 0: then F / G = tan(alpha));
   * step 1 "LOAD": the vertical load G (--load, default 40) on the block's top
     (set TOP, the consistent nodal loads of a uniform pressure G / 4 over its
     width 4), the block's left side above the interface (set PUSH) held in x;
@@ -37,7 +39,7 @@ a per cent. The deformation scales with G / E while the sliding does not:
 --load 0.4 gives the rigid limit.
 
 Usage: make_cgs4_deck.py OUT.inp [--type SURFACE TO SURFACE|NODE TO SURFACE]
-                                 [--mu 0.3] [--load 40] [--push 0.2] [--increments 10]
+                                 [--mu 0.3] [--linear K] [--load 40] [--push 0.2] [--increments 10]
 """
 import argparse
 
@@ -74,7 +76,7 @@ def fmt(v):
     return f"{v:.12g}"
 
 
-def write(path, contact_type, mu, load, push, increments):
+def write(path, contact_type, mu, load, push, increments, linear=None):
     fx = [6.0 * i / 12 for i in range(13)]
     bx = [1.0 + 4.0 * i / 9 for i in range(10)]
     foundation = grid(1, fx, lambda x: 0.0, slope, 3)
@@ -105,9 +107,11 @@ def write(path, contact_type, mu, load, push, increments):
     lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", f"{fmt(E)}, {fmt(NU)}",
               "*SOLID SECTION, ELSET=FOUNDATION, MATERIAL=STEEL", "1.",
               "*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL", "1.",
-              "*SURFACE INTERACTION, NAME=ROUGH", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD",
-              "*FRICTION", fmt(mu),
-              f"*CONTACT PAIR, INTERACTION=ROUGH, TYPE={contact_type}", "SLAVE, MASTER",
+              "*SURFACE INTERACTION, NAME=ROUGH"]
+    lines += ([f"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", fmt(linear)] if linear
+              else ["*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD"])
+    lines += (["*FRICTION", fmt(mu)] if mu > 0 else [])
+    lines += [f"*CONTACT PAIR, INTERACTION=ROUGH, TYPE={contact_type}", "SLAVE, MASTER",
               "*BOUNDARY", "BASE, 1, 2", "PUSH, 1, 1",
               "*STEP", "*STATIC", "1., 1.", "*CLOAD"]
     for n, x, y in top:
@@ -126,12 +130,14 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--type", default="SURFACE TO SURFACE", choices=["SURFACE TO SURFACE", "NODE TO SURFACE"])
     ap.add_argument("--mu", type=float, default=0.3)
+    ap.add_argument("--linear", type=float, metavar="K",
+                    help="PRESSURE-OVERCLOSURE=LINEAR with slope K [pressure/length] instead of HARD")
     ap.add_argument("--load", type=float, default=40.0, help="vertical load G on the block (default 40)")
     ap.add_argument("--push", type=float, default=0.2)
     ap.add_argument("--increments", type=int, default=10)
     a = ap.parse_args()
-    write(a.out, a.type, a.mu, a.load, a.push, a.increments)
-    ratio = (TAN_ALPHA + a.mu) / (1 - a.mu * TAN_ALPHA)
+    write(a.out, a.type, a.mu, a.load, a.push, a.increments, a.linear)
+    ratio = (TAN_ALPHA + a.mu) / (1 - a.mu * TAN_ALPHA)  # tan(alpha) when mu = 0
     print(f"wrote {a.out}: F/G exact {ratio:.6f}")
 
 
