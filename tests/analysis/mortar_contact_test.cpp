@@ -207,7 +207,8 @@ TEST(MortarPatch, TaylorPapadopoulos) {
 // through (0, -0.002), (20, 0.002) (h = 0); in the calculix dialect
 // EXPONENTIAL c0 0.01, p0 5 is CalculiX's p = p0 exp(ln(100) h / c0)
 // (h = c0 ln 2 / ln 100). Flat interfaces (the top body
-// sinks by h); inclined ones with h = 0 only: an overclosure along an
+// sinks by h), also under NLGEOM (follower pressure; D_j the current
+// weight, λ_j the Cauchy pressure); inclined ones with h = 0 only: an overclosure along an
 // inclined normal also shifts the top body sideways, so the end faces of
 // the slave are no longer wholly overlapped and the patch test is not exact
 // there (docs/theory/mortar.md, Limits).
@@ -235,16 +236,18 @@ TEST(MortarPatch, SoftLawsGiveTheExactPressureAndOverclosure) {
        Dialect::Calculix}};
   for (const SoftCase& law : laws)
     for (PatchCase c : {PatchCase{3, 7, false, 0.0}, PatchCase{7, 3, false, 0.0}, PatchCase{2, 5, true, 0.0},
-                        PatchCase{7, 3, false, 0.3}, PatchCase{4, 3, true, -0.3}}) {
+                        PatchCase{7, 3, false, 0.3}, PatchCase{4, 3, true, -0.3}, PatchCase{3, 7, false, 0.0, 0.3, true},
+                        PatchCase{2, 5, true, 0.0, 0.3, true}}) {
       if (c.slope != 0 && law.overclosure != 0) continue;
       c.behavior = law.behavior;
       c.dialect = law.dialect;
       const PatchErrors e = run_patch(c);
       const double scale = std::max(std::abs(law.overclosure), 1e-4);
-      std::printf("[ mortar soft patch ] %s%s%s, slave %d on master %d, slope %.2f: stress error %.2e, pressure error "
+      std::printf("[ mortar soft patch ] %s%s%s%s, slave %d on master %d, slope %.2f: stress error %.2e, pressure error "
                   "%.2e, mean gaps %.6e...%.6e (exact %.6e), %d Newton iterations\n",
                   law.behavior.substr(40, law.behavior.find('\n') - 40).c_str(),
-                  c.dialect == Dialect::Calculix ? " (calculix)" : "", c.quadratic ? " CPE8" : " CPE4", c.n_slave, c.n_master,
+                  c.dialect == Dialect::Calculix ? " (calculix)" : "", c.quadratic ? " CPE8" : " CPE4",
+                  c.nlgeom ? " NLGEOM" : "", c.n_slave, c.n_master,
                   c.slope, e.stress, e.pressure, e.smallest_gap, e.largest_gap, -law.overclosure, e.iterations);
       EXPECT_LT(e.stress, 1e-10) << law.behavior;
       EXPECT_LT(e.pressure, 1e-10) << law.behavior;

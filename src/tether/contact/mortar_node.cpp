@@ -131,6 +131,7 @@ struct Kinematics {
   bool covered = false;
   Eigen::VectorXd gradient;
   Eigen::VectorXd D_gradient;  ///< ∂D_j/∂u (order >= 1): the soft laws' mean overclosure -g̃_j / D_j
+  Eigen::MatrixXd D_hessian;   ///< ∂²D_j/∂u² (order 2, soft laws only)
   Eigen::MatrixXd hessian;
   double slip = 0;
   Eigen::VectorXd slip_gradient, G;
@@ -164,10 +165,14 @@ void add_term(Kinematics& out, const Term<Dual2>& t, const Term<double>* old, bo
     out.gap += gap.value(), out.D += t.D.value();
     scatter(out.gradient, gap, to);
     scatter(out.D_gradient, t.D, to);
-    if (out.hessian.size() > 0 && gap.second())
+    const auto add_hessian = [&to](Eigen::MatrixXd& h, const Dual2& value) {
+      if (h.size() == 0 || !value.second()) return;
       for (std::size_t a = 0; a < to.size(); ++a)
         for (std::size_t b = 0; b < to.size(); ++b)
-          out.hessian(to[a], to[b]) += gap.hessian()(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+          h(to[a], to[b]) += value.hessian()(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+    };
+    add_hessian(out.hessian, gap);
+    add_hessian(out.D_hessian, t.D);
   }
   if (!friction) return;
   const Vec2T<Dual2> tau = tangent_of(t.normal);
@@ -204,6 +209,7 @@ Kinematics kinematics(const MortarPair& pair, const MortarSlave& s, const Evalua
     }
   }
   if (order >= 2) out.hessian = Eigen::MatrixXd::Zero(n_u, n_u);
+  if (order >= 2 && pair.soft()) out.D_hessian = Eigen::MatrixXd::Zero(n_u, n_u);
   for (const auto& [e, k] : s.faces)
     for (int f : pair.term_faces(e)) {
       const std::vector<int> nodes = term_nodes(pair, e, f);
@@ -336,6 +342,35 @@ MortarNode::Friction MortarNode::friction(const EvaluationState& state) const {
   return f;
 }
 
+namespace {
+
+/// The rows of a node under a soft law (closed, covered; c = c_j).
+void soft_rows(const MortarPair& pair, const MortarSlave& s, double c, const EvaluationState& state,
+               const Kinematics& k, LocalSystem& out, bool need_tangent) {
+  // The law λ_j = p(h_j) of the mean overclosure h_j = -g̃_j / D_j, and the
+  // virtual work of the nodal force λ_j D_j on the mean gap:
+  //   r_u += λ_j D_j ∇h_j = -λ_j (∇g̃_j + h_j ∇D_j),  r_λ = (p(h_j) - λ_j) / c_j,
+  // so that a uniform overclosure does no work through the change of the
+  // measure (NLGEOM) or of the overlap.
+  const auto n_u = static_cast<Eigen::Index>(2 * s.nodes.size());
+  const Eigen::Index in = n_u;
+  const double lambda = state.u[s.multiplier];
+  const double decisive = decisive_gap(pair, s, state.u, k.gap, k.D);
+  const double h = -decisive / k.D;
+  const ContactPressure p = soft_pressure(pair, decisive, k.D);
+  const Eigen::VectorXd direction = k.gradient + h * k.D_gradient;  // = -D_j ∇h_j
+  out.residual.head(n_u) -= lambda * direction;
+  out.residual[in] = (p.p - lambda) / c;
+  if (!need_tangent) return;
+  const Eigen::VectorXd grad_h = -direction / k.D;
+  out.tangent.topLeftCorner(n_u, n_u) -= lambda * (k.hessian + h * k.D_hessian + k.D_gradient * grad_h.transpose());
+  out.tangent.col(in).head(n_u) -= direction;
+  out.tangent.row(in).head(n_u) += (p.dp_dh / c) * grad_h.transpose();
+  out.tangent(in, in) = -1 / c;
+}
+
+}  // namespace
+
 void MortarNode::evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const {
   const MortarSlave& s = pair_.slave(slave_);
   const bool with_friction = pair_.mu() > 0;
@@ -354,23 +389,16 @@ void MortarNode::evaluate(const EvaluationState& state, LocalSystem& out, bool n
   if (!closed(state)) return open_rows();
   const Kinematics k = kinematics(pair_, s, state, need_tangent ? 2 : 1, with_friction);
   if (!k.covered) return open_rows();
-  out.residual.head(n_u) -= lambda_n * k.gradient;
-  if (need_tangent) {
-    out.tangent.topLeftCorner(n_u, n_u) -= lambda_n * k.hessian;
-    out.tangent.col(in).head(n_u) -= k.gradient;
-  }
   if (pair_.soft()) {
-    // λ_j = p(h_j) with the mean overclosure h_j = -g̃_j / D_j, scaled like
-    // the open row: r_λ = (p(h_j) - λ_j) / c_j, ∂h_j/∂u = (-∇g̃_j + (g̃_j / D_j) ∇D_j) / D_j.
-    const ContactPressure p = soft_pressure(pair_, decisive_gap(pair_, s, state.u, k.gap, k.D), k.D);
-    out.residual[in] = (p.p - lambda_n) / c;
-    if (need_tangent) {
-      out.tangent.row(in).head(n_u) += (p.dp_dh / (c * k.D)) * (-k.gradient + (k.gap / k.D) * k.D_gradient).transpose();
-      out.tangent(in, in) = -1 / c;
-    }
+    soft_rows(pair_, s, c, state, k, out, need_tangent);
   } else {
+    out.residual.head(n_u) -= lambda_n * k.gradient;
     out.residual[in] = -k.gap;
-    if (need_tangent) out.tangent.row(in).head(n_u) -= k.gradient.transpose();
+    if (need_tangent) {
+      out.tangent.topLeftCorner(n_u, n_u) -= lambda_n * k.hessian;
+      out.tangent.col(in).head(n_u) -= k.gradient;
+      out.tangent.row(in).head(n_u) -= k.gradient.transpose();
+    }
   }
   if (!with_friction) return;
   // Coulomb: the tangential traction λt does the virtual work λt G; its row

@@ -22,10 +22,11 @@
 /// Σ M δy) (coefficients frozen) and the row ũ_j = 0 (stick: |λt + c_j ũ_j|
 /// < μ λn_j) or -(λt - μ λn sgn(λt + c_j ũ_j))/c_j (slip), -λt/c_j when
 /// open; ũ_j is the objective weighted slip increment of the increment
-/// (mortar_node.cpp). With a soft pressure-overclosure law the λ row is
-/// instead r_λ = (p(h_j) - λ_j) / c_j with the mean overclosure h_j =
-/// -g̃_j / D_j (the tangent then includes ∇D_j and is unsymmetric); the node
-/// is in the law wherever p(h_j) > 0, p'(h_j) > 0 or λ_j ≠ 0. The gradient and Hessian are exact (Dual2): they
+/// (mortar_node.cpp). With a soft pressure-overclosure law, λ_j = p(h_j) of
+/// the mean overclosure h_j = -g̃_j / D_j: r_u += λ_j D_j ∇h_j (the nodal
+/// force on the mean gap) and r_λ = (p(h_j) - λ_j) / c_j, the tangent with
+/// ∇D_j and ∇²D_j, unsymmetric; the node is in the law wherever p(h_j) > 0,
+/// p'(h_j) > 0 or λ_j ≠ 0. The gradient and Hessian are exact (Dual2): they
 /// include the variation of the normals, of the projections and of the
 /// segmentation. A node whose faces overlap no master face (or whose
 /// D_j <= 0) is free: λ_j = 0. Theory: docs/theory/mortar.md.
