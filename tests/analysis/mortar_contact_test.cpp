@@ -72,6 +72,8 @@ struct PatchCase {
   double slope;       ///< of the interface; 0: flat, uniaxial pressure; else hydrostatic pressure
   double nu = 0.3;
   bool nlgeom = false;  ///< finite strain: follower pressure, λ the Cauchy contact pressure
+  std::string behavior = "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n";  ///< the interaction's law
+  Dialect dialect = Dialect::Abaqus;  ///< the deck's (CalculiX's EXPONENTIAL is another function)
 };
 
 constexpr double kE = 1000, kP = 10;
@@ -92,7 +94,7 @@ std::string patch_deck(const PatchCase& c) {
   };
   surface("SLAVE", top.side(1));
   surface("MASTER", bottom.side(3));
-  d << "*SURFACE INTERACTION, NAME=I\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n";
+  d << "*SURFACE INTERACTION, NAME=I\n" << c.behavior;
   d << "*CONTACT PAIR, INTERACTION=I, TYPE=SURFACE TO SURFACE\nSLAVE, MASTER\n";
   d << "*MATERIAL, NAME=M\n*ELASTIC\n" << kE << ", " << c.nu << "\n";
   d << "*SOLID SECTION, ELSET=TOP, MATERIAL=M\n*SOLID SECTION, ELSET=BOTTOM, MATERIAL=M\n";
@@ -117,12 +119,16 @@ std::string patch_deck(const PatchCase& c) {
 struct PatchErrors {
   double stress = 0;    ///< max |σ - σ_exact| / p over all integration points
   double pressure = 0;  ///< max |λ_j - p| / p over the slave nodes
+  double largest_gap = 0, smallest_gap = 0;  ///< of the mean gaps g̃_j / D_j of the slave nodes
   int iterations = 0;   ///< Newton iterations of the increment
   int closed = 0, slaves = 0;
 };
 
 PatchErrors run_patch(const PatchCase& c) {
-  const auto run = run_deck_text(patch_deck(c));
+  tether::testing::Run run;
+  run.model = read_deck_string(patch_deck(c), "test.inp", nullptr, c.dialect);
+  StaticAnalysis analysis(run.model, run.recorder, {});
+  run.summary = analysis.run();
   EXPECT_TRUE(run.summary.completed) << run.summary.message;
   PatchErrors e;
   if (!run.summary.completed) return e;
@@ -136,6 +142,8 @@ PatchErrors run_patch(const PatchCase& c) {
     ++e.slaves;
     if (v.status != ContactNodeValues::Status::Open) ++e.closed;
     e.pressure = std::max(e.pressure, std::abs(v.pressure - kP) / kP);
+    e.largest_gap = e.slaves == 1 ? v.gap : std::max(e.largest_gap, v.gap);
+    e.smallest_gap = e.slaves == 1 ? v.gap : std::min(e.smallest_gap, v.gap);
   }
   for (const auto& pass : run.recorder.residuals) e.iterations += static_cast<int>(pass.size()) - 1;
   // The iteration log counts the mortar pair's closed nodes.
@@ -188,6 +196,67 @@ TEST(MortarPatch, TaylorPapadopoulos) {
   }
 }
 
+// Soft pressure-overclosure laws on the weighted gaps: λ_j = p(h_j) with
+// the mean overclosure h_j = -g̃_j / D_j. Under a uniform pressure p the
+// interface closes by the same h everywhere, so g̃_j = -h D_j exactly on
+// non-matching meshes: stresses and λ_j exact to 1e-10 relative, every mean
+// gap -h to 1e-6 h (measured 6e-7: the law rows (p(h) - λ) / c_j converge
+// to the displacement tolerance, λ_j itself to 1e-13), where
+// p(h) = 10. LINEAR K 1e5 (h = 1e-4); ABAQUS's EXPONENTIAL c0 0.01, p0 5
+// (p(h) = p0/(e-1) (h/c0+1)(exp(h/c0+1)-1), h found by bisection); TABULAR
+// through (0, -0.002), (20, 0.002) (h = 0); in the calculix dialect
+// EXPONENTIAL c0 0.01, p0 5 is CalculiX's p = p0 exp(ln(100) h / c0)
+// (h = c0 ln 2 / ln 100). Flat interfaces (the top body
+// sinks by h), also under NLGEOM (follower pressure; D_j the current
+// weight, λ_j the Cauchy pressure); inclined ones with h = 0 only: an overclosure along an
+// inclined normal also shifts the top body sideways, so the end faces of
+// the slave are no longer wholly overlapped and the patch test is not exact
+// there (docs/theory/mortar.md, Limits).
+struct SoftCase {
+  std::string behavior;
+  double overclosure;  ///< h with p(h) = 10
+  Dialect dialect = Dialect::Abaqus;
+};
+
+double exponential_overclosure(double c0, double p0, double p) {
+  double lo = -c0, hi = 10 * c0;
+  for (int k = 0; k < 200; ++k) {
+    const double h = 0.5 * (lo + hi), x = h / c0 + 1;
+    (p0 / (std::exp(1.0) - 1) * x * (std::exp(x) - 1) < p ? lo : hi) = h;
+  }
+  return 0.5 * (lo + hi);
+}
+
+TEST(MortarPatch, SoftLawsGiveTheExactPressureAndOverclosure) {
+  const std::vector<SoftCase> laws{
+      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e5\n", 1e-4},
+      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n0.01, 5\n", exponential_overclosure(0.01, 5, kP)},
+      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR\n0, -0.002\n20, 0.002\n", 0.0},
+      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n0.01, 5\n", 0.01 * std::log(2.0) / std::log(100.0),
+       Dialect::Calculix}};
+  for (const SoftCase& law : laws)
+    for (PatchCase c : {PatchCase{3, 7, false, 0.0}, PatchCase{7, 3, false, 0.0}, PatchCase{2, 5, true, 0.0},
+                        PatchCase{7, 3, false, 0.3}, PatchCase{4, 3, true, -0.3}, PatchCase{3, 7, false, 0.0, 0.3, true},
+                        PatchCase{2, 5, true, 0.0, 0.3, true}}) {
+      if (c.slope != 0 && law.overclosure != 0) continue;
+      c.behavior = law.behavior;
+      c.dialect = law.dialect;
+      const PatchErrors e = run_patch(c);
+      const double scale = std::max(std::abs(law.overclosure), 1e-4);
+      std::printf("[ mortar soft patch ] %s%s%s%s, slave %d on master %d, slope %.2f: stress error %.2e, pressure error "
+                  "%.2e, mean gaps %.6e...%.6e (exact %.6e), %d Newton iterations\n",
+                  law.behavior.substr(40, law.behavior.find('\n') - 40).c_str(),
+                  c.dialect == Dialect::Calculix ? " (calculix)" : "", c.quadratic ? " CPE8" : " CPE4",
+                  c.nlgeom ? " NLGEOM" : "", c.n_slave, c.n_master,
+                  c.slope, e.stress, e.pressure, e.smallest_gap, e.largest_gap, -law.overclosure, e.iterations);
+      EXPECT_LT(e.stress, 1e-10) << law.behavior;
+      EXPECT_LT(e.pressure, 1e-10) << law.behavior;
+      EXPECT_NEAR(e.smallest_gap, -law.overclosure, 1e-6 * scale) << law.behavior;
+      EXPECT_NEAR(e.largest_gap, -law.overclosure, 1e-6 * scale) << law.behavior;
+      EXPECT_EQ(e.closed, e.slaves) << law.behavior;
+    }
+}
+
 }  // namespace
 
 namespace {
@@ -214,8 +283,6 @@ TEST(MortarPairInput, UnsupportedLawsAndSurfacesAreRefusedWithAReason) {
   const std::string friction = model_error_of(edited_patch(hard, hard + "*FRICTION\n0.3, 100\n"));
   EXPECT_NE(friction.find("stick slope or ELASTIC SLIP"), std::string::npos) << friction;
   EXPECT_NE(friction.find("test.inp:"), std::string::npos) << friction;
-  const std::string soft = model_error_of(edited_patch(hard, "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1e5\n"));
-  EXPECT_NE(soft.find("soft PRESSURE-OVERCLOSURE"), std::string::npos) << soft;
   const std::string penalty =
       model_error_of(edited_patch(hard, "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD, ENFORCEMENT=PENALTY, "
                                         "PENALTY=1e5\n"));

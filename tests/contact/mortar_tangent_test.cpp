@@ -24,7 +24,21 @@ struct MortarCase {
   int n_slave_faces;
   int n_master_faces;
   double mu = 0;  ///< Coulomb friction (exact stick)
+  PressureOverclosure law{};  ///< HARD, or a soft law of the mean overclosure
 };
+
+/// Soft laws whose pressure and slope are positive over the gaps of the
+/// fixture (about -0.07...+0.05): λ_j = p(-g̃_j / D_j) is then not trivial.
+PressureOverclosure soft_law(PressureOverclosure::Law kind, Dialect meaning = Dialect::Abaqus) {
+  PressureOverclosure law;
+  law.law = kind;
+  law.meaning = meaning;
+  law.stiffness = 1e5;  // LINEAR, starting at the clearance c0 = 0.2 (p = K (h + c0))
+  law.c0 = 0.2;         // EXPONENTIAL: ABAQUS cut-off clearance / CalculiX 1 % clearance
+  law.p0 = 1e4;
+  law.table = {{0.0, -0.3}, {5e3, -0.05}, {2e4, 0.0}, {6e4, 0.1}};  // TABULAR (pressure, overclosure)
+  return law;
+}
 
 /// Slave: the bottom of a body above y = 0 over x in [0.1, 1.9] (faces run
 /// left to right); master: the top of a body below over x in [-0.2, 2.2]
@@ -60,6 +74,7 @@ struct MortarFixture {
     setup.search_radius = 1.0;
     setup.complementarity_stiffness = 100;
     setup.mu = c.mu;
+    setup.law = c.law;
     n_disp = 2 * static_cast<int>(reference.size());
     pair = std::make_unique<MortarPair>(setup, reference, n_disp);
     (void)rng;
@@ -129,6 +144,17 @@ INSTANTIATE_TEST_SUITE_P(Faces, MortarTangent,
                                            MortarCase{true, false, 2, 5}, MortarCase{false, true, 4, 3},
                                            MortarCase{true, true, 3, 2}, MortarCase{false, false, 3, 7, 0.3},
                                            MortarCase{false, false, 5, 2, 0.3}, MortarCase{true, true, 3, 4, 0.3}));
+
+// Soft pressure-overclosure laws (λ_j = p(h_j), h_j = -g̃_j / D_j: the row's
+// derivative includes that of D_j), frictionless and with friction.
+INSTANTIATE_TEST_SUITE_P(
+    SoftLaws, MortarTangent,
+    ::testing::Values(MortarCase{false, false, 3, 7, 0, soft_law(PressureOverclosure::Law::Linear)},
+                      MortarCase{true, false, 2, 5, 0, soft_law(PressureOverclosure::Law::Exponential)},
+                      MortarCase{false, true, 4, 3, 0, soft_law(PressureOverclosure::Law::Exponential, Dialect::Calculix)},
+                      MortarCase{true, true, 3, 2, 0, soft_law(PressureOverclosure::Law::Tabular)},
+                      MortarCase{false, false, 5, 2, 0.3, soft_law(PressureOverclosure::Law::Exponential)},
+                      MortarCase{true, true, 3, 4, 0.3, soft_law(PressureOverclosure::Law::Linear)}));
 
 TEST(MortarTangent, OpenNodeHasTheTrivialRow) {
   std::mt19937 rng(3);

@@ -3,7 +3,8 @@
 
 Usage: run_example.py EXAMPLE TETHER_EXE SOURCE_DIR WORK_DIR USER_CONSTRAINT_MODULE
 
-EXAMPLE is rigid_link, formula_constraint, user_constraint, periodic_rve, hertz or gmsh_lame (meshed
+EXAMPLE is rigid_link, formula_constraint, user_constraint, periodic_rve, hertz, hertz_mortar
+(the hertz deck run with its pair made TYPE=SURFACE TO SURFACE) or gmsh_lame (meshed
 here by gmsh from its .geo; exit 77 when gmsh is missing). The deck is copied
 into WORK_DIR (the user constraint's LIBRARY= is pointed at the module the build
 made), run with `tether run -q`, and its .dat is read with tools/tethertools/dat.py.
@@ -145,6 +146,22 @@ def main(argv):
               f"(u(a) = {exact(a):.6e}, u(b) = {exact(b):.6e})")
         if worst > 1e-4:
             fail("radial displacement differs from Lame by more than 1e-4")
+    elif example == "hertz_mortar":
+        with open(os.path.join(folder, "hertz.inp")) as f:
+            text = f.read().replace("TYPE=NODE TO SURFACE", "TYPE=SURFACE TO SURFACE", 1)
+        os.makedirs(work, exist_ok=True)
+        deck = os.path.join(work, "hertz_mortar.inp")
+        with open(deck, "w") as f:
+            f.write(text)
+        blocks = run(tether, deck, work)
+        stress = [b for b in blocks if b["title"].startswith("contact stress")]
+        if not stress:
+            fail("no contact stress block")
+        peak = max(r[1] for r in stress[-1]["rows"])
+        p0 = 2644.96
+        print(f"hertz_mortar: peak contact pressure {peak:.1f} MPa (exact p0 = {p0}), error {100 * (peak / p0 - 1):+.2f} %")
+        if abs(peak / p0 - 1) > 0.005:
+            fail("mortar peak pressure more than 0.5 % from Hertz")
     else:
         fail(f"unknown example {example}")
     return 0

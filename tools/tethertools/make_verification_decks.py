@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Regenerates the decks of the verification suite in tests/verification/decks/.
 
-Every deck is written by tools/make_lame_deck.py or tools/make_cantilever_deck.py
+Every deck is written by tools/make_lame_deck.py, make_cantilever_deck.py or make_cgs4_deck.py
 with the arguments listed below; the tests in tests/verification/ read them.
 Usage: make_verification_decks.py [OUT_DIR]   (default: tests/verification/decks)
 """
@@ -46,6 +46,11 @@ DECKS = {
                                   "--print-all"]),
     "ccx_cantilever_cpe8_20x2": ("make_cantilever_deck.py",
                                  ["--type", "CPE8", "--nx", "20", "--ny", "2", "--print-all"]),
+    # NAFEMS CGS-4: a block pushed up a slope (tan alpha 0.1, mu 0.3) on non-matching meshes; G = 40 as
+    # modelled elsewhere, G = 0.4 the rigid limit (the formula's assumption)
+    "cgs4_mortar_g40": ("make_cgs4_deck.py", ["--type", "SURFACE TO SURFACE", "--load", "40"]),
+    "cgs4_mortar_g0.4": ("make_cgs4_deck.py", ["--type", "SURFACE TO SURFACE", "--load", "0.4"]),
+    "cgs4_nts_g40": ("make_cgs4_deck.py", ["--type", "NODE TO SURFACE", "--load", "40"]),
 }
 
 

@@ -20,10 +20,8 @@ std::vector<int> face_node_indices(const Model& model, const ElementFace& f) {
 /// What mortar contact does not model in the pair's interaction: empty when all is supported.
 std::string unsupported_law(const SurfaceInteraction& interaction) {
   const PressureOverclosure& law = interaction.behavior;
-  if (law.law != PressureOverclosure::Law::Hard)
-    return "a soft PRESSURE-OVERCLOSURE law (mortar contact is HARD by exact multipliers so far; "
-           "TYPE=NODE TO SURFACE models the soft laws)";
-  if (law.enforcement.method != Enforcement::Method::Lagrange || law.enforcement.epsilon > 0)
+  if (law.law == PressureOverclosure::Law::Hard &&
+      (law.enforcement.method != Enforcement::Method::Lagrange || law.enforcement.epsilon > 0))
     return "a penalty, augmented or regularised HARD law (mortar contact enforces HARD exactly by "
            "multipliers; TYPE=NODE TO SURFACE models those)";
   if (interaction.friction && interaction.friction->mu > 0 &&
@@ -93,6 +91,7 @@ std::unique_ptr<MortarPair> make_mortar_pair(const Model& model, const ContactPa
   setup.search_radius = 2 * longest + data.adjust;
   setup.complementarity_stiffness = stiffness > 0 ? stiffness : 1.0;
   setup.mu = interaction->friction ? interaction->friction->mu : 0.0;
+  setup.law = interaction->behavior;
   const int first = dofs.add_multipliers(MortarPair::multipliers_per_slave(setup.mu) * static_cast<int>(slave_nodes.size()),
                                          "mortar contact pair " + data.slave + "-" + data.master);
   return std::make_unique<MortarPair>(std::move(setup), reference, first);

@@ -6,6 +6,7 @@
 
 #include "tether/contact/mortar_pair.hpp"
 #include "tether/contact/mortar_segmentation.hpp"
+#include "tether/contact/pressure_overclosure.hpp"
 #include "tether/dofs/dof_map.hpp"
 
 namespace tether {
@@ -129,6 +130,8 @@ struct Kinematics {
   double gap = 0, D = 0;
   bool covered = false;
   Eigen::VectorXd gradient;
+  Eigen::VectorXd D_gradient;  ///< ∂D_j/∂u (order >= 1): the soft laws' mean overclosure -g̃_j / D_j
+  Eigen::MatrixXd D_hessian;   ///< ∂²D_j/∂u² (order 2, soft laws only)
   Eigen::MatrixXd hessian;
   double slip = 0;
   Eigen::VectorXd slip_gradient, G;
@@ -161,10 +164,15 @@ void add_term(Kinematics& out, const Term<Dual2>& t, const Term<double>* old, bo
     const Dual2 gap = dot(t.normal, t.v);
     out.gap += gap.value(), out.D += t.D.value();
     scatter(out.gradient, gap, to);
-    if (out.hessian.size() > 0 && gap.second())
+    scatter(out.D_gradient, t.D, to);
+    const auto add_hessian = [&to](Eigen::MatrixXd& h, const Dual2& value) {
+      if (h.size() == 0 || !value.second()) return;
       for (std::size_t a = 0; a < to.size(); ++a)
         for (std::size_t b = 0; b < to.size(); ++b)
-          out.hessian(to[a], to[b]) += gap.hessian()(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+          h(to[a], to[b]) += value.hessian()(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+    };
+    add_hessian(out.hessian, gap);
+    add_hessian(out.D_hessian, t.D);
   }
   if (!friction) return;
   const Vec2T<Dual2> tau = tangent_of(t.normal);
@@ -193,6 +201,7 @@ Kinematics kinematics(const MortarPair& pair, const MortarSlave& s, const Evalua
   const auto n_u = static_cast<Eigen::Index>(2 * s.nodes.size());
   if (order >= 1) {
     out.gradient = Eigen::VectorXd::Zero(n_u);
+    out.D_gradient = Eigen::VectorXd::Zero(n_u);
     if (friction) {
       out.slip_gradient = Eigen::VectorXd::Zero(n_u);
       out.G = Eigen::VectorXd::Zero(n_u);
@@ -200,6 +209,7 @@ Kinematics kinematics(const MortarPair& pair, const MortarSlave& s, const Evalua
     }
   }
   if (order >= 2) out.hessian = Eigen::MatrixXd::Zero(n_u, n_u);
+  if (order >= 2 && pair.soft()) out.D_hessian = Eigen::MatrixXd::Zero(n_u, n_u);
   for (const auto& [e, k] : s.faces)
     for (int f : pair.term_faces(e)) {
       const std::vector<int> nodes = term_nodes(pair, e, f);
@@ -248,7 +258,7 @@ Kinematics kinematics(const MortarPair& pair, const MortarSlave& s, const Evalua
 
 std::span<const int> MortarNode::dofs() const { return pair_.slave(slave_).dofs; }
 
-bool MortarNode::symmetric_tangent(bool /*nlgeom*/) const { return !(pair_.mu() > 0); }
+bool MortarNode::symmetric_tangent(bool /*nlgeom*/) const { return !(pair_.mu() > 0) && !pair_.soft(); }
 
 std::string MortarNode::describe() const {
   return pair_.describe() + ", slave node " + std::to_string(pair_.slave(slave_).node);
@@ -264,18 +274,41 @@ MortarNode::Gap MortarNode::gap(const Eigen::VectorXd& u, bool nlgeom) const {
   return {k.gap, k.D, k.covered};
 }
 
+namespace {
+
+/// 1e-12 of the largest coordinate of the node's nodes times D_j [length × area]:
+/// a weighted gap or slip within it is round-off.
+double round_off(const MortarPair& pair, const MortarSlave& s, const Eigen::VectorXd& u, double D) {
+  double largest = 0;
+  for (int n : s.nodes) {
+    const Vec2T<double> p = position(pair, u, n);
+    largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  }
+  return 1e-12 * largest * std::abs(D);
+}
+
+/// A weighted gap within round-off of zero is a touch: surfaces that coincide
+/// in the mesh start closed rather than a few ulps open (or overclosed).
+double decisive_gap(const MortarPair& pair, const MortarSlave& s, const Eigen::VectorXd& u, double gap, double D) {
+  return std::abs(gap) <= round_off(pair, s, u, D) ? 0.0 : gap;
+}
+
+/// The soft law at the mean overclosure h_j = -g̃_j / D_j of a (decisive) weighted gap.
+ContactPressure soft_pressure(const MortarPair& pair, double decisive, double D) {
+  return contact_pressure(pair.setup().law, -decisive / D);
+}
+
+}  // namespace
+
 bool MortarNode::closed(const EvaluationState& state) const {
   const MortarSlave& s = pair_.slave(slave_);
   const Gap g = gap(state.u, state.nlgeom);
   if (!g.covered) return false;
-  // A gap within round-off of zero is a touch: surfaces that coincide in
-  // the mesh start closed rather than a few ulps open.
-  double largest = 0;
-  for (int n : s.nodes) {
-    const Vec2T<double> p = position(pair_, state.u, n);
-    largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+  const double decisive = decisive_gap(pair_, s, state.u, g.gap, g.D);
+  if (pair_.soft()) {  // the law acts wherever it gives a pressure or a slope, and while λ_j is not yet zero
+    const ContactPressure p = soft_pressure(pair_, decisive, g.D);
+    return p.p > 0 || p.dp_dh > 0 || state.u[s.multiplier] != 0;
   }
-  const double decisive = std::abs(g.gap) <= 1e-12 * largest * g.D ? 0.0 : g.gap;
   return state.u[s.multiplier] - row_stiffness() * decisive >= 0;
 }
 
@@ -284,22 +317,12 @@ namespace {
 /// Whether a closed node sticks: |λt + c ũ| < μ λn, or touches at rest
 /// (no normal force and no trial force: the limit from the stick side, so
 /// that a node touching with no friction history does not slide freely in
-/// the first iteration). `round_off` [length × area]: a slip within it is
+/// the first iteration). `tolerance` [length × area]: a slip within it is
 /// no slip for this decision (the slip of a node at rest is a few ulps).
-bool sticks(double lambda_t, double lambda_n, double slip, double mu, double c, double round_off) {
-  const double decisive = std::abs(slip) <= round_off ? 0.0 : slip;
+bool sticks(double lambda_t, double lambda_n, double slip, double mu, double c, double tolerance) {
+  const double decisive = std::abs(slip) <= tolerance ? 0.0 : slip;
   const double trial = lambda_t + c * decisive, bound = mu * std::max(lambda_n, 0.0);
   return std::abs(trial) < bound || (bound == 0 && trial == 0);
-}
-
-/// 1e-12 of the largest coordinate of the node's nodes times D_j [length × area].
-double slip_round_off(const MortarPair& pair, const MortarSlave& s, const Eigen::VectorXd& u, double D) {
-  double largest = 0;
-  for (int n : s.nodes) {
-    const Vec2T<double> p = position(pair, u, n);
-    largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
-  }
-  return 1e-12 * largest * std::abs(D);
 }
 
 }  // namespace
@@ -314,10 +337,39 @@ MortarNode::Friction MortarNode::friction(const EvaluationState& state) const {
   f.slip = k.slip;
   const double lambda_t = state.u[s.tangent_multiplier];
   f.stick = sticks(lambda_t, state.u[s.multiplier], k.slip, pair_.mu(), row_stiffness(),
-                   slip_round_off(pair_, s, state.u, k.D));
+                   round_off(pair_, s, state.u, k.D));
   if (!f.stick) f.direction = lambda_t + row_stiffness() * k.slip > 0 ? 1 : -1;
   return f;
 }
+
+namespace {
+
+/// The rows of a node under a soft law (closed, covered; c = c_j).
+void soft_rows(const MortarPair& pair, const MortarSlave& s, double c, const EvaluationState& state,
+               const Kinematics& k, LocalSystem& out, bool need_tangent) {
+  // The law λ_j = p(h_j) of the mean overclosure h_j = -g̃_j / D_j, and the
+  // virtual work of the nodal force λ_j D_j on the mean gap:
+  //   r_u += λ_j D_j ∇h_j = -λ_j (∇g̃_j + h_j ∇D_j),  r_λ = (p(h_j) - λ_j) / c_j,
+  // so that a uniform overclosure does no work through the change of the
+  // measure (NLGEOM) or of the overlap.
+  const auto n_u = static_cast<Eigen::Index>(2 * s.nodes.size());
+  const Eigen::Index in = n_u;
+  const double lambda = state.u[s.multiplier];
+  const double decisive = decisive_gap(pair, s, state.u, k.gap, k.D);
+  const double h = -decisive / k.D;
+  const ContactPressure p = soft_pressure(pair, decisive, k.D);
+  const Eigen::VectorXd direction = k.gradient + h * k.D_gradient;  // = -D_j ∇h_j
+  out.residual.head(n_u) -= lambda * direction;
+  out.residual[in] = (p.p - lambda) / c;
+  if (!need_tangent) return;
+  const Eigen::VectorXd grad_h = -direction / k.D;
+  out.tangent.topLeftCorner(n_u, n_u) -= lambda * (k.hessian + h * k.D_hessian + k.D_gradient * grad_h.transpose());
+  out.tangent.col(in).head(n_u) -= direction;
+  out.tangent.row(in).head(n_u) += (p.dp_dh / c) * grad_h.transpose();
+  out.tangent(in, in) = -1 / c;
+}
+
+}  // namespace
 
 void MortarNode::evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const {
   const MortarSlave& s = pair_.slave(slave_);
@@ -337,12 +389,16 @@ void MortarNode::evaluate(const EvaluationState& state, LocalSystem& out, bool n
   if (!closed(state)) return open_rows();
   const Kinematics k = kinematics(pair_, s, state, need_tangent ? 2 : 1, with_friction);
   if (!k.covered) return open_rows();
-  out.residual.head(n_u) -= lambda_n * k.gradient;
-  out.residual[in] = -k.gap;
-  if (need_tangent) {
-    out.tangent.topLeftCorner(n_u, n_u) -= lambda_n * k.hessian;
-    out.tangent.col(in).head(n_u) -= k.gradient;
-    out.tangent.row(in).head(n_u) -= k.gradient.transpose();
+  if (pair_.soft()) {
+    soft_rows(pair_, s, c, state, k, out, need_tangent);
+  } else {
+    out.residual.head(n_u) -= lambda_n * k.gradient;
+    out.residual[in] = -k.gap;
+    if (need_tangent) {
+      out.tangent.topLeftCorner(n_u, n_u) -= lambda_n * k.hessian;
+      out.tangent.col(in).head(n_u) -= k.gradient;
+      out.tangent.row(in).head(n_u) -= k.gradient.transpose();
+    }
   }
   if (!with_friction) return;
   // Coulomb: the tangential traction λt does the virtual work λt G; its row
@@ -354,7 +410,7 @@ void MortarNode::evaluate(const EvaluationState& state, LocalSystem& out, bool n
   }
   const double mu = pair_.mu();
   // The pair's guard may hold a node in stick (MortarPair::update_connectivity).
-  if (s.held_stick || sticks(lambda_t, lambda_n, k.slip, mu, c, slip_round_off(pair_, s, state.u, k.D))) {
+  if (s.held_stick || sticks(lambda_t, lambda_n, k.slip, mu, c, round_off(pair_, s, state.u, k.D))) {
     out.residual[it] = k.slip;
     if (need_tangent) out.tangent.row(it).head(n_u) += k.slip_gradient.transpose();
     return;

@@ -2,7 +2,7 @@
 /// \file The mortar contact element of one slave node j: its weighted gap
 /// g̃_j and the normal multiplier λ_j (the dual nodal contact pressure, >= 0
 /// in compression), with the semi-smooth Newton complementarity function of
-/// HARD contact and the complete tangent.
+/// HARD contact (or a soft law's row) and the complete tangent.
 ///
 /// Local unknowns: [the real nodes g̃_j depends on, x and y each
 /// (MortarSlave::nodes), λ_j (= λn_j), with friction λt_j]. With the nodal normal n_j (averaged, unit)
@@ -22,7 +22,11 @@
 /// Σ M δy) (coefficients frozen) and the row ũ_j = 0 (stick: |λt + c_j ũ_j|
 /// < μ λn_j) or -(λt - μ λn sgn(λt + c_j ũ_j))/c_j (slip), -λt/c_j when
 /// open; ũ_j is the objective weighted slip increment of the increment
-/// (mortar_node.cpp). The gradient and Hessian are exact (Dual2): they
+/// (mortar_node.cpp). With a soft pressure-overclosure law, λ_j = p(h_j) of
+/// the mean overclosure h_j = -g̃_j / D_j: r_u += λ_j D_j ∇h_j (the nodal
+/// force on the mean gap) and r_λ = (p(h_j) - λ_j) / c_j, the tangent with
+/// ∇D_j and ∇²D_j, unsymmetric; the node is in the law wherever p(h_j) > 0,
+/// p'(h_j) > 0 or λ_j ≠ 0. The gradient and Hessian are exact (Dual2): they
 /// include the variation of the normals, of the projections and of the
 /// segmentation. A node whose faces overlap no master face (or whose
 /// D_j <= 0) is free: λ_j = 0. Theory: docs/theory/mortar.md.
@@ -40,8 +44,9 @@ class MortarNode final : public Contribution {
   [[nodiscard]] std::span<const int> dofs() const override;
   void evaluate(const EvaluationState& state, LocalSystem& out, bool need_tangent) const override;
   [[nodiscard]] std::string describe() const override;
-  /// Symmetric without friction: the closed rows derive from the potential
-  /// λ_j g̃_j. Coulomb friction makes it unsymmetric.
+  /// Symmetric for frictionless HARD contact: the closed rows derive from
+  /// the potential λ_j g̃_j. Coulomb friction and the soft laws' rows make it
+  /// unsymmetric.
   [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override;
   [[nodiscard]] bool linear_in_u(bool /*nlgeom*/) const override { return false; }
 

@@ -10,8 +10,8 @@
 /// change accordingly. One normal multiplier per slave node (the dual nodal
 /// contact pressure) is reserved once and never renumbered.
 ///
-/// Scope: HARD by exact multipliers, frictionless or Coulomb friction with
-/// exact stick; linear and quadratic faces; finite sliding and finite
+/// Scope: HARD by exact multipliers or a soft pressure-overclosure law,
+/// frictionless or Coulomb friction with exact stick; linear and quadratic faces; finite sliding and finite
 /// strain. Theory: docs/theory/mortar.md.
 
 #include <Eigen/Core>
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
+#include "tether/model/contact_data.hpp"
 #include "tether/model/results.hpp"
 
 namespace tether {
@@ -43,6 +44,10 @@ struct MortarPairSetup {
   /// Coulomb friction coefficient (0: frictionless); exact stick by a
   /// tangential multiplier per slave node.
   double mu = 0;
+  /// Pressure-overclosure law: HARD (exact, by the multipliers) or a soft
+  /// law p(h) of the mean overclosure h_j = -g̃_j / D_j (the multiplier then
+  /// carries p(h_j); mortar_node.hpp). Its enforcement is not used.
+  PressureOverclosure law;
   /// c of min(λ, c g̃): a stiffness E t of the bodies [force/length]; each
   /// node's row uses c / A_j² with A_j its reference area, so that the
   /// decision compares a pressure with E × (a mean gap / a length). Decides
@@ -109,13 +114,17 @@ class MortarPair final : public Contribution {
   /// Commits the overlaps (friction: the slip is measured from them) and
   /// accumulates slip and dissipation of the slipping nodes.
   void commit(const EvaluationState& state) override;
-  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return !(mu() > 0); }
+  /// Symmetric for frictionless HARD contact only (friction and the soft
+  /// laws' rows make the nodes' tangents unsymmetric).
+  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return !(mu() > 0) && !soft(); }
   /// Restart: per slave node the total slip and dissipation, per slave face
   /// the master faces overlapped at the last commit, and whether the pair
   /// has searched. Loading rebuilds the nodes' dof lists.
   void save_state(std::vector<double>& out) const override;
   void load_state(std::span<const double>& in) override;
   [[nodiscard]] double mu() const { return setup_.mu; }
+  /// Whether the pair has a soft pressure-overclosure law (not HARD).
+  [[nodiscard]] bool soft() const { return setup_.law.law != PressureOverclosure::Law::Hard; }
   [[nodiscard]] bool linear_in_u(bool /*nlgeom*/) const override { return false; }
 
   /// The per-slave-node contributions (to be assembled after the pair).

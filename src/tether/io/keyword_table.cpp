@@ -415,7 +415,8 @@ std::vector<KeywordSpec> build_table() {
         choice("TYPE", "NODE TO SURFACE",
                {"NODE TO SURFACE", "SURFACE TO SURFACE", "MORTAR", "LINMORTAR", "PGMORTAR", "PGLINMORTAR"},
                "NODE TO SURFACE; SURFACE TO SURFACE or MORTAR (CalculiX): mortar contact with dual multipliers "
-               "(slave: element faces; HARD by multipliers, frictionless or Coulomb friction with exact stick). "
+               "(slave: element faces; HARD by multipliers or a soft PRESSURE-OVERCLOSURE law of the mean "
+               "overclosure -g~_j / D_j, frictionless or Coulomb friction with exact stick). "
                "CalculiX's LINMORTAR, PGMORTAR and PGLINMORTAR are refused."),
         flag("SMALL SLIDING", "Keep the pairing found at the start (no re-pairing while sliding). Mortar: "
                               "warned about, the segmentation is updated at every iteration all the same."),
