@@ -107,7 +107,7 @@ bool Assembler::relocate() {
     relocated_dofs_[slot].assign(dofs.begin(), dofs.end());
   }
   ++relocations_;
-  held_ = false;  // the nonlinear contributions scatter elsewhere now
+  nonlinear_moved_ = true;  // they scatter elsewhere now: hold_linear() adds those entries
   ++revision_;
   return true;
 }
@@ -345,10 +345,12 @@ bool Assembler::linear_held(const EvaluationState& state) const {
   return held_ && (!keyed_on_dt_ || state.dt == held_dt_);
 }
 
-void Assembler::hold_linear(const EvaluationState& state) {
+void Assembler::hold_linear(const EvaluationState* state) {
   const auto n_contrib = static_cast<int>(contributions_.size());
-  nonlinear_entry_.assign(static_cast<std::size_t>(tangent_.nonZeros()), false);
-  nonlinear_entries_.clear();
+  if (state) {  // after a full assembly: the nonlinear entries as they are now
+    nonlinear_entry_.assign(static_cast<std::size_t>(tangent_.nonZeros()), false);
+    nonlinear_entries_.clear();
+  }  // else relocated: the entries they scattered into before stay nonlinear (they hold their values)
   for (int c = 0; c < n_contrib; ++c)
     if (!linear_[static_cast<std::size_t>(c)])
       for_each_entry(c, [&](int p, Eigen::Index, double) {
@@ -362,8 +364,8 @@ void Assembler::hold_linear(const EvaluationState& state) {
         for_each_entry(c, [&](int p, Eigen::Index, double) {
           if (nonlinear_entry_[static_cast<std::size_t>(p)]) mixed_[static_cast<std::size_t>(c)] = 1;
         });
-  held_ = true;
-  held_dt_ = state.dt;
+  if (state) held_ = true, held_dt_ = state->dt;
+  nonlinear_moved_ = false;
 }
 
 void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent) {
@@ -373,6 +375,7 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   const bool held = with_tangent && linear_held(state);
   // The values change unless every contribution is held (also when an assembly fails).
   if (with_tangent && (!held || any_nonlinear_)) ++revision_;
+  if (held && nonlinear_moved_) hold_linear(nullptr);
   if (with_tangent) {
     if (held)
       for (int p : nonlinear_entries_) tangent_.valuePtr()[p] = 0.0;
@@ -430,7 +433,7 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     add(c, local);
     if (failure) std::rethrow_exception(failure);
   }
-  if (with_tangent && !held && !linear_.empty()) hold_linear(state), ++reuse_statistics_.full;
+  if (with_tangent && !held && !linear_.empty()) hold_linear(&state), ++reuse_statistics_.full;
   if (held) ++reuse_statistics_.reused;
   timing_.evaluate = seconds_since(t0);
 }

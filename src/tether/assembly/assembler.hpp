@@ -76,12 +76,12 @@ class Assembler {
   /// (inertia, M / (beta dt^2) + ...), so they are kept only at the same dt.
   /// From then on an assembly with the tangent evaluates the linear
   /// contributions' tangents only when they are not held: the first time,
-  /// after a pattern change (rebuild or relocation), after an assembly that
-  /// failed, and at another dt when keyed. Otherwise the linear contributions
-  /// are evaluated for the residual only, and the entries that a nonlinear
-  /// contribution scatters into are zeroed and assembled again from every
-  /// contribution touching them, in the usual order: the tangent is bit for
-  /// bit that of a full assembly. Throws std::invalid_argument when the size
+  /// after a pattern rebuild, after a full assembly that failed, and at
+  /// another dt when keyed. Otherwise the linear contributions are evaluated
+  /// for the residual only, and the entries that a nonlinear contribution
+  /// scatters (or, before a relocation, scattered) into are zeroed and
+  /// assembled again from every contribution touching them, in the usual
+  /// order: the tangent is bit for bit that of a full assembly. Throws std::invalid_argument when the size
   /// of `linear` is not the number of contributions.
   void set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt);
   /// Changes whenever an assembly may have changed the tangent's values or
@@ -129,9 +129,12 @@ class Assembler {
   /// True when an assembly with the tangent at `state` may keep the linear
   /// contributions' tangents (set_linear()).
   [[nodiscard]] bool linear_held(const EvaluationState& state) const;
-  /// After a full assembly: the entries nonlinear contributions scatter into
-  /// and the linear contributions that touch one of them.
-  void hold_linear(const EvaluationState& state);
+  /// After a full assembly at `state`: the entries nonlinear contributions
+  /// scatter into and the linear contributions that touch one of them. With
+  /// null, after a relocation: adds the entries the relocated contributions
+  /// scatter into now (those they left keep being assembled anew) and finds
+  /// the linear contributions touching them again.
+  void hold_linear(const EvaluationState* state);
 
   std::vector<Contribution*> contributions_;
   EquationMap equations_;
@@ -176,6 +179,7 @@ class Assembler {
   std::vector<std::uint8_t> linear_;    ///< per contribution; empty: nothing held
   bool keyed_on_dt_ = false;
   bool held_ = false;                   ///< the values hold the linear tangents of the last full assembly
+  bool nonlinear_moved_ = false;        ///< a relocation since hold_linear()
   double held_dt_ = 0;                  ///< the dt they were assembled at
   std::vector<int> nonlinear_entries_;  ///< value indices nonlinear contributions scatter into
   std::vector<std::uint8_t> mixed_;     ///< per contribution: linear and touching one of those entries
