@@ -103,6 +103,27 @@ TEST(BulkReuse, FrictionalContactGivesTheFreshAnswer) {
   expect_same_as_fresh(block_on_foundation(0.5, "*FRICTION\n0.3\n", ", SMOOTH=0.2", 0.05));
 }
 
+TEST(BulkReuse, DynamicContactAtChangingIncrementsGivesTheFreshAnswer) {
+  // The block pressed onto the foundation and slid in two *DYNAMIC steps
+  // (HHT, DIRECT) whose increments change: within an increment size only the
+  // contact equations change (the condensed solver keeps the bulk on the
+  // assembler's word); a new size must factorize the bulk again.
+  std::string deck = block_on_foundation(0.5, "", ", SMOOTH=0.2", 0.05);
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = deck.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    deck.replace(at, from.size(), to);
+  };
+  replace("*ELASTIC\n1000, 0.3\n", "*ELASTIC\n1000, 0.3\n*DENSITY\n0.01\n");
+  replace("*STEP\n*STATIC\n0.5, 1\n", "*STEP, INC=100, AMPLITUDE=RAMP\n*DYNAMIC, ALPHA=-0.05, DIRECT\n0.25, 0.875\n");
+  replace("*STEP, INC=100\n*STATIC, DIRECT\n0.125, 1\n", "*STEP, INC=100, AMPLITUDE=RAMP\n*DYNAMIC, ALPHA=-0.05, DIRECT\n0.125, 0.5\n");
+  const DeckRun held = expect_same_as_fresh(deck);
+  const SolveTiming& t = held.summary.timing;
+  EXPECT_EQ(held.summary.increments, 4 + 4);
+  EXPECT_EQ(t.full_tangents, 3);  // dt 0.25, 0.125 (the remainder) and 0.125 in the second step
+  EXPECT_EQ(t.sparse_factorizations, 3);
+}
+
 TEST(BulkReuse, LinearStaticStepFactorizesOnce) {
   // A linear elastic step in four increments: one factorization, reused by
   // the other three increments.

@@ -423,3 +423,36 @@ TEST(Assembler, HeldTangentFollowsARelocatedNonlinearContribution) {
   EXPECT_EQ(held.linear_reuse().full, 1);  // the relocation only added the entries it moved to
   EXPECT_EQ(held.linear_reuse().reused, 3);
 }
+
+TEST(Assembler, OuterRevisionStaysWhileOnlyTheReservedBlockChanges) {
+  // Nonlinear contributions inside the reserved block (condensed contact):
+  // held assemblies leave the entries outside it as they are, and say so;
+  // one nonlinear contribution outside the block, a new dt (keyed) or a
+  // rebuild changes them.
+  Grid grid;
+  CubicBlock inside({2 * 22, 2 * 22 + 1, 2 * 23}, 0.8), outside({2 * 7, 2 * 7 + 1}, 0.4);
+  std::vector<Contribution*> list;
+  for (auto& q : grid.quads) list.push_back(&q);
+  list.push_back(&inside);
+  // Equations of dofs 44..47 (nodes 22, 23): the two prescribed dofs come first.
+  const std::vector<int> block{42, 43, 44, 45};
+  Assembler assembler(list, Grid::equations(), block);
+  assembler.set_linear(linear_flags(list), true);
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(Grid::n, 0.0, 1.0), r;
+  assembler.assemble(EvaluationState{u, u, 0, 0, 0.1}, r, true);
+  const std::uint64_t outer = assembler.outer_revision(), all = assembler.tangent_revision();
+  u *= 2;
+  assembler.assemble(EvaluationState{u, u, 0, 0, 0.1}, r, true);
+  EXPECT_EQ(assembler.outer_revision(), outer);
+  EXPECT_NE(assembler.tangent_revision(), all);
+  assembler.assemble(EvaluationState{u, u, 0, 0, 0.2}, r, true);  // another increment: all assembled
+  EXPECT_NE(assembler.outer_revision(), outer);
+
+  list.push_back(&outside);
+  Assembler spread(list, Grid::equations(), block);
+  spread.set_linear(linear_flags(list), false);
+  spread.assemble(EvaluationState{u, u}, r, true);
+  const std::uint64_t before = spread.outer_revision();
+  spread.assemble(EvaluationState{u, u}, r, true);
+  EXPECT_NE(spread.outer_revision(), before);
+}

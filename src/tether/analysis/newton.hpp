@@ -65,6 +65,10 @@ class NewtonProblem {
   /// matrix (Assembler::tangent_revision), whose factorization Newton then
   /// reuses; 0: unknown, factorize at every iteration.
   [[nodiscard]] virtual std::uint64_t tangent_revision() const { return 0; }
+  /// Likewise for the tangent's entries outside the reserved (contact) block
+  /// (Assembler::outer_revision): equal non-zero values between two
+  /// factorizations let a condensing solver skip comparing them.
+  [[nodiscard]] virtual std::uint64_t outer_revision() const { return 0; }
 };
 
 /// How an attempt ended.
@@ -101,6 +105,7 @@ class NewtonSolver {
   bool analysed_ = false;
   /// The tangent revision the solver holds a factorization of (0: none known).
   std::uint64_t factorized_revision_ = 0;
+  std::uint64_t factorized_outer_revision_ = 0;  ///< likewise for outer_revision()
   SolveTiming timing_;
 };
 

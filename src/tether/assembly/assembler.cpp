@@ -129,7 +129,7 @@ void Assembler::build_pattern() {
     throw std::invalid_argument("Assembler: a reserved equation is outside the system");
   ++pattern_builds_;
   held_ = false;
-  ++revision_;
+  ++revision_, ++outer_revision_;
   relocated_slot_.assign(static_cast<std::size_t>(n_contrib), -1);
   relocated_.clear();
   relocated_dofs_.clear();
@@ -338,7 +338,7 @@ void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
   keyed_on_dt_ = keyed_on_dt;
   any_nonlinear_ = std::find(linear_.begin(), linear_.end(), std::uint8_t{0}) != linear_.end();
   held_ = false;
-  ++revision_;
+  ++revision_, ++outer_revision_;
 }
 
 bool Assembler::linear_held(const EvaluationState& state) const {
@@ -350,7 +350,15 @@ void Assembler::hold_linear(const EvaluationState* state) {
   if (state) {  // after a full assembly: the nonlinear entries as they are now
     nonlinear_entry_.assign(static_cast<std::size_t>(tangent_.nonZeros()), false);
     nonlinear_entries_.clear();
+    nonlinear_in_block_ = true;
   }  // else relocated: the entries they scattered into before stay nonlinear (they hold their values)
+  std::vector<int> eqs;
+  for (int c = 0; c < n_contrib && nonlinear_in_block_; ++c) {
+    if (linear_[static_cast<std::size_t>(c)]) continue;
+    equations_of(*contributions_[static_cast<std::size_t>(c)], eqs);
+    for (int e : eqs)
+      if (!std::binary_search(reserved_block_.begin(), reserved_block_.end(), e)) nonlinear_in_block_ = false;
+  }
   for (int c = 0; c < n_contrib; ++c)
     if (!linear_[static_cast<std::size_t>(c)])
       for_each_entry(c, [&](int p, Eigen::Index, double) {
@@ -373,9 +381,11 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   residual.setZero(equations_.n_dofs());
   // Held: only the entries of nonlinear contributions are assembled anew.
   const bool held = with_tangent && linear_held(state);
-  // The values change unless every contribution is held (also when an assembly fails).
-  if (with_tangent && (!held || any_nonlinear_)) ++revision_;
+  // The values change unless every contribution is held (also when an assembly
+  // fails); those outside the reserved block unless the nonlinear ones lie inside it.
   if (held && nonlinear_moved_) hold_linear(nullptr);
+  if (with_tangent && (!held || any_nonlinear_)) ++revision_;
+  if (with_tangent && (!held || !nonlinear_in_block_)) ++outer_revision_;
   if (with_tangent) {
     if (held)
       for (int p : nonlinear_entries_) tangent_.valuePtr()[p] = 0.0;

@@ -87,6 +87,12 @@ class Assembler {
   /// Changes whenever an assembly may have changed the tangent's values or
   /// structure; equal values mean the same matrix (a factorization of it can be reused).
   [[nodiscard]] std::uint64_t tangent_revision() const { return revision_; }
+  /// Changes whenever an assembly may have changed an entry of the tangent
+  /// with a row or a column outside the reserved block (or its structure);
+  /// equal values mean those entries are bitwise the same. Held assemblies
+  /// whose nonlinear contributions all lie inside the reserved block (contact
+  /// condensed onto its equations) leave it unchanged.
+  [[nodiscard]] std::uint64_t outer_revision() const { return outer_revision_; }
   [[nodiscard]] const LinearReuseStatistics& linear_reuse() const { return reuse_statistics_; }
 
   /// The tangent over the free equations, owned by the assembler: its
@@ -185,7 +191,8 @@ class Assembler {
   std::vector<std::uint8_t> mixed_;     ///< per contribution: linear and touching one of those entries
   std::vector<bool> nonlinear_entry_;   ///< per value index: one of nonlinear_entries_
   bool any_nonlinear_ = false;
-  std::uint64_t revision_ = 0;
+  bool nonlinear_in_block_ = false;     ///< every nonlinear contribution's equations are reserved ones
+  std::uint64_t revision_ = 0, outer_revision_ = 0;
   LinearReuseStatistics reuse_statistics_;
 };
 
