@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cstring>
 
 #include "tether/assembly/assembler.hpp"
 
@@ -226,4 +227,232 @@ TEST(Assembler, ReservedBlockTakesARepairingWithoutRebuildingThePattern) {
   EXPECT_TRUE(plain.update_connectivity(state));
   EXPECT_EQ(plain.pattern_builds(), 2);
   EXPECT_EQ(plain.relocations(), 0);
+}
+
+namespace {
+
+/// A nonlinear contribution over any dof list: tangent entries depend on u
+/// (k_ab (1 + u_a^2 + u_b)), residual k (u + u^3 / 3) per dof pair (only the
+/// tangent matters here).
+class CubicBlock final : public Contribution {
+ public:
+  CubicBlock(std::vector<int> dofs, double seed) : dofs_(std::move(dofs)), seed_(seed) {}
+  std::span<const int> dofs() const override { return dofs_; }
+  void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override {
+    const auto m = static_cast<Eigen::Index>(dofs_.size());
+    for (Eigen::Index a = 0; a < m; ++a) {
+      const double ua = s.u[dofs_[static_cast<std::size_t>(a)]];
+      out.residual[a] = seed_ * (ua + ua * ua * ua / 3);
+      if (!need_tangent) continue;
+      for (Eigen::Index b = 0; b < m; ++b)
+        out.tangent(a, b) = (seed_ + 0.1 * static_cast<double>(a + 3 * b)) *
+                            (1 + ua * ua + s.u[dofs_[static_cast<std::size_t>(b)]]);
+    }
+  }
+  std::string describe() const override { return "cubic block"; }
+  bool symmetric_tangent(bool) const override { return false; }
+  bool linear_in_u(bool) const override { return false; }
+
+ private:
+  std::vector<int> dofs_;
+  double seed_;
+};
+
+/// A linear contribution whose tangent depends on the increment size, like
+/// inertia: residual m (u - u_start) / dt^2, tangent m / dt^2 on the diagonal.
+class InertiaLike final : public Contribution {
+ public:
+  InertiaLike(std::vector<int> dofs, double mass) : dofs_(std::move(dofs)), mass_(mass) {}
+  std::span<const int> dofs() const override { return dofs_; }
+  void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override {
+    const double k = mass_ / (s.dt * s.dt);
+    for (std::size_t a = 0; a < dofs_.size(); ++a) {
+      const auto i = static_cast<Eigen::Index>(a);
+      out.residual[i] = k * (s.u[dofs_[a]] - s.u_start[dofs_[a]]);
+      if (need_tangent) out.tangent(i, i) = k;
+    }
+  }
+  std::string describe() const override { return "inertia-like"; }
+  bool symmetric_tangent(bool) const override { return true; }
+  bool linear_in_u(bool) const override { return true; }
+
+ private:
+  std::vector<int> dofs_;
+  double mass_;
+};
+
+/// Quads of a 6 x 4 node grid (two dofs per node) as DenseBlocks, node 0 held.
+struct Grid {
+  static constexpr int nx = 6, ny = 4, n = 2 * nx * ny;
+  std::vector<DenseBlock> quads;
+  Grid() {
+    quads.reserve((nx - 1) * (ny - 1));
+    for (int j = 0; j + 1 < ny; ++j)
+      for (int i = 0; i + 1 < nx; ++i) {
+        const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+        quads.emplace_back(std::vector<int>{2 * a, 2 * a + 1, 2 * b, 2 * b + 1, 2 * c, 2 * c + 1, 2 * d, 2 * d + 1},
+                           1.0 + 0.25 * static_cast<double>(quads.size()));
+      }
+  }
+  [[nodiscard]] static EquationMap equations() {
+    std::vector<bool> prescribed(n, false);
+    prescribed[0] = prescribed[1] = true;
+    return EquationMap(prescribed);
+  }
+};
+
+std::vector<std::uint8_t> linear_flags(const std::vector<Contribution*>& list) {
+  std::vector<std::uint8_t> flags;
+  for (const Contribution* c : list) flags.push_back(c->linear_in_u(false));
+  return flags;
+}
+
+/// Bitwise equality of two tangents over the same pattern.
+bool same_bits(const SparseMatrix& a, const SparseMatrix& b) {
+  return a.nonZeros() == b.nonZeros() &&
+         std::memcmp(a.valuePtr(), b.valuePtr(), sizeof(double) * static_cast<std::size_t>(a.nonZeros())) == 0;
+}
+
+}  // namespace
+
+TEST(Assembler, HeldLinearTangentIsBitForBitAFullAssembly) {
+  // Linear quads with two nonlinear blocks across them (contact-like: they
+  // share entries with the quads, and one couples nodes no quad couples).
+  Grid grid;
+  CubicBlock across({2 * 8, 2 * 8 + 1, 2 * 15, 2 * 15 + 1}, 0.7), corner({2 * 23, 2 * 5 + 1}, 1.3);
+  std::vector<Contribution*> list;
+  for (auto& q : grid.quads) list.push_back(&q);
+  list.push_back(&across);
+  list.push_back(&corner);
+  Assembler held(list, Grid::equations()), fresh(list, Grid::equations());
+  held.set_linear(linear_flags(list), false);
+
+  Eigen::VectorXd r_held, r_fresh;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(Grid::n, 0.1 * k, 1.0 + k * k);
+    const EvaluationState state{u, u};
+    held.assemble(state, r_held, true);
+    fresh.assemble(state, r_fresh, true);
+    EXPECT_TRUE(same_bits(held.tangent(), fresh.tangent())) << "state " << k;
+    EXPECT_EQ(r_held, r_fresh);
+  }
+  EXPECT_EQ(held.linear_reuse().full, 1);
+  EXPECT_EQ(held.linear_reuse().reused, 3);
+  // A residual-only assembly keeps the held tangent as it is.
+  const std::uint64_t revision = held.tangent_revision();
+  const Eigen::VectorXd u = Eigen::VectorXd::Constant(Grid::n, 0.3);
+  held.assemble(EvaluationState{u, u}, r_held, false);
+  EXPECT_EQ(held.tangent_revision(), revision);
+}
+
+TEST(Assembler, HeldTangentRevisionChangesOnlyWithTheMatrix) {
+  // All linear: the tangent is held and its revision stays, so a
+  // factorization of it may be reused; a nonlinear contribution changes it.
+  Grid grid;
+  std::vector<Contribution*> list;
+  for (auto& q : grid.quads) list.push_back(&q);
+  Assembler assembler(list, Grid::equations());
+  assembler.set_linear(linear_flags(list), false);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(Grid::n), r;
+  assembler.assemble(EvaluationState{u, u}, r, true);
+  const std::uint64_t first = assembler.tangent_revision();
+  u.setConstant(2.0);
+  assembler.assemble(EvaluationState{u, u}, r, true);
+  EXPECT_EQ(assembler.tangent_revision(), first);
+
+  CubicBlock block({4, 5}, 1.0);
+  list.push_back(&block);
+  Assembler mixed(list, Grid::equations());
+  mixed.set_linear(linear_flags(list), false);
+  mixed.assemble(EvaluationState{u, u}, r, true);
+  const std::uint64_t before = mixed.tangent_revision();
+  mixed.assemble(EvaluationState{u, u}, r, true);
+  EXPECT_NE(mixed.tangent_revision(), before);
+}
+
+TEST(Assembler, TangentKeyedOnTheIncrementIsAssembledAgainAtAnotherIncrement) {
+  // Inertia-like linear contributions: M / dt^2 on the diagonal. Held with
+  // keyed_on_dt, a new dt assembles them again (a cut-back in a dynamic step);
+  // held without the key, the tangent would stay that of the first dt.
+  Grid grid;
+  std::vector<InertiaLike> masses;
+  masses.reserve(Grid::nx * Grid::ny);
+  for (int node = 0; node < Grid::nx * Grid::ny; ++node) masses.emplace_back(std::vector<int>{2 * node, 2 * node + 1}, 1.0 + node);
+  CubicBlock contact({2 * 9, 2 * 9 + 1, 2 * 16 + 1}, 0.5);
+  std::vector<Contribution*> list;
+  for (auto& q : grid.quads) list.push_back(&q);
+  for (auto& m : masses) list.push_back(&m);
+  list.push_back(&contact);
+  Assembler keyed(list, Grid::equations()), unkeyed(list, Grid::equations()), fresh(list, Grid::equations());
+  keyed.set_linear(linear_flags(list), true);
+  unkeyed.set_linear(linear_flags(list), false);
+  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(Grid::n, -1.0, 1.0), u0 = Eigen::VectorXd::Zero(Grid::n);
+  Eigen::VectorXd r;
+  for (const double dt : {0.1, 0.1, 0.05, 0.05}) {
+    const EvaluationState state{u, u0, 0, 0, dt};
+    keyed.assemble(state, r, true);
+    unkeyed.assemble(state, r, true);
+    fresh.assemble(state, r, true);
+    EXPECT_TRUE(same_bits(keyed.tangent(), fresh.tangent())) << "dt " << dt;
+  }
+  EXPECT_EQ(keyed.linear_reuse().full, 2);  // dt 0.1, then 0.05
+  EXPECT_EQ(keyed.linear_reuse().reused, 2);
+  EXPECT_FALSE(same_bits(unkeyed.tangent(), fresh.tangent()));  // what the key prevents
+}
+
+TEST(Assembler, HeldTangentFollowsARelocatedNonlinearContribution) {
+  // A re-paired (nonlinear) spring moves inside a reserved block: the
+  // entries it left and those it moved to are assembled anew, and the held
+  // tangent stays that of a fresh assembler.
+  Spring s01(0, 1, 1.0), s23(2, 3, 2.0);
+  Rewiring moving(1, 2, 3), moving_too(1, 2, 3);
+  const std::vector<Contribution*> list{&s01, &s23, &moving};
+  Assembler held(list, EquationMap(std::vector<bool>(4, false)), {1, 2, 3});
+  held.set_linear(linear_flags(list), false);
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(4, 0.0, 1.0), r;
+  const EvaluationState state{u, u};
+  held.assemble(state, r, true);
+  held.assemble(state, r, true);
+  EXPECT_FALSE(held.update_connectivity(state));  // relocated, no rebuild
+  held.assemble(state, r, true);
+  held.assemble(state, r, true);
+  Assembler fresh({&s01, &s23, &moving_too}, EquationMap(std::vector<bool>(4, false)), {1, 2, 3});
+  fresh.update_connectivity(state);
+  fresh.assemble(state, r, true);
+  EXPECT_TRUE(same_bits(held.tangent(), fresh.tangent()));
+  EXPECT_EQ(held.linear_reuse().full, 1);  // the relocation only added the entries it moved to
+  EXPECT_EQ(held.linear_reuse().reused, 3);
+}
+
+TEST(Assembler, OuterRevisionStaysWhileOnlyTheReservedBlockChanges) {
+  // Nonlinear contributions inside the reserved block (condensed contact):
+  // held assemblies leave the entries outside it as they are, and say so;
+  // one nonlinear contribution outside the block, a new dt (keyed) or a
+  // rebuild changes them.
+  Grid grid;
+  CubicBlock inside({2 * 22, 2 * 22 + 1, 2 * 23}, 0.8), outside({2 * 7, 2 * 7 + 1}, 0.4);
+  std::vector<Contribution*> list;
+  for (auto& q : grid.quads) list.push_back(&q);
+  list.push_back(&inside);
+  // Equations of dofs 44..47 (nodes 22, 23): the two prescribed dofs come first.
+  const std::vector<int> block{42, 43, 44, 45};
+  Assembler assembler(list, Grid::equations(), block);
+  assembler.set_linear(linear_flags(list), true);
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(Grid::n, 0.0, 1.0), r;
+  assembler.assemble(EvaluationState{u, u, 0, 0, 0.1}, r, true);
+  const std::uint64_t outer = assembler.outer_revision(), all = assembler.tangent_revision();
+  u *= 2;
+  assembler.assemble(EvaluationState{u, u, 0, 0, 0.1}, r, true);
+  EXPECT_EQ(assembler.outer_revision(), outer);
+  EXPECT_NE(assembler.tangent_revision(), all);
+  assembler.assemble(EvaluationState{u, u, 0, 0, 0.2}, r, true);  // another increment: all assembled
+  EXPECT_NE(assembler.outer_revision(), outer);
+
+  list.push_back(&outside);
+  Assembler spread(list, Grid::equations(), block);
+  spread.set_linear(linear_flags(list), false);
+  spread.assemble(EvaluationState{u, u}, r, true);
+  const std::uint64_t before = spread.outer_revision();
+  spread.assemble(EvaluationState{u, u}, r, true);
+  EXPECT_NE(spread.outer_revision(), before);
 }

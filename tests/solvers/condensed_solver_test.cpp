@@ -377,3 +377,28 @@ TEST(CondensedSolver, OneUlpOrTwoSwappedValuesInTheBulkAreAChange) {
     EXPECT_EQ(solver.statistics().reuses, 0);
   }
 }
+
+TEST(CondensedSolver, APromiseOfAnUnchangedBulkIsTakenWithoutComparing) {
+  // note_outer_unchanged(): the next factorize() keeps the bulk without
+  // comparing its entries, and solves as if they had been compared (the same
+  // matrix); the promise holds for one call only.
+  constexpr int kExtra = 4;
+  const Eigen::MatrixXd bulk = bulk_matrix(kExtra);
+  CondensedSolver promised(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  CondensedSolver compared(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(kBulk + kExtra, -1.0, 2.0);
+  for (unsigned k = 0; k < 3; ++k) {
+    const SparseMatrix a = sparse(with_contact(bulk, kExtra, 21 + k, true));
+    if (k > 0) promised.note_outer_unchanged();
+    EXPECT_EQ(solve_with(promised, a, true, b), solve_with(compared, a, true, b)) << "matrix " << k;
+  }
+  EXPECT_EQ(promised.statistics().promised, 2);
+  EXPECT_EQ(promised.statistics().reuses, 2);
+  EXPECT_EQ(compared.statistics().promised, 0);
+  // Without a promise a changed bulk is found and factorized again.
+  Eigen::MatrixXd changed = with_contact(bulk, kExtra, 30, true);
+  changed(0, 0) += 1;
+  const SparseMatrix a = sparse(changed);
+  solve_with(promised, a, true, b);
+  EXPECT_EQ(promised.statistics().sparse_factorizations, 2);
+}

@@ -42,6 +42,8 @@ class IncrementProblem final : public NewtonProblem {
   [[nodiscard]] bool symmetric() const override { return symmetric_; }
   [[nodiscard]] std::string describe_equation(int eq) const override;
   [[nodiscard]] bool is_multiplier_equation(int eq) const override;
+  [[nodiscard]] std::uint64_t tangent_revision() const override { return assembler_.tangent_revision(); }
+  [[nodiscard]] std::uint64_t outer_revision() const override { return assembler_.outer_revision(); }
   void add_evaluation_time(SolveTiming& timing) const override {
     timing.contact_search += search_seconds_;
     timing.assembly += assembly_seconds_;

@@ -89,13 +89,26 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
       const SparseMatrix& tangent = problem.tangent();
       auto t0 = std::chrono::steady_clock::now();
       if (!analysed_) {
+        factorized_revision_ = factorized_outer_revision_ = 0;
         solver_.analyze(tangent), analysed_ = true;
         timing_.analyse += seconds_since(t0);
         t0 = std::chrono::steady_clock::now();
       }
-      solver_.factorize(tangent, problem.symmetric());
-      ++timing_.factorizations;
-      timing_.factorize += seconds_since(t0);
+      // The same matrix as the one factorized last (a linear step at a
+      // fixed increment): its factors serve again.
+      const std::uint64_t revision = problem.tangent_revision();
+      if (revision != 0 && revision == factorized_revision_) {
+        ++timing_.reused_factorizations;
+      } else {
+        const std::uint64_t outer = problem.outer_revision();
+        if (outer != 0 && outer == factorized_outer_revision_) solver_.note_outer_unchanged();
+        factorized_revision_ = factorized_outer_revision_ = 0;
+        solver_.factorize(tangent, problem.symmetric());
+        factorized_revision_ = revision;
+        factorized_outer_revision_ = outer;
+        ++timing_.factorizations;
+        timing_.factorize += seconds_since(t0);
+      }
       t0 = std::chrono::steady_clock::now();
       solver_.solve(-residual, correction);
       timing_.solve += seconds_since(t0);

@@ -7,6 +7,7 @@
 /// residual.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -24,6 +25,12 @@ struct SolveTiming {
   double solve = 0;           ///< triangular solves
   double output = 0;          ///< results and writers (set by the analysis)
   int factorizations = 0;
+  /// Iterations that solved with the factorization of the previous one,
+  /// the tangent being the same matrix (all of it linear in u and held).
+  int reused_factorizations = 0;
+  /// Tangent assemblies that held the linear bulk's tangent, and those that
+  /// assembled it in full, in steps that hold it (Assembler::linear_reuse).
+  int held_tangents = 0, full_tangents = 0;
   /// Of those, sparse factorizations of the bulk by the condensed solver (the
   /// rest reused it); 0 when the solver did not condense.
   int sparse_factorizations = 0;
@@ -54,6 +61,14 @@ class NewtonProblem {
   [[nodiscard]] virtual bool is_multiplier_equation(int eq) const = 0;
   /// Adds the time of the last evaluate() to `timing` (search and assembly).
   virtual void add_evaluation_time(SolveTiming& /*timing*/) const {}
+  /// Identifies the tangent's values: equal non-zero revisions mean the same
+  /// matrix (Assembler::tangent_revision), whose factorization Newton then
+  /// reuses; 0: unknown, factorize at every iteration.
+  [[nodiscard]] virtual std::uint64_t tangent_revision() const { return 0; }
+  /// Likewise for the tangent's entries outside the reserved (contact) block
+  /// (Assembler::outer_revision): equal non-zero values between two
+  /// factorizations let a condensing solver skip comparing them.
+  [[nodiscard]] virtual std::uint64_t outer_revision() const { return 0; }
 };
 
 /// How an attempt ended.
@@ -88,6 +103,9 @@ class NewtonSolver {
   Controls controls_;
   ConvergenceCriteria criteria_;
   bool analysed_ = false;
+  /// The tangent revision the solver holds a factorization of (0: none known).
+  std::uint64_t factorized_revision_ = 0;
+  std::uint64_t factorized_outer_revision_ = 0;  ///< likewise for outer_revision()
   SolveTiming timing_;
 };
 

@@ -84,6 +84,9 @@ class StepEndReport {
     SolveTiming& s = summary_.timing;
     s.contact_search += t.contact_search, s.assembly += t.assembly, s.analyse += t.analyse;
     s.factorize += t.factorize, s.solve += t.solve, s.factorizations += t.factorizations;
+    s.reused_factorizations += t.reused_factorizations;
+    s.held_tangents += system_.assembler().linear_reuse().reused;
+    s.full_tangents += system_.assembler().linear_reuse().full;
     s.output += t.output;
     const CondensedSolver* condensed = system_.condensed();
     const LinearSolver& solver = system_.solver();
@@ -179,7 +182,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   const Eigen::VectorXd u_step_start =
       resumed ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(resumed->u_step_start.data(), u_.size())) : u_;
   StepSystem system(disc, step, make_step_loads(step, disc.dofs(), u_step_start, cload_end_, pressure_end_), u_,
-                    total_time_, SolverSettings{options_.solver, options_.condense_contact, options_.memory_budget_mb},
+                    total_time_, SolverSettings{options_.solver, options_.condense_contact, options_.memory_budget_mb,
+                                   options_.reuse_linear_bulk},
                     [&](const std::string& m) {
                       if (index == 0) observer_.on_message(m);
                     });

@@ -34,6 +34,11 @@ struct AnalysisOptions {
   /// Memory the run may use [MB] (`tether run --memory`), 0 for no limit:
   /// sparse MUMPS factors that would not fit are kept out of core.
   double memory_budget_mb = 0;
+  /// A step whose bulk is linear in u (small strain, elastic) assembles its
+  /// bulk's tangent once and factorizes an unchanged tangent once
+  /// (SolverSettings::reuse_linear_bulk); off: at every iteration. The
+  /// results are the same bit for bit.
+  bool reuse_linear_bulk = true;
   /// Streamed results: the IncrementResults handed to the observer carry no
   /// integration-point values (`points` empty) but each element's mean stress
   /// and a source that computes an element's points during on_results (see

@@ -45,6 +45,7 @@ StepSystem::StepSystem(const Discretization& discretization, const Step& step, S
   assembler_ = std::make_unique<Assembler>(contributions_, std::move(equations), interface);
   check_constraints(discretization_, assembler_->equations(), EvaluationState{u, u, 0, total_time, 0, step_.nlgeom});
   make_solver(std::move(interface));
+  if (settings_.reuse_linear_bulk && bulk_linear_) hold_linear_bulk();
 
   // Cholesky (positive definite) or LDLT (multipliers) when every
   // contribution vouches for a symmetric tangent; LU otherwise.
@@ -116,6 +117,13 @@ void StepSystem::gather_contributions() {
   const auto contact_end = contact_begin + static_cast<std::ptrdiff_t>(n_contact);
   bulk_linear_ = std::all_of(contributions_.begin(), contact_begin, linear) &&
                  std::all_of(contact_end, contributions_.end(), linear);
+}
+
+void StepSystem::hold_linear_bulk() {
+  std::vector<std::uint8_t> linear(contributions_.size());
+  for (std::size_t k = 0; k < contributions_.size(); ++k) linear[k] = contributions_[k]->linear_in_u(step_.nlgeom);
+  // The inertia's tangent M / (beta dt^2) + C gamma / (beta dt) changes with the increment.
+  assembler_->set_linear(std::move(linear), step_.procedure == StepProcedure::ImplicitDynamic);
 }
 
 std::vector<bool> StepSystem::prescribed_dofs() {

@@ -36,6 +36,11 @@ struct SolverSettings {
   /// contact equations while they are few (CondensedSolver).
   bool condense_contact = true;
   double memory_budget_mb = 0;  ///< [MB], 0 = no limit (see AnalysisOptions)
+  /// When the bulk is linear (bulk_linear()): the assembler holds the linear
+  /// contributions' tangents (Assembler::set_linear) and Newton reuses the
+  /// factorization of an unchanged tangent. Off: every iteration assembles
+  /// and factorizes everything (the results are the same bit for bit).
+  bool reuse_linear_bulk = true;
 };
 
 class StepSystem {
@@ -82,6 +87,7 @@ class StepSystem {
   void apply_loads(const IncrementTimes& t, Eigen::VectorXd& u, Eigen::VectorXd& forces);
 
   [[nodiscard]] Assembler& assembler() { return *assembler_; }
+  [[nodiscard]] const Assembler& assembler() const { return *assembler_; }
   [[nodiscard]] const EquationMap& equations() const { return assembler_->equations(); }
   [[nodiscard]] LinearSolver& solver() { return *solver_; }
   [[nodiscard]] const LinearSolver& solver() const { return *solver_; }
@@ -92,9 +98,12 @@ class StepSystem {
   [[nodiscard]] int n_unused_nodes() const { return unused_nodes_; }
   /// Every contribution declares a symmetric tangent under the step's NLGEOM.
   [[nodiscard]] bool symmetric() const { return symmetric_; }
-  /// Every contribution outside contact (elements, constraints, loads) is
-  /// linear in u under the step's NLGEOM: that bulk could be assembled and
-  /// factorized once per step. Declared only; nothing uses it yet.
+  /// Every contribution outside contact (elements, constraints, loads and
+  /// in dynamic steps the inertia) is linear in u under the step's NLGEOM:
+  /// with SolverSettings::reuse_linear_bulk the assembler then holds their
+  /// tangents, assembled again only at a pattern change or, in an implicit
+  /// dynamic step, at another increment size (the inertia's tangent is
+  /// M / (beta dt^2) + ...), and an unchanged tangent is not factorized again.
   [[nodiscard]] bool bulk_linear() const { return bulk_linear_; }
 
  private:
@@ -107,6 +116,8 @@ class StepSystem {
   /// The contact equations to condense onto (empty: no condensation).
   [[nodiscard]] std::vector<int> condensation_interface(const EquationMap& equations) const;
   void make_solver(std::vector<int> interface);
+  /// Tells the assembler which contributions are linear (bulk_linear() steps only).
+  void hold_linear_bulk();
 
   const Discretization& discretization_;
   const Step& step_;

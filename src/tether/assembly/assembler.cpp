@@ -107,6 +107,8 @@ bool Assembler::relocate() {
     relocated_dofs_[slot].assign(dofs.begin(), dofs.end());
   }
   ++relocations_;
+  nonlinear_moved_ = true;  // they scatter elsewhere now: hold_linear() adds those entries
+  ++revision_;
   return true;
 }
 
@@ -126,6 +128,8 @@ void Assembler::build_pattern() {
   if (!reserved_block_.empty() && (reserved_block_.front() < 0 || reserved_block_.back() >= n))
     throw std::invalid_argument("Assembler: a reserved equation is outside the system");
   ++pattern_builds_;
+  held_ = false;
+  ++revision_, ++outer_revision_;
   relocated_slot_.assign(static_cast<std::size_t>(n_contrib), -1);
   relocated_.clear();
   relocated_dofs_.clear();
@@ -287,23 +291,123 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   if (tangent) *tangent = tangent_;
 }
 
+template <class F>
+void Assembler::for_each_entry(int c, F&& f) const {
+  const auto dofs = contributions_[static_cast<std::size_t>(c)]->dofs();
+  const auto m = static_cast<Eigen::Index>(dofs.size());
+  const int slot = relocated_slot_[static_cast<std::size_t>(c)];
+  if (slot < 0 && weighted_index_[static_cast<std::size_t>(c)] >= 0) {
+    const WeightedScatter& w = weighted_[static_cast<std::size_t>(weighted_index_[static_cast<std::size_t>(c)])];
+    for (Eigen::Index e = 0; e < m * m; ++e)
+      for (int k = w.start[e]; k < w.start[e + 1]; ++k) f(w.pos[k], e, w.weight[k]);
+    return;
+  }
+  if (slot < 0 && blocked_[static_cast<std::size_t>(c)]) {
+    const int* pos = positions_.data() + offsets_[static_cast<std::size_t>(c)];
+    const int* outer = tangent_.outerIndexPtr();
+    const Eigen::Index h = m / 2;
+    for (Eigen::Index l = 0; l < h; ++l) {
+      const Eigen::Index e0 = 2 * l * m;  // columns 2l and 2l + 1
+      const Eigen::Index e1 = e0 + m;
+      int len = -1;
+      for (Eigen::Index k = 0; k < h; ++k) {
+        const int p = pos[l * h + k];
+        if (p < 0) continue;
+        if (len < 0) {
+          const int first = equations_.equation(dofs[static_cast<std::size_t>(2 * l)]);
+          len = outer[first + 1] - outer[first];
+        }
+        f(p, e0 + 2 * k, 1.0);
+        f(p + 1, e0 + 2 * k + 1, 1.0);
+        f(p + len, e1 + 2 * k, 1.0);
+        f(p + len + 1, e1 + 2 * k + 1, 1.0);
+      }
+    }
+    return;
+  }
+  const int* pos = slot >= 0 ? relocated_[static_cast<std::size_t>(slot)].data()
+                             : positions_.data() + offsets_[static_cast<std::size_t>(c)];
+  for (Eigen::Index e = 0; e < m * m; ++e)
+    if (pos[e] >= 0) f(pos[e], e, 1.0);
+}
+
+void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
+  if (linear.size() != contributions_.size())
+    throw std::invalid_argument("Assembler::set_linear: one flag per contribution expected");
+  linear_ = std::move(linear);
+  keyed_on_dt_ = keyed_on_dt;
+  any_nonlinear_ = std::find(linear_.begin(), linear_.end(), std::uint8_t{0}) != linear_.end();
+  held_ = false;
+  ++revision_, ++outer_revision_;
+}
+
+bool Assembler::linear_held(const EvaluationState& state) const {
+  return held_ && (!keyed_on_dt_ || state.dt == held_dt_);
+}
+
+void Assembler::hold_linear(const EvaluationState* state) {
+  const auto n_contrib = static_cast<int>(contributions_.size());
+  if (state) {  // after a full assembly: the nonlinear entries as they are now
+    nonlinear_entry_.assign(static_cast<std::size_t>(tangent_.nonZeros()), false);
+    nonlinear_entries_.clear();
+    nonlinear_in_block_ = true;
+  }  // else relocated: the entries they scattered into before stay nonlinear (they hold their values)
+  std::vector<int> eqs;
+  for (int c = 0; c < n_contrib && nonlinear_in_block_; ++c) {
+    if (linear_[static_cast<std::size_t>(c)]) continue;
+    equations_of(*contributions_[static_cast<std::size_t>(c)], eqs);
+    for (int e : eqs)
+      if (!std::binary_search(reserved_block_.begin(), reserved_block_.end(), e)) nonlinear_in_block_ = false;
+  }
+  for (int c = 0; c < n_contrib; ++c)
+    if (!linear_[static_cast<std::size_t>(c)])
+      for_each_entry(c, [&](int p, Eigen::Index, double) {
+        if (!nonlinear_entry_[static_cast<std::size_t>(p)])
+          nonlinear_entry_[static_cast<std::size_t>(p)] = true, nonlinear_entries_.push_back(p);
+      });
+  mixed_.assign(contributions_.size(), 0);
+  if (!nonlinear_entries_.empty())
+    for (int c = 0; c < n_contrib; ++c)
+      if (linear_[static_cast<std::size_t>(c)])
+        for_each_entry(c, [&](int p, Eigen::Index, double) {
+          if (nonlinear_entry_[static_cast<std::size_t>(p)]) mixed_[static_cast<std::size_t>(c)] = 1;
+        });
+  if (state) held_ = true, held_dt_ = state->dt;
+  nonlinear_moved_ = false;
+}
+
 void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent) {
   const auto t0 = std::chrono::steady_clock::now();
   residual.setZero(equations_.n_dofs());
-  if (with_tangent) std::fill_n(tangent_.valuePtr(), tangent_.nonZeros(), 0.0);
+  // Held: only the entries of nonlinear contributions are assembled anew.
+  const bool held = with_tangent && linear_held(state);
+  // The values change unless every contribution is held (also when an assembly
+  // fails); those outside the reserved block unless the nonlinear ones lie inside it.
+  if (held && nonlinear_moved_) hold_linear(nullptr);
+  if (with_tangent && (!held || any_nonlinear_)) ++revision_;
+  if (with_tangent && (!held || !nonlinear_in_block_)) ++outer_revision_;
+  if (with_tangent) {
+    if (held)
+      for (int p : nonlinear_entries_) tangent_.valuePtr()[p] = 0.0;
+    else
+      std::fill_n(tangent_.valuePtr(), tangent_.nonZeros(), 0.0), held_ = false;
+  }
   double* values = with_tangent ? tangent_.valuePtr() : nullptr;
-  const int* outer = tangent_.outerIndexPtr();
   std::exception_ptr failure;
   std::atomic<bool> failed{false};
 
-  // Evaluates contribution c and scatters it; `positions` null: its slot in positions_.
-  const auto add = [&](int c, LocalSystem& local, const int* own_positions) {
+  // Evaluates contribution c and scatters it.
+  const auto add = [&](int c, LocalSystem& local) {
     const Contribution* contribution = contributions_[c];
     const auto dofs = contribution->dofs();
     const auto m = static_cast<Eigen::Index>(dofs.size());
+    // Held linear contributions add to the nonlinear entries only (mixed) or not at all.
+    const bool keep = held && linear_[static_cast<std::size_t>(c)];
+    const bool mixed = keep && mixed_[static_cast<std::size_t>(c)];
+    const bool tangent = values != nullptr && (!keep || mixed);
     try {
       local.reset(m);
-      contribution->evaluate(state, local, values != nullptr);
+      contribution->evaluate(state, local, tangent);
     } catch (...) {
 #pragma omp critical(tether_assembly_failure)
       if (!failure) failure = std::current_exception();
@@ -311,38 +415,14 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
       return;
     }
     for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
-    if (!values) return;
+    if (!tangent) return;
     const double* ke = local.tangent.data();  // column-major, like the positions
-    if (!own_positions && weighted_index_[c] >= 0) {
-      const WeightedScatter& w = weighted_[weighted_index_[c]];
-      for (Eigen::Index e = 0; e < m * m; ++e)
-        for (int k = w.start[e]; k < w.start[e + 1]; ++k) values[w.pos[k]] += w.weight[k] * ke[e];
-      return;
-    }
-    const int* pos = own_positions ? own_positions : positions_.data() + offsets_[c];
-    if (!own_positions && blocked_[c]) {
-      const Eigen::Index h = m / 2;
-      for (Eigen::Index l = 0; l < h; ++l) {
-        const double* k0 = ke + 2 * l * m;  // columns 2l and 2l + 1
-        const double* k1 = k0 + m;
-        int len = -1;
-        for (Eigen::Index k = 0; k < h; ++k) {
-          const int p = pos[l * h + k];
-          if (p < 0) continue;
-          if (len < 0) {
-            const int f = equations_.equation(dofs[2 * l]);
-            len = outer[f + 1] - outer[f];
-          }
-          values[p] += k0[2 * k];
-          values[p + 1] += k0[2 * k + 1];
-          values[p + len] += k1[2 * k];
-          values[p + len + 1] += k1[2 * k + 1];
-        }
-      }
-      return;
-    }
-    for (Eigen::Index e = 0; e < m * m; ++e)
-      if (pos[e] >= 0) values[pos[e]] += ke[e];
+    if (mixed)
+      for_each_entry(c, [&](int p, Eigen::Index e, double w) {
+        if (nonlinear_entry_[static_cast<std::size_t>(p)]) values[p] += w * ke[e];
+      });
+    else
+      for_each_entry(c, [&](int p, Eigen::Index e, double w) { values[p] += w * ke[e]; });
   };
 
   for (std::size_t k = 0; k < colours_.size(); ++k) {
@@ -354,15 +434,17 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
       LocalSystem local;
 #pragma omp for schedule(dynamic, 64)
       for (int i = 0; i < count; ++i)
-        if (!failed.load(std::memory_order_relaxed)) add(colour[i], local, nullptr);
+        if (!failed.load(std::memory_order_relaxed)) add(colour[i], local);
     }
     if (failure) std::rethrow_exception(failure);
   }
   LocalSystem local;
   for (int c : relocated_order_) {
-    add(c, local, relocated_[static_cast<std::size_t>(relocated_slot_[static_cast<std::size_t>(c)])].data());
+    add(c, local);
     if (failure) std::rethrow_exception(failure);
   }
+  if (with_tangent && !held && !linear_.empty()) hold_linear(&state), ++reuse_statistics_.full;
+  if (held) ++reuse_statistics_.reused;
   timing_.evaluate = seconds_since(t0);
 }
 

@@ -12,6 +12,11 @@
 /// Contributions are coloured so that no two of one colour share an unknown;
 /// each colour is assembled in parallel (OpenMP) without locks, and the result
 /// does not depend on the number of threads.
+///
+/// Contributions declared linear in u (set_linear()) have their tangents
+/// assembled once and kept in the tangent's values: later assemblies
+/// evaluate them for the residual only and assemble anew just the entries a
+/// nonlinear contribution (contact) touches, bit for bit as a full assembly.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -29,6 +34,12 @@ namespace tether {
 struct AssemblyTiming {
   double pattern = 0;   ///< last pattern build
   double evaluate = 0;  ///< last assemble() call
+};
+
+/// Tangent assemblies since set_linear(), by kind (for logs and tests).
+struct LinearReuseStatistics {
+  int full = 0;    ///< every contribution's tangent evaluated (the linear ones' kept from then on)
+  int reused = 0;  ///< the linear contributions' tangents kept; only nonlinear entries assembled
 };
 
 class Assembler {
@@ -57,6 +68,32 @@ class Assembler {
   /// As above; when `tangent` is not null it receives a copy of tangent()
   /// (for callers that want their own matrix: tests, benchmarks).
   void assemble(const EvaluationState& state, Eigen::VectorXd& residual, SparseMatrix* tangent);
+
+  /// Declares the contributions whose tangent is the same matrix at every
+  /// state (Contribution::linear_in_u under the step's NLGEOM): `linear` has
+  /// one flag per contribution, in the constructor's order. `keyed_on_dt`:
+  /// their tangents depend on the increment size EvaluationState::dt
+  /// (inertia, M / (beta dt^2) + ...), so they are kept only at the same dt.
+  /// From then on an assembly with the tangent evaluates the linear
+  /// contributions' tangents only when they are not held: the first time,
+  /// after a pattern rebuild, after a full assembly that failed, and at
+  /// another dt when keyed. Otherwise the linear contributions are evaluated
+  /// for the residual only, and the entries that a nonlinear contribution
+  /// scatters (or, before a relocation, scattered) into are zeroed and
+  /// assembled again from every contribution touching them, in the usual
+  /// order: the tangent is bit for bit that of a full assembly. Throws std::invalid_argument when the size
+  /// of `linear` is not the number of contributions.
+  void set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt);
+  /// Changes whenever an assembly may have changed the tangent's values or
+  /// structure; equal values mean the same matrix (a factorization of it can be reused).
+  [[nodiscard]] std::uint64_t tangent_revision() const { return revision_; }
+  /// Changes whenever an assembly may have changed an entry of the tangent
+  /// with a row or a column outside the reserved block (or its structure);
+  /// equal values mean those entries are bitwise the same. Held assemblies
+  /// whose nonlinear contributions all lie inside the reserved block (contact
+  /// condensed onto its equations) leave it unchanged.
+  [[nodiscard]] std::uint64_t outer_revision() const { return outer_revision_; }
+  [[nodiscard]] const LinearReuseStatistics& linear_reuse() const { return reuse_statistics_; }
 
   /// The tangent over the free equations, owned by the assembler: its
   /// structure is the pattern (built by the constructor, set_equations() and
@@ -89,6 +126,21 @@ class Assembler {
   [[nodiscard]] int find_position(int row, int col) const;
   /// Free equations a contribution's entries land in (through T), sorted, unique.
   void equations_of(const Contribution& c, std::vector<int>& out) const;
+  /// Calls f(p, e, w) for every value-array index p that local tangent entry
+  /// e (column-major, b * n + a) of contribution c adds to, with weight w
+  /// (1 except through T): the one definition of where a contribution's
+  /// tangent goes, for the scatter and for the held entries' bookkeeping.
+  template <class F>
+  void for_each_entry(int c, F&& f) const;
+  /// True when an assembly with the tangent at `state` may keep the linear
+  /// contributions' tangents (set_linear()).
+  [[nodiscard]] bool linear_held(const EvaluationState& state) const;
+  /// After a full assembly at `state`: the entries nonlinear contributions
+  /// scatter into and the linear contributions that touch one of them. With
+  /// null, after a relocation: adds the entries the relocated contributions
+  /// scatter into now (those they left keep being assembled anew) and finds
+  /// the linear contributions touching them again.
+  void hold_linear(const EvaluationState* state);
 
   std::vector<Contribution*> contributions_;
   EquationMap equations_;
@@ -129,6 +181,19 @@ class Assembler {
   std::vector<int> reserved_block_;
   int pattern_builds_ = 0, relocations_ = 0;
   AssemblyTiming timing_;
+  // Held linear tangents (set_linear()).
+  std::vector<std::uint8_t> linear_;    ///< per contribution; empty: nothing held
+  bool keyed_on_dt_ = false;
+  bool held_ = false;                   ///< the values hold the linear tangents of the last full assembly
+  bool nonlinear_moved_ = false;        ///< a relocation since hold_linear()
+  double held_dt_ = 0;                  ///< the dt they were assembled at
+  std::vector<int> nonlinear_entries_;  ///< value indices nonlinear contributions scatter into
+  std::vector<std::uint8_t> mixed_;     ///< per contribution: linear and touching one of those entries
+  std::vector<bool> nonlinear_entry_;   ///< per value index: one of nonlinear_entries_
+  bool any_nonlinear_ = false;
+  bool nonlinear_in_block_ = false;     ///< every nonlinear contribution's equations are reserved ones
+  std::uint64_t revision_ = 0, outer_revision_ = 0;
+  LinearReuseStatistics reuse_statistics_;
 };
 
 }  // namespace tether

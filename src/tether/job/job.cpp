@@ -9,13 +9,18 @@
 namespace tether {
 
 std::string timing_line(double seconds, const SolveTiming& t) {
-  return fmt::format("time {:.2f} s: contact search {:.2f}, assembly {:.2f}, analyse {:.2f}, factorize {:.2f} ({} "
-                     "factorizations{}), solve {:.2f}, output {:.2f}",
-                     seconds, t.contact_search, t.assembly, t.analyse, t.factorize, t.factorizations,
+  return fmt::format("time {:.2f} s: contact search {:.2f}, assembly {:.2f}{}, analyse {:.2f}, factorize {:.2f} ({} "
+                     "factorizations{}{}), solve {:.2f}, output {:.2f}",
+                     seconds, t.contact_search, t.assembly,
+                     t.held_tangents > 0 ? fmt::format(" (linear bulk's tangent held in {} of {})", t.held_tangents,
+                                                       t.held_tangents + t.full_tangents)
+                                         : std::string(),
+                     t.analyse, t.factorize, t.factorizations,
                      t.sparse_factorizations > 0
                          ? fmt::format(", {} of the bulk, the rest of the contact equations only",
                                        t.sparse_factorizations)
                          : std::string(),
+                     t.reused_factorizations > 0 ? fmt::format(", {} reused", t.reused_factorizations) : std::string(),
                      t.solve, t.output);
 }
 

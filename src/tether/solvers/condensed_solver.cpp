@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 #include <string>
+#include <utility>
 
 #include "tether/core/error.hpp"
 
@@ -82,6 +83,7 @@ bool CondensedSolver::outer_symmetric(const SparseMatrix& a) const {
 
 void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
   fallback_active_ = false;
+  const bool promised = std::exchange(outer_unchanged_, false);
   const auto n = static_cast<std::size_t>(a.cols());
   if (in_interface_.size() != n) {
     if (!interface_.empty() && (interface_.front() < 0 || static_cast<std::size_t>(interface_.back()) >= n))
@@ -96,8 +98,10 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
 
   // The R entries must be symmetric for the LDLT of A_RR; a matrix declared
   // unsymmetric (friction) often still is outside the interface.
-  const bool outer_sym = symmetric || outer_symmetric(a);
-  const bool reused = bulk_valid_ && outer_sym == bulk_symmetric_ && bulk_->unchanged(a, in_interface_);
+  // Promised unchanged: the bulk factorized for the previous call's R entries holds.
+  const bool keep = promised && bulk_valid_;
+  const bool outer_sym = symmetric || (keep ? bulk_symmetric_ : outer_symmetric(a));
+  const bool reused = keep || (bulk_valid_ && outer_sym == bulk_symmetric_ && bulk_->unchanged(a, in_interface_));
   if (reused) {
     changes_in_row_ = 0;
   } else {
@@ -173,7 +177,7 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
     dgecon_("1", &size, lu_.data(), &size, &norm1, &rcond, work.data(), iwork.data(), &info, 1);
   }
   if (info != 0 || !(rcond > kSingularRcond)) return use_fallback(a, symmetric);  // also NaN
-  if (reused) ++statistics_.reuses;  // served by the interface system alone (not after a fallback)
+  if (reused) ++statistics_.reuses, statistics_.promised += keep;  // served by the interface system alone
 }
 
 void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {

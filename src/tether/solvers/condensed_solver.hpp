@@ -34,6 +34,7 @@ struct CondensationStatistics {
   int interface_equations = 0;  ///< |I|
   int sparse_factorizations = 0;  ///< of A_RR with its Schur complement
   int reuses = 0;                 ///< factorize() calls served by the dense interface system alone
+  int promised = 0;               ///< of those, taken on the caller's word (note_outer_unchanged)
   int fallbacks = 0;              ///< factorize() calls handed to the fallback solver
   bool gave_up = false;           ///< stopped condensing (R entries changed twice in a row)
   double factor_entries = 0;      ///< entries of the last sparse factors (MUMPS INFOG(29))
@@ -54,6 +55,9 @@ class CondensedSolver final : public LinearSolver {
 
   void analyze(const SparseMatrix& a) override;
   void factorize(const SparseMatrix& a, bool symmetric) override;
+  /// The next factorize() takes the entries outside the interface as those of
+  /// the previous call without comparing them (statistics().promised).
+  void note_outer_unchanged() override { outer_unchanged_ = true; }
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   [[nodiscard]] std::string name() const override;
   /// Those of the bulk (statistics().out_of_core_factorizations) and of the fallback.
@@ -78,6 +82,7 @@ class CondensedSolver final : public LinearSolver {
   int changes_in_row_ = 0;        ///< consecutive factorize() calls whose R entries changed
   bool fallback_active_ = false;  ///< the last factorize() went to the fallback
   bool fallback_analysed_ = false;
+  bool outer_unchanged_ = false;  ///< note_outer_unchanged() before this factorize()
   // Dense interface system (A_II + C), equilibrated: D (A_II + C) D, D = 1/sqrt|diag|,
   // LU-factorized in place by LAPACK (dgetrf: blocked, multithreaded BLAS).
   Eigen::VectorXd scale_;

@@ -41,6 +41,12 @@ class LinearSolver {
   /// for a singular matrix, naming the equation where a pivot vanished.
   virtual void factorize(const SparseMatrix& a, bool symmetric) = 0;
 
+  /// The caller's word that the matrix of the next factorize() has, outside
+  /// the equations a condensing solver condenses onto, bitwise the entries of
+  /// the previous factorize()'s (Assembler::outer_revision): CondensedSolver
+  /// then skips comparing them. Valid for that one call; ignored by the others.
+  virtual void note_outer_unchanged() {}
+
   /// Solves a x = b with the last factorization.
   virtual void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
 
