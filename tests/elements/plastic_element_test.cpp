@@ -70,6 +70,29 @@ TEST(PlasticElement, TangentMatchesFiniteDifferencesFromACommittedPlasticState) 
   }
 }
 
+TEST(PlasticElement, FiniteStrainTangentMatchesFiniteDifferencesFromACommittedPlasticState) {
+  // NLGEOM (isotropic hardening; plane strain and axisymmetry): material and geometric stiffness.
+  const J2Plasticity m = steel(J2Plasticity::Hardening::Isotropic);
+  for (const ElementType& type : supported_types()) {
+    if (type.family == Family::PlaneStress) continue;  // refused under NLGEOM
+    PlasticElement pe(type, m);
+    ContinuumElement& e = *pe.element;
+    const Eigen::VectorXd u1 = stretch(e, 0.05, 1);
+    e.commit({u1, u1, 1, 1, 1, true});
+    std::vector<PointValues> p;
+    e.point_values({u1, u1, 1, 1, 1, true}, p);
+    double peeq = 0;
+    for (const PointValues& v : p) peeq = std::max(peeq, v.peeq);
+    EXPECT_GT(peeq, 0.01) << e.describe();
+    for (double scale : {1.3, 0.995}) {  // further loading (plastic), unloading (elastic)
+      const Eigen::VectorXd u2 = scale * u1 + random_vector(u1.size(), 2e-4, 9);
+      const LocalSystem sys = evaluate_at(e, u2, true);
+      const Eigen::MatrixXd fd = fd_tangent(e, u2, true, 1e-8);
+      EXPECT_LT(max_abs(sys.tangent - fd), 1e-6 * max_abs(sys.tangent)) << e.describe() << " scale " << scale;
+    }
+  }
+}
+
 TEST(PlasticElement, EvaluateCommitsNothingAndCommitStoresTheConvergedTrialState) {
   const J2Plasticity m = steel(J2Plasticity::Hardening::Isotropic);
   const auto type = *find_element_type("CPE4");

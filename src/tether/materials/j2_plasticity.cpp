@@ -95,11 +95,6 @@ std::string J2Plasticity::describe() const {
                      hardening_ == Hardening::Isotropic ? "isotropic" : "kinematic", curve_.n_points());
 }
 
-void J2Plasticity::update_finite_strain(Eigen::Matrix3d&, bool, std::span<const double>, std::span<double>,
-                                        const PointContext&, MaterialResponse&) const {
-  throw ModelError("*PLASTIC is small strain only in tether: run the step without NLGEOM");
-}
-
 void J2Plasticity::update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
                                        std::span<double> new_state, const PointContext&,
                                        MaterialResponse& out) const {

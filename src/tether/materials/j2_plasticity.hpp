@@ -21,7 +21,16 @@ namespace tether {
 ///   for a two-point table; piecewise in p for more rows).
 ///
 /// State (13 values): plastic strain (Voigt, engineering shear), back stress
-/// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p.
+/// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p. Under
+/// NLGEOM: E_p = (I - Cp^-1)/2 (Voigt, engineering shear), six unused
+/// values, PEEQ.
+///
+/// Finite strain (NLGEOM, isotropic hardening, plane strain and
+/// axisymmetry): F = Fe Fp, Hencky elasticity tau = D : ln(Ve) with the
+/// small-strain constants, von Mises on the Kirchhoff stress, isochoric flow
+/// integrated by the exponential map; the return on the principal
+/// logarithmic strains is the small-strain radial return, and the tangent
+/// dS/dE is its exact linearisation (symmetric).
 class J2Plasticity final : public ConstitutiveModel {
  public:
   enum class Hardening { Isotropic, Kinematic };
@@ -34,7 +43,9 @@ class J2Plasticity final : public ConstitutiveModel {
   void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
                            std::span<double> new_state, const PointContext& where,
                            MaterialResponse& out) const override;
-  /// Throws ModelError: tether's plasticity is small strain only.
+  /// Finite strain (see the class comment): PK2 stress, dS/dE, E_p and PEEQ.
+  /// Throws ModelError for plane stress and for kinematic hardening, which
+  /// tether does not provide under NLGEOM.
   void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
                             std::span<double> new_state, const PointContext& where,
                             MaterialResponse& out) const override;
