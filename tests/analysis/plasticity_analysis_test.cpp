@@ -323,3 +323,60 @@ TEST(FiniteStrainPlasticity, NewtonConvergesQuadraticallyOnCooksMembrane) {
   EXPECT_GE(measured, 3);
   EXPECT_GE(worst, 1.8);
 }
+
+namespace {
+
+std::string error_of(const std::string& deck) {
+  try {
+    const tether::testing::Run run = run_deck_text(deck);
+    return run.summary.completed ? "(completed)" : run.summary.message;
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+}  // namespace
+
+TEST(CombinedHardening, ConstantCyclicTableGivesTheKinematicAnswer) {
+  // HARDENING=COMBINED with *CYCLIC HARDENING at the constant first yield
+  // stress is kinematic hardening: the thick cylinder loaded and unloaded.
+  const std::string from = "*PLASTIC\n240., 0.\n";
+  const auto kinematic = run_deck_text(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=KINEMATIC\n240., 0.\n"
+                                                                       "1240., 1.\n"));
+  const auto combined = run_deck_text(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n"
+                                                                      "1240., 1.\n*CYCLIC HARDENING\n240., 0.\n"));
+  ASSERT_TRUE(kinematic.summary.completed) << kinematic.summary.message;
+  ASSERT_TRUE(combined.summary.completed) << combined.summary.message;
+  ASSERT_EQ(kinematic.recorder.results.size(), combined.recorder.results.size());
+  double worst = 0, scale = 0;
+  for (std::size_t k = 0; k < kinematic.recorder.results.size(); ++k)
+    for (std::size_t n = 0; n < kinematic.last().displacement.size(); ++n) {
+      const Eigen::Vector2d a = kinematic.recorder.results[k].displacement[n];
+      scale = std::max(scale, a.cwiseAbs().maxCoeff());
+      worst = std::max(worst, (a - combined.recorder.results[k].displacement[n]).cwiseAbs().maxCoeff());
+    }
+  EXPECT_LT(worst, 1e-12 * scale);
+  EXPECT_GT(*combined.last().plastic_dissipation, 0);
+}
+
+TEST(CombinedHardening, BadInputIsRefusedNamingTheLine) {
+  const std::string from = "*PLASTIC\n240., 0.\n";
+  std::string m = error_of(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n300., 1.\n"));
+  EXPECT_NE(m.find("test.inp:"), std::string::npos) << m;
+  EXPECT_NE(m.find("needs *CYCLIC HARDENING"), std::string::npos) << m;
+  m = error_of(replaced(cylinder_deck(), from, "*PLASTIC\n240., 0.\n*CYCLIC HARDENING\n240., 0.\n"));
+  EXPECT_NE(m.find("test.inp:"), std::string::npos) << m;
+  EXPECT_NE(m.find("needs a *PLASTIC, HARDENING=COMBINED"), std::string::npos) << m;
+  m = error_of(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n300., 1.\n"
+                                               "*CYCLIC HARDENING\n240., 0.\n230., 0.1\n250., 0.05\n"));
+  EXPECT_NE(m.find("test.inp:"), std::string::npos) << m;
+  EXPECT_NE(m.find("*CYCLIC HARDENING plastic strain 0.05"), std::string::npos) << m;
+  m = error_of(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n300., 1.\n"
+                                               "*CYCLIC HARDENING, PARAMETERS\n240., 100., 10.\n"));
+  EXPECT_NE(m.find("PARAMETERS"), std::string::npos) << m;
+  // Under NLGEOM combined hardening is refused.
+  m = error_of(replaced(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n300., 1.\n"
+                                                        "*CYCLIC HARDENING\n240., 0.\n"),
+                        "*STEP, INC=200", "*STEP, NLGEOM, INC=200"));
+  EXPECT_NE(m.find("COMBINED under NLGEOM"), std::string::npos) << m;
+}

@@ -53,7 +53,7 @@ void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
     throw ModelError("*PLASTIC under NLGEOM is not available for plane stress (CPS elements) in tether: use plane "
                      "strain (CPE) or axisymmetric (CAX) elements, or run the step without NLGEOM");
   if (hardening_ != Hardening::Isotropic)
-    throw ModelError("*PLASTIC, HARDENING=KINEMATIC under NLGEOM is not available in tether (the logarithmic "
+    throw ModelError("*PLASTIC, HARDENING=KINEMATIC or COMBINED under NLGEOM is not available in tether (the logarithmic "
                      "return needs the back stress coaxial with the elastic strain): use isotropic hardening, "
                      "or run the step without NLGEOM");
   // State: E_p = (I - Cp^-1) / 2 (Voigt, engineering shear; the plastic strain
