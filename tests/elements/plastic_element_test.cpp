@@ -119,6 +119,14 @@ TEST(PlasticElement, EvaluateCommitsNothingAndCommitStoresTheConvergedTrialState
   }
   EXPECT_EQ(a.element->strain_energy({u1, u1, 1, 1, 1, false}), energy_before);
   EXPECT_EQ(a.element->plastic_dissipation({u1, u1, 1, 1, 1, false}), dissipation_before);
+  // The increment's dissipation: all of it before the commit (virgin records), none after it; the
+  // next increment's is plastic_dissipation beyond the committed total.
+  EXPECT_EQ(b.element->plastic_dissipation_increment({u1, u1, 1, 1, 1, false}), dissipation_before);
+  EXPECT_EQ(a.element->plastic_dissipation_increment({u1, u1, 1, 1, 1, false}), 0.0);
+  const double next = a.element->plastic_dissipation_increment({u2, u1, 2, 2, 1, false});
+  EXPECT_GT(next, 0);
+  EXPECT_NEAR(next, a.element->plastic_dissipation({u2, u1, 2, 2, 1, false}) - dissipation_before,
+              1e-12 * dissipation_before);
   EXPECT_GT(a.element->plastic_dissipation({u1, u1, 1, 1, 1, false}), 0);
   // After the commit the element starts from the new history: unloading to u = 0 leaves a residual stress.
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(u1.size());

@@ -288,6 +288,27 @@ double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
   return total;
 }
 
+double ContinuumElement::plastic_dissipation_increment(const EvaluationState& s) const {
+  if (n_state_ == 0) return 0;
+  Eigen::VectorXd ue(2 * n_nodes_);
+  gather(s.u, ue);
+  if (committed_at(ue, s.total_time)) return 0;
+  MaterialPoint mp;
+  PointGeometry g;
+  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  double total = 0;
+  try {
+    for (int q = 0; q < n_points_; ++q) {
+      point_geometry(q, g);
+      material_point(q, g, ue.data(), s, mp, trial);
+      total += mp.dissipation * g.dV;
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+  return total;
+}
+
 void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointValues>& out) const {
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);

@@ -79,6 +79,11 @@ class ContinuumElement final : public Contribution {
   /// else theirs plus the increment to the trial state of s.u (as
   /// point_values); 0 without history.
   [[nodiscard]] double plastic_dissipation(const EvaluationState& s) const;
+  /// Plastic dissipation of the increment that ends at s [energy]: the trial
+  /// state's dissipation beyond the committed records (call it before
+  /// commit(s); 0 once the records are committed at s, and without history).
+  /// Equals plastic_dissipation(s) minus its value at the committed state.
+  [[nodiscard]] double plastic_dissipation_increment(const EvaluationState& s) const;
 
   [[nodiscard]] int label() const { return label_; }
   [[nodiscard]] const ElementType& type() const { return type_; }
