@@ -259,3 +259,124 @@ TEST(PlasticPunch, ForceAgainstIndentationMatchesCalculix) {
     for (const PointValues& p : element) peeq = std::max(peeq, p.peeq);
   EXPECT_NEAR(peeq, 0.02614461, 0.002 * 0.02614461);  // CalculiX: largest PEEQ at t = 1
 }
+
+namespace {
+
+std::string deck_file(const std::string& name) {
+  std::ifstream in(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks" / name);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Vertical displacement of Cook's membrane's tip (node set TIP) at the end.
+double cook_tip(const tether::testing::Run& run) { return run.last().displacement[run.model.node_sets.at("TIP").front()].y(); }
+
+/// Converged tip displacement of Simo and Armero's (1992) elastoplastic Cook's
+/// membrane (their Q1/E4 element on fine meshes).
+constexpr double kCookReference = 6.94;
+
+}  // namespace
+
+TEST(FiniteStrainPlasticity, CooksMembraneApproachesThePublishedTipDisplacement) {
+  // CPE8R, 4x4 and 8x8, ten load increments of the dead shear load 5 (NLGEOM).
+  const tether::testing::Run coarse = run_deck_text(deck_file("cook_membrane_4.inp"));
+  const tether::testing::Run fine = run_deck_text(deck_file("cook_membrane_8.inp"));
+  ASSERT_TRUE(coarse.summary.completed) << coarse.summary.message;
+  ASSERT_TRUE(fine.summary.completed) << fine.summary.message;
+  const double u4 = cook_tip(coarse), u8 = cook_tip(fine);
+  double peeq = 0;
+  for (const auto& element : fine.last().points)
+    for (const auto& p : element) peeq = std::max(peeq, p.peeq);
+  std::printf("Cook's membrane tip: 4x4 %.4f, 8x8 %.4f (reference %.2f: %.1f %%, %.1f %%); largest PEEQ %.3f\n", u4,
+              u8, kCookReference, 100 * (u4 / kCookReference - 1), 100 * (u8 / kCookReference - 1), peeq);
+  EXPECT_LT(u4, u8);  // from below, as CPE8R converges here (16x16: 6.913, 32x32: 6.964)
+  EXPECT_NEAR(u8, kCookReference, 0.03 * kCookReference);
+  EXPECT_NEAR(u4, kCookReference, 0.05 * kCookReference);
+  EXPECT_GT(peeq, 0.1);  // well into finite plastic strain
+}
+
+TEST(FiniteStrainPlasticity, NewtonConvergesQuadraticallyOnCooksMembrane) {
+  // Linear hardening (two table rows): the kinks of the saturation table
+  // would make the order drop to one whenever a point crosses a table row.
+  std::string deck = replaced(deck_file("cook_membrane_4.inp"), "0.1, 1., 1e-5, 0.1\n",
+                              "0.1, 1., 1e-5, 0.1\n*CONTROLS, PARAMETERS=FIELD\n1e-12, 1e-12\n");
+  const auto table = deck.find("*PLASTIC\n"), section = deck.find("*SOLID SECTION");
+  ASSERT_TRUE(table != std::string::npos && section != std::string::npos);
+  deck.replace(table, section - table, "*PLASTIC\n0.45, 0.\n1.45, 1.\n");
+  const tether::testing::Run run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  double worst = INFINITY;
+  int measured = 0;
+  for (const auto& r : run.recorder.residuals)
+    for (std::size_t k = 1; k + 1 < r.size(); ++k) {
+      // Asymptotic range: decreasing residuals, r_k below 1e-3 r_0 and r_k+1
+      // above round-off (about 1e-12 here). From r_k ~ 1e-2 r_0 the smallest
+      // order is 1.62 (points still switching between the elastic and plastic branches).
+      if (r[k + 1] < 1e-9 * r[0] || r[k] >= r[k - 1] || r[k + 1] >= r[k] || r[k] > 1e-3 * r[0]) continue;
+      const double order = std::log(r[k + 1] / r[k]) / std::log(r[k] / r[k - 1]);
+      worst = std::min(worst, order);
+      ++measured;
+    }
+  std::printf("Newton order on Cook's membrane (NLGEOM plasticity): %d measurements, smallest %.2f; %d increments, "
+              "%d iterations\n", measured, worst, run.summary.increments, run.summary.iterations);
+  EXPECT_GE(measured, 3);
+  EXPECT_GE(worst, 1.8);
+}
+
+namespace {
+
+std::string error_of(const std::string& deck) {
+  try {
+    const tether::testing::Run run = run_deck_text(deck);
+    return run.summary.completed ? "(completed)" : run.summary.message;
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+}
+
+}  // namespace
+
+TEST(CombinedHardening, ConstantCyclicTableGivesTheKinematicAnswer) {
+  // HARDENING=COMBINED with *CYCLIC HARDENING at the constant first yield
+  // stress is kinematic hardening: the thick cylinder loaded and unloaded.
+  const std::string from = "*PLASTIC\n240., 0.\n";
+  const auto kinematic = run_deck_text(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=KINEMATIC\n240., 0.\n"
+                                                                       "1240., 1.\n"));
+  const auto combined = run_deck_text(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n"
+                                                                      "1240., 1.\n*CYCLIC HARDENING\n240., 0.\n"));
+  ASSERT_TRUE(kinematic.summary.completed) << kinematic.summary.message;
+  ASSERT_TRUE(combined.summary.completed) << combined.summary.message;
+  ASSERT_EQ(kinematic.recorder.results.size(), combined.recorder.results.size());
+  double worst = 0, scale = 0;
+  for (std::size_t k = 0; k < kinematic.recorder.results.size(); ++k)
+    for (std::size_t n = 0; n < kinematic.last().displacement.size(); ++n) {
+      const Eigen::Vector2d a = kinematic.recorder.results[k].displacement[n];
+      scale = std::max(scale, a.cwiseAbs().maxCoeff());
+      worst = std::max(worst, (a - combined.recorder.results[k].displacement[n]).cwiseAbs().maxCoeff());
+    }
+  EXPECT_LT(worst, 1e-12 * scale);
+  EXPECT_GT(*combined.last().plastic_dissipation, 0);
+}
+
+TEST(CombinedHardening, BadInputIsRefusedNamingTheLine) {
+  const std::string from = "*PLASTIC\n240., 0.\n";
+  std::string m = error_of(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n300., 1.\n"));
+  EXPECT_NE(m.find("test.inp:"), std::string::npos) << m;
+  EXPECT_NE(m.find("needs *CYCLIC HARDENING"), std::string::npos) << m;
+  m = error_of(replaced(cylinder_deck(), from, "*PLASTIC\n240., 0.\n*CYCLIC HARDENING\n240., 0.\n"));
+  EXPECT_NE(m.find("test.inp:"), std::string::npos) << m;
+  EXPECT_NE(m.find("needs a *PLASTIC, HARDENING=COMBINED"), std::string::npos) << m;
+  m = error_of(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n300., 1.\n"
+                                               "*CYCLIC HARDENING\n240., 0.\n230., 0.1\n250., 0.05\n"));
+  EXPECT_NE(m.find("test.inp:"), std::string::npos) << m;
+  EXPECT_NE(m.find("*CYCLIC HARDENING plastic strain 0.05"), std::string::npos) << m;
+  m = error_of(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n300., 1.\n"
+                                               "*CYCLIC HARDENING, PARAMETERS\n240., 100., 10.\n"));
+  EXPECT_NE(m.find("PARAMETERS"), std::string::npos) << m;
+  // Under NLGEOM combined hardening is refused.
+  m = error_of(replaced(replaced(cylinder_deck(), from, "*PLASTIC, HARDENING=COMBINED\n240., 0.\n300., 1.\n"
+                                                        "*CYCLIC HARDENING\n240., 0.\n"),
+                        "*STEP, INC=200", "*STEP, NLGEOM, INC=200"));
+  EXPECT_NE(m.find("COMBINED under NLGEOM"), std::string::npos) << m;
+}

@@ -164,3 +164,29 @@ TEST(UserMaterial, BadInputIsRefusedNamingTheLine) {
   m = error_of(with("*ELASTIC\n200000, 0.3\n*USER MATERIAL, CONSTANTS=4, LIBRARY=" + lib + "\n1, 2, 3, 4\n"));
   EXPECT_NE(m.find("whole mechanical behaviour"), std::string::npos) << m;
 }
+
+TEST(UserMaterial, RateDependentRoutineRelaxesAtAHeldStrain) {
+  // One CPE4 whose every node is prescribed (eps_xx = 1e-3), then held for four
+  // increments of 1: a Maxwell UMAT (tau = 2) loses 1/3 of its stress per
+  // increment although the displacements do not change, so the committed
+  // records must be told apart by the time too.
+  const std::string deck = std::string(
+      "*NODE\n1, 0., 0.\n2, 1., 0.\n3, 1., 1.\n4, 0., 1.\n"
+      "*ELEMENT, TYPE=CPE4, ELSET=EALL\n1, 1, 2, 3, 4\n"
+      "*NSET, NSET=LEFT\n1, 4\n*NSET, NSET=RIGHT\n2, 3\n*NSET, NSET=ALLN\n1, 2, 3, 4\n"
+      "*MATERIAL, NAME=MAXWELL\n*USER MATERIAL, CONSTANTS=3, LIBRARY=") + TETHER_RELAXATION_UMAT +
+      "\n1000., 0.25, 2.\n*DEPVAR\n4\n"
+      "*SOLID SECTION, ELSET=EALL, MATERIAL=MAXWELL\n1.\n"
+      "*BOUNDARY\nALLN, 2, 2\nLEFT, 1, 1\nRIGHT, 1, 1, 1e-3\n"
+      "*STEP\n*STATIC, DIRECT\n1., 1.\n*END STEP\n"
+      "*STEP\n*STATIC, DIRECT\n1., 4.\n*END STEP\n";
+  const auto run = tether::testing::run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_EQ(run.recorder.results.size(), 5u);
+  const double lambda = 1000. * 0.25 / (1.25 * 0.5), mu = 1000. / 2.5;
+  for (std::size_t k = 0; k < 5; ++k) {
+    const double expected = (lambda + 2 * mu) * 1e-3 * std::pow(2.0 / 3.0, static_cast<double>(k + 1));
+    for (const auto& p : run.recorder.results[k].points[0])
+      EXPECT_NEAR(p.stress[0], expected, 1e-12 * (lambda + 2 * mu) * 1e-3) << "increment " << k + 1;
+  }
+}

@@ -70,6 +70,29 @@ TEST(PlasticElement, TangentMatchesFiniteDifferencesFromACommittedPlasticState) 
   }
 }
 
+TEST(PlasticElement, FiniteStrainTangentMatchesFiniteDifferencesFromACommittedPlasticState) {
+  // NLGEOM (isotropic hardening; plane strain and axisymmetry): material and geometric stiffness.
+  const J2Plasticity m = steel(J2Plasticity::Hardening::Isotropic);
+  for (const ElementType& type : supported_types()) {
+    if (type.family == Family::PlaneStress) continue;  // refused under NLGEOM
+    PlasticElement pe(type, m);
+    ContinuumElement& e = *pe.element;
+    const Eigen::VectorXd u1 = stretch(e, 0.05, 1);
+    e.commit({u1, u1, 1, 1, 1, true});
+    std::vector<PointValues> p;
+    e.point_values({u1, u1, 1, 1, 1, true}, p);
+    double peeq = 0;
+    for (const PointValues& v : p) peeq = std::max(peeq, v.peeq);
+    EXPECT_GT(peeq, 0.01) << e.describe();
+    for (double scale : {1.3, 0.995}) {  // further loading (plastic), unloading (elastic)
+      const Eigen::VectorXd u2 = scale * u1 + random_vector(u1.size(), 2e-4, 9);
+      const LocalSystem sys = evaluate_at(e, u2, true);
+      const Eigen::MatrixXd fd = fd_tangent(e, u2, true, 1e-8);
+      EXPECT_LT(max_abs(sys.tangent - fd), 1e-6 * max_abs(sys.tangent)) << e.describe() << " scale " << scale;
+    }
+  }
+}
+
 TEST(PlasticElement, EvaluateCommitsNothingAndCommitStoresTheConvergedTrialState) {
   const J2Plasticity m = steel(J2Plasticity::Hardening::Isotropic);
   const auto type = *find_element_type("CPE4");
@@ -96,6 +119,14 @@ TEST(PlasticElement, EvaluateCommitsNothingAndCommitStoresTheConvergedTrialState
   }
   EXPECT_EQ(a.element->strain_energy({u1, u1, 1, 1, 1, false}), energy_before);
   EXPECT_EQ(a.element->plastic_dissipation({u1, u1, 1, 1, 1, false}), dissipation_before);
+  // The increment's dissipation: all of it before the commit (virgin records), none after it; the
+  // next increment's is plastic_dissipation beyond the committed total.
+  EXPECT_EQ(b.element->plastic_dissipation_increment({u1, u1, 1, 1, 1, false}), dissipation_before);
+  EXPECT_EQ(a.element->plastic_dissipation_increment({u1, u1, 1, 1, 1, false}), 0.0);
+  const double next = a.element->plastic_dissipation_increment({u2, u1, 2, 2, 1, false});
+  EXPECT_GT(next, 0);
+  EXPECT_NEAR(next, a.element->plastic_dissipation({u2, u1, 2, 2, 1, false}) - dissipation_before,
+              1e-12 * dissipation_before);
   EXPECT_GT(a.element->plastic_dissipation({u1, u1, 1, 1, 1, false}), 0);
   // After the commit the element starts from the new history: unloading to u = 0 leaves a residual stress.
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(u1.size());

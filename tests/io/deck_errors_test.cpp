@@ -217,8 +217,13 @@ TEST(DeckErrors, PlasticTableNamesTheBadLine) {
   expect_deck_error_at(replaced(plastic, "250, 0\n", "-250, 0\n"), "-250, 0", {"yield stress > 0"});
   expect_deck_error_at(replaced(plastic, "250, 0\n", "250, 0.001\n"), "250, 0.001", {"expected 0"});
   expect_deck_error_at(replaced(plastic, "300, 0.02", "300, 0.02, 20"), "300, 0.02, 20", {"temperature"});
-  expect_deck_error_at(replaced(plastic, "*PLASTIC", "*PLASTIC, HARDENING=COMBINED"), "COMBINED",
-                       {"COMBINED", "not supported yet"});
+  expect_deck_error_at(replaced(plastic, "320, 0.01", "320, 0.04\n*CYCLIC HARDENING\n250, 0"), "*CYCLIC HARDENING",
+                       {"*CYCLIC HARDENING", "needs a *PLASTIC, HARDENING=COMBINED"});
+  const std::string combined = replaced(replaced(plastic, "*PLASTIC", "*PLASTIC, HARDENING=COMBINED"), "320, 0.01",
+                                        "320, 0.04\n*CYCLIC HARDENING\n250, 0\n260, 0");
+  expect_deck_error_at(combined, "260, 0", {"*CYCLIC HARDENING plastic strain 0", "greater than the previous"});
+  expect_deck_error_at(replaced(combined, "*CYCLIC HARDENING", "*CYCLIC HARDENING, PARAMETERS"), "*CYCLIC HARDENING",
+                       {"PARAMETERS"});
   expect_deck_error_at(replaced(plastic, "320, 0.01", "320, 0.04\n*PLASTIC\n1, 0"), "*PLASTIC\n1, 0",
                        {"already has *PLASTIC"});
 }

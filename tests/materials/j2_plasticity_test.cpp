@@ -24,6 +24,11 @@ J2Plasticity isotropic() {
 J2Plasticity kinematic() {
   return {kE, kNu, HardeningCurve({0, 1}, {200, 10200}), J2Plasticity::Hardening::Kinematic};
 }
+/// Combined: back stress from (0, 200), (0.01, 260), (1, 1000); yield stress (0, 200), (0.005, 300), (1, 900).
+J2Plasticity combined() {
+  return {kE, kNu, HardeningCurve({0, 0.01, 1}, {200, 260, 1000}), J2Plasticity::Hardening::Combined,
+          HardeningCurve({0, 0.005, 1}, {200, 300, 900})};
+}
 
 using State = std::vector<double>;
 
@@ -74,7 +79,7 @@ bool check_tangent(const J2Plasticity& m, const Vec6& eps, bool plane, const Sta
 TEST(J2Plasticity, TangentMatchesFiniteDifferencesOnBothBranches) {
   std::mt19937 gen(11);
   std::uniform_real_distribution<double> d(-1, 1);
-  for (const J2Plasticity& m : {isotropic(), kinematic()})
+  for (const J2Plasticity& m : {isotropic(), kinematic(), combined()})
     for (bool plane : {false, true}) {
       int n_plastic = 0, n_elastic = 0;
       for (int k = 0; k < 40; ++k) {
@@ -357,5 +362,43 @@ TEST(J2Plasticity, NonRadialTensionShearPathFollowsTheRateSolution) {
     const double coarse = largest_error(plane, 30), fine = largest_error(plane, 120);
     EXPECT_LT(coarse, 1e-2);
     EXPECT_LT(fine, 0.3 * coarse);
+  }
+}
+
+TEST(J2Plasticity, UniaxialLoadUnloadReverseCombinedMatchesClosedForm) {
+  // Combined (CalculiX's reading): yield stress c(p) = s0 + Hi p from the
+  // cyclic table, back stress from the *PLASTIC table's slope Hk. Uniaxially,
+  // with the back stress b = Hk ep: |sigma - b| = s0 + Hi p.
+  const double s0 = 200, Hi = 5000, Hk = 10000, Hh = Hi + Hk;
+  const J2Plasticity m{kE, kNu, HardeningCurve({0, 1}, {s0, s0 + Hk}), J2Plasticity::Hardening::Combined,
+                       HardeningCurve({0, 1}, {s0, s0 + Hi})};
+  for (bool plane : {false, true}) {
+    UniaxialTest t{m, plane};
+    double worst = 0;
+    const double eps1 = 0.02;
+    for (int k = 1; k <= 40; ++k) {
+      const double e = eps1 * k / 40;
+      const double expected = e * kE <= s0 ? e * kE : (s0 + Hh * e) / (1 + Hh / kE);
+      worst = std::max(worst, std::abs(t.strain_to(e) - expected) / s0);
+    }
+    const double sigma1 = (s0 + Hh * eps1) / (1 + Hh / kE), ep1 = eps1 - sigma1 / kE;
+    double work = (s0 + 0.5 * Hh * ep1) * ep1;
+    EXPECT_NEAR(t.state[12], ep1, 1e-12);
+    // Reverse: elastic down to Hk ep1 - (s0 + Hi ep1) (both the shift and the
+    // growth show), then sigma (1 + Hh/E) = Hh eps - s0 - 2 Hi ep1.
+    const double reverse_yield = Hk * ep1 - s0 - Hi * ep1;
+    double sigma_end = 0, ep_end = 0;
+    for (int k = 1; k <= 80; ++k) {
+      const double e = eps1 - 0.04 * k / 80;
+      const double elastic = sigma1 - kE * (eps1 - e);
+      const double expected = elastic >= reverse_yield ? elastic : (Hh * e - s0 - 2 * Hi * ep1) / (1 + Hh / kE);
+      worst = std::max(worst, std::abs(t.strain_to(e) - expected) / s0);
+      sigma_end = expected, ep_end = e - expected / kE;
+    }
+    EXPECT_LT(worst, 1e-8) << (plane ? "plane stress" : "3D");
+    EXPECT_NEAR(t.state[0], ep_end, 1e-12);
+    EXPECT_NEAR(t.state[12], ep1 + (ep1 - ep_end), 1e-12);
+    work += 0.5 * (reverse_yield + sigma_end) * (ep_end - ep1);
+    EXPECT_NEAR(t.dissipation, work, 1e-9 * work) << (plane ? "plane stress" : "3D");
   }
 }

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
-#include "tether/constraints/shared_library.hpp"
+#include "tether/core/shared_library.hpp"
 #include "tether/constraints/user_constraint.h"
 #include "tether/model/results.hpp"
 

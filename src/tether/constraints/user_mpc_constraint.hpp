@@ -39,7 +39,7 @@
 #include <vector>
 
 #include "tether/constraints/constraint_function.hpp"
-#include "tether/constraints/shared_library.hpp"
+#include "tether/core/shared_library.hpp"
 #include "tether/constraints/user_mpc.h"
 
 namespace tether {

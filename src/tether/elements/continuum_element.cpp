@@ -122,8 +122,9 @@ std::span<const double> ContinuumElement::committed_state(int q) const {
                                                    static_cast<std::size_t>(n_state_));
 }
 
-bool ContinuumElement::committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue) const {
+bool ContinuumElement::committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue, double total_time) const {
   if (n_state_ == 0) return false;
+  if (total_time != committed_time_) return false;  // a rate-dependent material differs at the same strain
   for (int i = 0; i < 2 * n_nodes_; ++i)
     if (ue(i) != committed_u_[static_cast<std::size_t>(i)]) return false;
   return true;
@@ -239,7 +240,7 @@ void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool
 double ContinuumElement::strain_energy(const EvaluationState& s) const {
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
-  const bool from_records = committed_at(ue);
+  const bool from_records = committed_at(ue, s.total_time);
   const int record = kRecordState + n_state_;
   MaterialPoint mp;
   PointGeometry g;
@@ -265,7 +266,7 @@ double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
   if (n_state_ == 0) return 0;
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
-  const bool from_records = committed_at(ue);
+  const bool from_records = committed_at(ue, s.total_time);
   const int record = kRecordState + n_state_;
   MaterialPoint mp;
   PointGeometry g;
@@ -287,11 +288,32 @@ double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
   return total;
 }
 
+double ContinuumElement::plastic_dissipation_increment(const EvaluationState& s) const {
+  if (n_state_ == 0) return 0;
+  Eigen::VectorXd ue(2 * n_nodes_);
+  gather(s.u, ue);
+  if (committed_at(ue, s.total_time)) return 0;
+  MaterialPoint mp;
+  PointGeometry g;
+  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  double total = 0;
+  try {
+    for (int q = 0; q < n_points_; ++q) {
+      point_geometry(q, g);
+      material_point(q, g, ue.data(), s, mp, trial);
+      total += mp.dissipation * g.dV;
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+  return total;
+}
+
 void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointValues>& out) const {
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
   out.resize(n_points_);
-  const bool from_records = committed_at(ue);
+  const bool from_records = committed_at(ue, s.total_time);
   const int record = kRecordState + n_state_;
   MaterialPoint mp;
   PointGeometry g;
@@ -328,7 +350,7 @@ void ContinuumElement::commit(const EvaluationState& s) {
   if (n_state_ == 0) return;
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
-  if (committed_at(ue)) return;  // already the committed state of these displacements
+  if (committed_at(ue, s.total_time)) return;  // already the committed state of these displacements
   const int record = kRecordState + n_state_;
   std::vector<double> next(history_.size());
   MaterialPoint mp;
@@ -348,10 +370,11 @@ void ContinuumElement::commit(const EvaluationState& s) {
   }
   history_.swap(next);
   committed_u_.assign(ue.data(), ue.data() + ue.size());
+  committed_time_ = s.total_time;
 }
 
 namespace {
-constexpr double kHistoryTag = 7301;  ///< first value of a ContinuumElement's saved state
+constexpr double kHistoryTag = 7302;  ///< first value of a ContinuumElement's saved state (7301: stamp without the time)
 }  // namespace
 
 void ContinuumElement::save_state(std::vector<double>& out) const {
@@ -361,6 +384,7 @@ void ContinuumElement::save_state(std::vector<double>& out) const {
   out.push_back(kRecordState + n_state_);
   out.insert(out.end(), history_.begin(), history_.end());
   out.insert(out.end(), committed_u_.begin(), committed_u_.end());
+  out.push_back(committed_time_);
 }
 
 void ContinuumElement::load_state(std::span<const double>& in) {
@@ -369,12 +393,14 @@ void ContinuumElement::load_state(std::span<const double>& in) {
   saved_state::take_int(in, n_points_, n_points_, "number of integration points");
   const int record = kRecordState + n_state_;
   saved_state::take_int(in, record, record, "history record size");
-  const std::size_t n = history_.size() + committed_u_.size();
+  const std::size_t n = history_.size() + committed_u_.size() + 1;
   if (in.size() < n) throw std::runtime_error("its saved state is too short");
   std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(history_.size()), history_.begin());
   in = in.subspan(history_.size());
   std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(committed_u_.size()), committed_u_.begin());
   in = in.subspan(committed_u_.size());
+  committed_time_ = in.front();
+  in = in.subspan(1);
 }
 
 void ContinuumElement::mass(MassKind kind, Eigen::MatrixXd& out) const {

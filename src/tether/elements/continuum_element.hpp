@@ -64,10 +64,11 @@ class ContinuumElement final : public Contribution {
   /// material's state); evaluate() computes the trial state from it and the
   /// current displacements and stores nothing, so a cut-back needs no
   /// restore. commit() evaluates the points at s.u and makes that trial state
-  /// the committed one, stamped with the element's displacements at s.u.
+  /// the committed one, stamped with the element's displacements at s.u and
+  /// the total time.
   /// Nothing is kept for a material without history (n_state() == 0).
   void commit(const EvaluationState& s) override;
-  /// Restart: a tag, the record sizes, the records and the stamp (nothing
+  /// Restart: a tag, the record sizes, the records and the stamp (displacements, time) (nothing
   /// without history).
   void save_state(std::vector<double>& out) const override;
   void load_state(std::span<const double>& in) override;
@@ -78,6 +79,11 @@ class ContinuumElement final : public Contribution {
   /// else theirs plus the increment to the trial state of s.u (as
   /// point_values); 0 without history.
   [[nodiscard]] double plastic_dissipation(const EvaluationState& s) const;
+  /// Plastic dissipation of the increment that ends at s [energy]: the trial
+  /// state's dissipation beyond the committed records (call it before
+  /// commit(s); 0 once the records are committed at s, and without history).
+  /// Equals plastic_dissipation(s) minus its value at the committed state.
+  [[nodiscard]] double plastic_dissipation_increment(const EvaluationState& s) const;
 
   [[nodiscard]] int label() const { return label_; }
   [[nodiscard]] const ElementType& type() const { return type_; }
@@ -136,8 +142,10 @@ class ContinuumElement final : public Contribution {
   [[nodiscard]] PointContext context(const EvaluationState& s, int q, const PointGeometry& g) const;
   /// Point q's material state in the committed records (empty without history).
   [[nodiscard]] std::span<const double> committed_state(int q) const;
-  /// True when the committed records were committed at the local displacements ue.
-  [[nodiscard]] bool committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue) const;
+  /// True when the committed records were committed at the local
+  /// displacements ue and the total time `total_time` (a rate-dependent user
+  /// material answers differently at the same strain and another time).
+  [[nodiscard]] bool committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue, double total_time) const;
   template <int NN>
   void evaluate_kernel(const double* ue, const EvaluationState& s, LocalSystem& out, bool need_tangent) const;
 
@@ -159,7 +167,8 @@ class ContinuumElement final : public Contribution {
   int n_points_;
   int n_state_;                        ///< material state values per point
   std::vector<double> history_;        ///< committed records, n_points_ x (kRecordState + n_state_); empty without history
-  std::vector<double> committed_u_;    ///< local displacements of the committed records (the stamp)
+  std::vector<double> committed_u_;    ///< local displacements of the committed records (the stamp, with the time)
+  double committed_time_ = 0;          ///< total time of the committed records (the stamp, with committed_u_)
 };
 
 }  // namespace tether

@@ -25,6 +25,7 @@ TETHER_DECK_HANDLER(handle_hyperelastic);
 TETHER_DECK_HANDLER(handle_density);
 // plastic_keywords.cpp
 TETHER_DECK_HANDLER(handle_plastic);
+TETHER_DECK_HANDLER(handle_cyclic_hardening);
 // user_material_keywords.cpp
 TETHER_DECK_HANDLER(handle_user_material);
 TETHER_DECK_HANDLER(handle_depvar);

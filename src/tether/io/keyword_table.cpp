@@ -143,15 +143,23 @@ std::vector<KeywordSpec> build_table() {
        {flag("NEO HOOKE", "Neo-Hookean strain energy (required; the only model supported).")},
        handle_hyperelastic, ""},
       {"PLASTIC", kMaterial,
-       "Von Mises plasticity on the material's *ELASTIC range (small strain; docs/theory/plasticity.md): true yield "
+       "Von Mises plasticity on the material's *ELASTIC range (small strain; multiplicative with Hencky elasticity "
+       "under NLGEOM, isotropic hardening, not plane stress; docs/theory/plasticity.md): true yield "
        "stress against equivalent plastic strain, piecewise linear, constant beyond the last row.",
        "`yield stress, plastic strain` per line, yield stress > 0, plastic strain 0 on the first line and strictly "
        "increasing (no temperature column)",
        {choice("HARDENING", "ISOTROPIC", {"ISOTROPIC", "KINEMATIC", "COMBINED"},
                "ISOTROPIC: the yield stress follows the table; KINEMATIC: the yield stress stays the first one and "
                "the back stress grows with the table's slope (Prager-Ziegler, linear kinematic hardening for two "
-               "rows); COMBINED is not supported yet.")},
+               "rows); COMBINED (small strain): the yield stress follows *CYCLIC HARDENING and the back stress "
+               "grows with this table's slope, as CalculiX reads it.")},
        handle_plastic, ""},
+      {"CYCLIC HARDENING", kMaterial,
+       "The isotropic part of *PLASTIC, HARDENING=COMBINED (given after it): the yield stress against the "
+       "equivalent plastic strain, piecewise linear, constant beyond the last row.",
+       "`yield stress, plastic strain` per line, as for *PLASTIC (no temperature column; no PARAMETERS form)",
+       {},
+       handle_cyclic_hardening, ""},
       {"USER MATERIAL", kMaterial,
        "The material's mechanical behaviour from an ABAQUS UMAT in a shared library, loaded at run time (small "
        "strain; src/tether/materials/user_material.h documents the arguments; a gfortran UMAT works as is).",

@@ -19,12 +19,22 @@ std::unique_ptr<ConstitutiveModel> make_plasticity(const MaterialData& data) {
   const MaterialData::Plastic& p = *data.plastic;
   for (double y : p.yield_stress)
     if (!(y > 0)) fail(data, "*PLASTIC yield stress must be positive (got " + std::to_string(y) + ")");
+  using Kind = MaterialData::Plastic::Hardening;
+  const bool combined = p.hardening == Kind::Combined;
+  if (combined && p.cyclic_yield_stress.empty())
+    fail(data, "*PLASTIC, HARDENING=COMBINED (" + p.where.str() + ") needs *CYCLIC HARDENING (the yield stress "
+               "against the equivalent plastic strain) after it");
+  if (!combined && !p.cyclic_yield_stress.empty())
+    fail(data, "*CYCLIC HARDENING (" + p.cyclic_where.str() + ") needs *PLASTIC, HARDENING=COMBINED");
   try {
     HardeningCurve curve(p.plastic_strain, p.yield_stress);
-    const auto hardening = p.hardening == MaterialData::Plastic::Hardening::Kinematic
-                               ? J2Plasticity::Hardening::Kinematic
-                               : J2Plasticity::Hardening::Isotropic;
-    return std::make_unique<J2Plasticity>(data.elastic->young, data.elastic->poisson, std::move(curve), hardening);
+    const auto hardening = p.hardening == Kind::Kinematic ? J2Plasticity::Hardening::Kinematic
+                           : combined                     ? J2Plasticity::Hardening::Combined
+                                                          : J2Plasticity::Hardening::Isotropic;
+    std::optional<HardeningCurve> cyclic;
+    if (combined) cyclic.emplace(p.cyclic_plastic_strain, p.cyclic_yield_stress);
+    return std::make_unique<J2Plasticity>(data.elastic->young, data.elastic->poisson, std::move(curve), hardening,
+                                          std::move(cyclic));
   } catch (const std::invalid_argument& e) {
     fail(data, std::string("*PLASTIC: ") + e.what());
   }

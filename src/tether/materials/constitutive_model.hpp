@@ -134,7 +134,7 @@ class ElasticModel : public ConstitutiveModel {
 
 /// Builds the model of a `*MATERIAL`: `*ELASTIC` -> LinearElastic (St.Venant-
 /// Kirchhoff under NLGEOM), `*HYPERELASTIC, NEO HOOKE` -> NeoHooke,
-/// `*ELASTIC` with `*PLASTIC` -> J2Plasticity (small strain only).
+/// `*ELASTIC` with `*PLASTIC` -> J2Plasticity (finite strain under NLGEOM).
 /// Throws ModelError naming the material and its deck line when neither or
 /// both are given or the constants are out of range (E <= 0, nu outside
 /// (-1, 0.5), C10 <= 0, D1 <= 0).

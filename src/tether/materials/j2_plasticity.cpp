@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
+#include <stdexcept>
 
 #include "tether/core/error.hpp"
 
@@ -67,19 +68,34 @@ struct J2Plasticity::Hardened {
   double H, dH;  ///< uniaxial back stress function and dH/dp
 };
 
-J2Plasticity::J2Plasticity(double young, double poisson, HardeningCurve curve, Hardening hardening)
-    : young_(young), poisson_(poisson), elastic_(young, poisson), curve_(std::move(curve)), hardening_(hardening) {}
+J2Plasticity::J2Plasticity(double young, double poisson, HardeningCurve curve, Hardening hardening,
+                           std::optional<HardeningCurve> cyclic)
+    : young_(young),
+      poisson_(poisson),
+      elastic_(young, poisson),
+      curve_(std::move(curve)),
+      hardening_(hardening),
+      cyclic_(std::move(cyclic)) {
+  if (hardening_ == Hardening::Combined && !cyclic_)
+    throw std::invalid_argument("combined hardening needs the cyclic hardening table");
+}
 
 J2Plasticity::Hardened J2Plasticity::hardened(double p) const {
   if (hardening_ == Hardening::Isotropic) return {curve_.value(p), curve_.slope(p), 0, 0};
-  return {curve_.initial(), 0, curve_.value(p) - curve_.initial(), curve_.slope(p)};
+  const double H = curve_.value(p) - curve_.initial(), dH = curve_.slope(p);
+  if (hardening_ == Hardening::Combined) return {cyclic_->value(p), cyclic_->slope(p), H, dH};
+  return {curve_.initial(), 0, H, dH};
 }
 
 double J2Plasticity::plastic_work(double p_old, double dp, double alpha_dot_n) const {
   // sigma : d eps_p along the return, d eps_p = sqrt(3/2) dp n: the relative
   // stress gives K dp, the back stress (alpha_n + sqrt(2/3) (H - H_n) n) : n
-  // sqrt(3/2) dp; summed, y(p) dp - H_n dp + sqrt(3/2) alpha_n : n dp.
-  return curve_.integral(p_old, p_old + dp) - hardened(p_old).H * dp + kSqrt32 * alpha_dot_n * dp;
+  // sqrt(3/2) dp; summed, (K + H)(p) dp - H_n dp + sqrt(3/2) alpha_n : n dp,
+  // with K + H = y for isotropic and kinematic hardening, c + y - y(0) for combined.
+  const double p_new = p_old + dp;
+  double k_plus_h = curve_.integral(p_old, p_new);
+  if (hardening_ == Hardening::Combined) k_plus_h += cyclic_->integral(p_old, p_new) - curve_.initial() * dp;
+  return k_plus_h - hardened(p_old).H * dp + kSqrt32 * alpha_dot_n * dp;
 }
 
 double J2Plasticity::yield_radius(double p) const { return hardened(p).K; }
@@ -90,14 +106,11 @@ Vec6 J2Plasticity::plastic_strain(std::span<const double> state) const {
 }
 
 std::string J2Plasticity::describe() const {
+  const char* kind = hardening_ == Hardening::Isotropic   ? "isotropic"
+                     : hardening_ == Hardening::Kinematic ? "kinematic"
+                                                          : "combined";
   return fmt::format("von Mises plasticity (E={:g}, nu={:g}, yield stress {:g}, {} hardening, {} table rows)",
-                     young_, poisson_, curve_.initial(),
-                     hardening_ == Hardening::Isotropic ? "isotropic" : "kinematic", curve_.n_points());
-}
-
-void J2Plasticity::update_finite_strain(Eigen::Matrix3d&, bool, std::span<const double>, std::span<double>,
-                                        const PointContext&, MaterialResponse&) const {
-  throw ModelError("*PLASTIC is small strain only in tether: run the step without NLGEOM");
+                     young_, poisson_, yield_radius(0), kind, curve_.n_points());
 }
 
 void J2Plasticity::update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,

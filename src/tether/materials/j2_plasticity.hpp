@@ -2,6 +2,8 @@
 /// \file `*PLASTIC`: small-strain von Mises plasticity with isotropic or
 /// kinematic piecewise-linear hardening. See docs/theory/plasticity.md.
 
+#include <optional>
+
 #include "tether/materials/constitutive_model.hpp"
 #include "tether/materials/hardening_curve.hpp"
 #include "tether/materials/linear_elastic.hpp"
@@ -19,22 +21,39 @@ namespace tether {
 /// - Kinematic: the yield stress stays y(0) and the back stress moves by the
 ///   Prager-Ziegler rule with the modulus dy/dp (linear kinematic hardening
 ///   for a two-point table; piecewise in p for more rows).
+/// - Combined (with *CYCLIC HARDENING, as CalculiX reads it): the yield
+///   stress is c(p) of the cyclic table and the back stress moves as for
+///   Kinematic with y(p) - y(0).
 ///
 /// State (13 values): plastic strain (Voigt, engineering shear), back stress
-/// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p.
+/// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p. Under
+/// NLGEOM: E_p = (I - Cp^-1)/2 (Voigt, engineering shear), six unused
+/// values, PEEQ.
+///
+/// Finite strain (NLGEOM, isotropic hardening, plane strain and
+/// axisymmetry): F = Fe Fp, Hencky elasticity tau = D : ln(Ve) with the
+/// small-strain constants, von Mises on the Kirchhoff stress, isochoric flow
+/// integrated by the exponential map; the return on the principal
+/// logarithmic strains is the small-strain radial return, and the tangent
+/// dS/dE is its exact linearisation (symmetric).
 class J2Plasticity final : public ConstitutiveModel {
  public:
-  enum class Hardening { Isotropic, Kinematic };
+  enum class Hardening { Isotropic, Kinematic, Combined };
   static constexpr int kStateSize = 13;
 
-  /// young > 0, poisson in (-1, 0.5), curve values > 0 (checked by the caller).
-  J2Plasticity(double young, double poisson, HardeningCurve curve, Hardening hardening);
+  /// young > 0, poisson in (-1, 0.5), curve values > 0 (checked by the
+  /// caller). `cyclic`: the yield stress against PEEQ of Combined hardening
+  /// (values > 0); required for Combined, ignored otherwise.
+  J2Plasticity(double young, double poisson, HardeningCurve curve, Hardening hardening,
+               std::optional<HardeningCurve> cyclic = std::nullopt);
 
   [[nodiscard]] int n_state() const override { return kStateSize; }
   void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
                            std::span<double> new_state, const PointContext& where,
                            MaterialResponse& out) const override;
-  /// Throws ModelError: tether's plasticity is small strain only.
+  /// Finite strain (see the class comment): PK2 stress, dS/dE, E_p and PEEQ.
+  /// Throws ModelError for plane stress and for kinematic hardening, which
+  /// tether does not provide under NLGEOM.
   void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
                             std::span<double> new_state, const PointContext& where,
                             MaterialResponse& out) const override;
@@ -66,6 +85,7 @@ class J2Plasticity final : public ConstitutiveModel {
   LinearElastic elastic_;
   HardeningCurve curve_;
   Hardening hardening_;
+  std::optional<HardeningCurve> cyclic_;  ///< Combined: the yield stress c(p)
 };
 
 }  // namespace tether

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "tether/constraints/shared_library.hpp"
+#include "tether/core/shared_library.hpp"
 #include "tether/core/error.hpp"
 
 namespace tether {

@@ -70,11 +70,15 @@ struct MaterialData {
   /// `*PLASTIC`: von Mises plasticity, true yield stress against equivalent
   /// plastic strain, piecewise linear and constant beyond the last row.
   struct Plastic {
-    enum class Hardening { Isotropic, Kinematic };
+    enum class Hardening { Isotropic, Kinematic, Combined };
     Hardening hardening = Hardening::Isotropic;
     std::vector<double> yield_stress;    ///< [stress], > 0, one per row
     std::vector<double> plastic_strain;  ///< [-], 0 first, strictly increasing
     SourceLocation where;                ///< the *PLASTIC line
+    /// `*CYCLIC HARDENING` (HARDENING=COMBINED): the yield stress against
+    /// PEEQ, same rules as the *PLASTIC rows; empty when not given.
+    std::vector<double> cyclic_yield_stress, cyclic_plastic_strain;
+    SourceLocation cyclic_where;         ///< the *CYCLIC HARDENING line
   };
   std::optional<Plastic> plastic;
   /// `*USER MATERIAL`: an ABAQUS UMAT loaded from a shared library.

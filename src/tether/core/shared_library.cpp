@@ -1,4 +1,4 @@
-#include "tether/constraints/shared_library.hpp"
+#include "tether/core/shared_library.hpp"
 
 #include <dlfcn.h>
 
