@@ -384,6 +384,106 @@ TEST(ExplicitContact, CorrectorConservesLinearMomentum) {
   }
 }
 
+/// Nodes and CPE4 of an n x n block of side `size` with its lower left corner
+/// at (x0, y0), labels from `first_node` / `first_element`, in ELSET `elset`;
+/// node (i, j) is first_node + j (n + 1) + i. Element (i, j) is
+/// first_element + j n + i; its face S2 is on x = x0 + size when i = n - 1, S4 on x = x0 when i = 0.
+std::string block_mesh(int first_node, int first_element, double x0, double y0, double size, int n,
+                       const std::string& elset) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "*NODE, NSET=" << elset << "N\n";
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) d << first_node + j * (n + 1) + i << ", " << x0 + size * i / n << ", " << y0 + size * j / n << "\n";
+  d << "*ELEMENT, TYPE=CPE4, ELSET=" << elset << "\n";
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = first_node + j * (n + 1) + i;
+      d << first_element + j * n + i << ", " << a << ", " << a + 1 << ", " << a + n + 2 << ", " << a + n + 1 << "\n";
+    }
+  return d.str();
+}
+
+/// Linear and angular momentum (about the origin, of the positions X + u) of a report [N s], [N m s].
+struct Momentum {
+  Eigen::Vector2d linear{0, 0};
+  double angular = 0;
+};
+Momentum momentum(const IncrementResults& r, const Model& model, const Eigen::VectorXd& nodal_mass) {
+  Momentum m;
+  for (std::size_t i = 0; i < model.coords.size(); ++i) {
+    const Eigen::Vector2d x = model.coords[i] + r.displacement[i];
+    const Eigen::Vector2d v = r.velocity[i];
+    m.linear += nodal_mass[static_cast<Eigen::Index>(i)] * v;
+    m.angular += nodal_mass[static_cast<Eigen::Index>(i)] * (x.x() * v.y() - x.y() * v.x());
+  }
+  return m;
+}
+
+/// The lumped mass of each node of a deck's first step [mass].
+Eigen::VectorXd nodal_masses(const std::string& deck);
+
+TEST(ExplicitContact, CorrectorConservesAngularMomentum) {
+  // A 3 x 3 block moving at (2, 0.5) hits the upper half of a resting 4 x 4
+  // block off its centre (NLGEOM: the elements' forces are objective). The
+  // corrector's forces act along the gap gradient at t_n, whose moment about
+  // the positions of t_n is zero: the angular momentum is that of the start to round-off.
+  const std::string deck = block_mesh(1, 1, -0.8, 0.5, 0.8, 3, "A") + block_mesh(101, 101, 0, 0, 1, 4, "B") +
+                           "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n*SOLID SECTION, ELSET=A, MATERIAL=M\n"
+                           "*SOLID SECTION, ELSET=B, MATERIAL=M\n*SURFACE, NAME=AR\n3, S2\n6, S2\n9, S2\n"
+                           "*SURFACE, NAME=BL\n101, S4\n105, S4\n109, S4\n113, S4\n*SURFACE INTERACTION, NAME=I\n"
+                           "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nAR, BL\n"
+                           "*INITIAL CONDITIONS, TYPE=VELOCITY\nAN, 1, 2.\nAN, 2, 0.5\n"
+                           "*STEP, NLGEOM\n*DYNAMIC, EXPLICIT\n, 0.3\n*END STEP\n";
+  const DeckRun run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const Eigen::VectorXd mass = nodal_masses(deck);
+  Momentum start;
+  for (std::size_t i = 0; i < run.model.coords.size(); ++i) {
+    const Eigen::Vector2d v = i < 16 ? Eigen::Vector2d(2, 0.5) : Eigen::Vector2d(0, 0);
+    start.linear += mass[static_cast<Eigen::Index>(i)] * v;
+    start.angular += mass[static_cast<Eigen::Index>(i)] * (run.model.coords[i].x() * v.y() - run.model.coords[i].y() * v.x());
+  }
+  double worst_linear = 0, worst_angular = 0, b_spin = 0;
+  int touching = 0;
+  for (const IncrementResults& r : run.recorder.results) {
+    const Momentum m = momentum(r, run.model, mass);
+    worst_linear = std::max(worst_linear, (m.linear - start.linear).norm());
+    worst_angular = std::max(worst_angular, std::abs(m.angular - start.angular));
+    touching += r.contact[0].total_force.norm() > 0;
+  }
+  // B's spin about its centre of mass at the end: the impact was off centre.
+  const IncrementResults& end = run.last();
+  Eigen::Vector2d centre(0, 0), b_velocity(0, 0);
+  double b_mass = 0;
+  for (std::size_t i = 16; i < run.model.coords.size(); ++i) {
+    const double m = mass[static_cast<Eigen::Index>(i)];
+    centre += m * (run.model.coords[i] + end.displacement[i]), b_velocity += m * end.velocity[i], b_mass += m;
+  }
+  centre /= b_mass, b_velocity /= b_mass;
+  for (std::size_t i = 16; i < run.model.coords.size(); ++i) {
+    const Eigen::Vector2d x = run.model.coords[i] + end.displacement[i] - centre, v = end.velocity[i] - b_velocity;
+    b_spin += mass[static_cast<Eigen::Index>(i)] * (x.x() * v.y() - x.y() * v.x());
+  }
+  std::printf("reports in contact %d; worst momentum change: linear %.3g of %.3g, angular %.3g of %.3g; B's spin %.3g\n",
+              touching, worst_linear, start.linear.norm(), worst_angular, std::abs(start.angular), b_spin);
+  EXPECT_GT(touching, 5);
+  EXPECT_GT(std::abs(b_spin), 0.01 * std::abs(start.angular));  // the test sees rotation
+  EXPECT_LT(worst_linear, 1e-13 * start.linear.norm());
+  EXPECT_LT(worst_angular, 1e-13 * std::abs(start.angular));
+}
+
+Eigen::VectorXd nodal_masses(const std::string& deck) {
+  const auto b = build(deck);
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(b->model.coords.size()));
+  for (const auto& m : b->system->inertia()) {
+    const auto dofs = m->dofs();
+    for (std::size_t i = 0; i < dofs.size(); i += 2)
+      out[b->discretization->dofs().node_of(dofs[i])] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+  }
+  return out;
+}
+
 TEST(ExplicitContact, SoftContactIsRefusedByName) {
   std::string deck = wall_deck(4, 0.01, 1, 1e-5);
   deck.replace(deck.find("*SURFACE INTERACTION, NAME=I\n"), 29,
