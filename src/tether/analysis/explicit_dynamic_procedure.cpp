@@ -55,7 +55,11 @@ void ExplicitDynamicProcedure::check_supported() const {
 
 void ExplicitDynamicProcedure::update_limit(const Eigen::VectorXd& u, double total_time, bool report) {
   const Step& step = system_.step();
-  stable_ = stable_increment(system_.inertia(), EvaluationState{u, u, 0, total_time, 0, step.nlgeom});
+  const EquationMap& equations = system_.equations();
+  stable_ = stable_increment(system_.inertia(), EvaluationState{u, u, 0, total_time, 0, step.nlgeom},
+                             [&equations](int dof) { return equations.is_prescribed(dof); });
+  if (stable_.element < 0)
+    throw ModelError("*DYNAMIC, EXPLICIT (step " + step.name + "): every dof of every element is held: nothing moves");
   const std::string where =
       system_.inertia()[static_cast<std::size_t>(stable_.element)]->element().describe();
   if (step.direct) {

@@ -26,15 +26,24 @@ double largest_frequency_squared(const Eigen::MatrixXd& stiffness, const Eigen::
 }
 
 StableIncrement stable_increment(const std::vector<std::unique_ptr<ElementInertia>>& inertia,
-                                 const EvaluationState& s) {
+                                 const EvaluationState& s, const std::function<bool(int)>& held) {
   StableIncrement out;
   LocalSystem local;
+  std::vector<Eigen::Index> free;
   for (std::size_t e = 0; e < inertia.size(); ++e) {
     const ElementInertia& m = *inertia[e];
-    local.reset(static_cast<Eigen::Index>(m.dofs().size()));
+    const auto dofs = m.dofs();
+    free.clear();
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      if (!held || !held(dofs[i])) free.push_back(static_cast<Eigen::Index>(i));
+    if (free.empty()) continue;
+    local.reset(static_cast<Eigen::Index>(dofs.size()));
     m.element().evaluate(s, local, true);
     const std::string what = m.element().describe();
-    const double omega2 = largest_frequency_squared(local.tangent, m.mass().diagonal(), what);
+    const Eigen::VectorXd mass = m.mass().diagonal();
+    const double omega2 = free.size() == dofs.size()
+                              ? largest_frequency_squared(local.tangent, mass, what)
+                              : largest_frequency_squared(local.tangent(free, free), mass(free), what);
     if (!(omega2 > 0) || !std::isfinite(omega2)) {
       std::ostringstream why;
       why << what << " gives a stable time increment that is not a positive number (largest omega^2 = " << omega2
