@@ -147,6 +147,26 @@ TEST(ExplicitDynamics, AFreeBodyFliesAtItsInitialVelocity) {
   EXPECT_EQ(e.work, 0);
 }
 
+TEST(ExplicitDynamics, GravityActsFromTheStartOfADynamicStep) {
+  // Dynamic steps hold their loads from the start (AMPLITUDE=STEP by
+  // default), body loads too: a free block falls g t^2 / 2, which central
+  // differences integrate exactly. A RAMP step ramps it: g t^3 / (6 T).
+  for (const std::string amplitude : {"", ", AMPLITUDE=RAMP"}) {
+    const std::string deck =
+        "*NODE\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n*ELEMENT, TYPE=CPE4, ELSET=ALL\n1, 1, 2, 3, 4\n*MATERIAL, NAME=M\n"
+        "*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n*SOLID SECTION, ELSET=ALL, MATERIAL=M\n*STEP" + amplitude +
+        "\n*DYNAMIC, EXPLICIT\n, 0.5\n*DLOAD\nALL, GRAV, 9.8, 0., -1.\n*END STEP\n";
+    const DeckRun run = run_deck_text(deck);
+    ASSERT_TRUE(run.summary.completed) << run.summary.message;
+    const double t = run.last().step_time;
+    const double expected = amplitude.empty() ? -9.8 * t * t / 2 : -9.8 * t * t * t / (6 * 0.5);
+    // Exact for a constant acceleration; O(h^2) for the ramp (18 increments: 0.3 %).
+    const double tolerance = amplitude.empty() ? 1e-12 : 1e-2;
+    for (const Eigen::Vector2d& u : run.last().displacement)
+      EXPECT_NEAR(u.y(), expected, tolerance * std::abs(expected)) << amplitude;
+  }
+}
+
 /// A square CPE4 of side `a` (E, nu of the bar, density `rho`) free of
 /// supports, one node pushed; `procedure` is the *DYNAMIC block.
 std::string square_deck(const std::string& procedure, double a = 1, double rho = 1) {

@@ -266,7 +266,11 @@ IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttemp
 }
 
 bool ExplicitDynamicProcedure::diverged(const EnergyTotals& e) const {
-  const double put_in = std::abs(motion_.balance_start) + std::abs(e.work);
+  // What was put in, plus what the forces at t_n put in over one increment
+  // (the full-step kinetic energy runs half an increment ahead of ALLWK: a
+  // model at rest loaded from t = 0 has ALLWK = 0 and ALLKE > 0 at the first report).
+  const double power = std::abs(force_.dot(motion_.v));
+  const double put_in = std::abs(motion_.balance_start) + std::abs(e.work) + h_previous_ * power;
   return !std::isfinite(e.total) || e.kinetic + e.strain > kEnergyGrowthLimit * put_in;
 }
 

@@ -102,7 +102,8 @@ class ExplicitDynamicProcedure final : public Procedure {
   IncrementResults interval_results(const IncrementAttempt& attempt, const EvaluationState& s,
                                     const ElementPointSource* points);
   /// The energy in the model (ALLKE + ALLSE) is not finite or more than
-  /// kEnergyGrowthLimit times what was put in (the balance's start plus |ALLWK|).
+  /// kEnergyGrowthLimit times what was put in (the balance's start plus |ALLWK|
+  /// plus h |F_n . v_n|, the work of the next increment).
   [[nodiscard]] bool diverged(const EnergyTotals& e) const;
 
   StepSystem& system_;
