@@ -123,6 +123,9 @@ void ExplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
   u_previous_ = u;
   force_previous_ = force_ = step_u_ = Eigen::VectorXd::Zero(n);
   h_previous_ = 0;
+  sort_elements();
+  residual_.resize(0), held_residual_.resize(0);
+  evaluate_held(EvaluationState{u, u, 0, step_start, 0, system_.step().nlgeom});
   evaluate_forces(EvaluationState{u, u, 0, step_start, 0, system_.step().nlgeom});
   if (!motion_.started) {
     EnergyTotals& e = motion_.energy;
@@ -137,9 +140,40 @@ void ExplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
   friction_start_ = motion_.energy.friction;
 }
 
+void ExplicitDynamicProcedure::sort_elements() {
+  const auto n = static_cast<std::size_t>(system_.discretization().dofs().n_dofs());
+  std::vector<bool> constant(n, false);
+  for (int d : prescribed_) constant[static_cast<std::size_t>(d)] = true;  // held dofs keep their values...
+  for (const auto& [dof, v] : system_.loads().prescribed)  // ... unless the step moves them
+    constant[static_cast<std::size_t>(dof)] = v.amplitude < 0 ? v.start == v.target : v.target == 0;
+  moving_elements_.clear(), held_elements_.clear();
+  const auto& elements = system_.discretization().elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto dofs = elements[e]->dofs();
+    const bool held = std::all_of(dofs.begin(), dofs.end(), [&](int d) { return constant[static_cast<std::size_t>(d)]; });
+    (held ? held_elements_ : moving_elements_).push_back(static_cast<int>(e));
+  }
+}
+
+void ExplicitDynamicProcedure::evaluate_held(const EvaluationState& s) {
+  if (residual_.size() == s.u.size() && held_residual_.size() == s.u.size()) residual_ -= held_residual_;
+  held_residual_.setZero(s.u.size());
+  const auto& elements = system_.discretization().elements();
+  for (int e : held_elements_) {
+    const auto& el = elements[static_cast<std::size_t>(e)];
+    local_.reset(static_cast<Eigen::Index>(el->dofs().size()));
+    el->evaluate(s, local_, false);
+    scatter(*el, local_.residual, 1, held_residual_);
+    el->commit(s);
+  }
+  if (residual_.size() == s.u.size()) residual_ += held_residual_;  // held dofs only: no free acceleration changes
+}
+
 void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
-  residual_.setZero(s.u.size());
-  for (const auto& el : system_.discretization().elements()) {
+  residual_ = held_residual_;
+  const auto& elements = system_.discretization().elements();
+  for (int e : moving_elements_) {
+    const auto& el = elements[static_cast<std::size_t>(e)];
     local_.reset(static_cast<Eigen::Index>(el->dofs().size()));
     el->evaluate(s, local_, false);
     scatter(*el, local_.residual, 1, residual_);
@@ -214,7 +248,7 @@ void ExplicitDynamicProcedure::advance(Eigen::VectorXd& u, double t, double h) {
   for (int d = 0; d < n_disp; ++d) step_u_[d] = u[d] - u_previous_[d];
   const EvaluationState s{u, u_previous_, t_next, motion_time_offset_ + t_next, h, system_.step().nlgeom};
   evaluate_forces(s);
-  for (const auto& el : system_.discretization().elements()) el->commit(s);
+  for (int e : moving_elements_) system_.discretization().elements()[static_cast<std::size_t>(e)]->commit(s);
   h_previous_ = h;
   ++n_increments_;
 }
@@ -230,6 +264,8 @@ IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttemp
   const double h = t.dt / k;
   const Eigen::VectorXd u_start = u;
   const auto evaluation_start = Clock::now();
+  if (n_increments_ > 0 && !held_elements_.empty())  // the held elements' forces of this interval
+    evaluate_held(EvaluationState{u, u, t_start, t.total_time - t.dt, 0, system_.step().nlgeom});
   for (int i = 0; i < k; ++i) advance(u, i + 1 == k ? t.step_time - h : t_start + i * h, h);
   evaluation_seconds_ += seconds_since(evaluation_start);
 

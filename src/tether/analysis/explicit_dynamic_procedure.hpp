@@ -5,7 +5,9 @@
 /// Each explicit increment h (velocity Verlet form of central differences):
 ///   v_{n+1/2} = v_{n-1/2} + (h_{n-1/2} + h_{n+1/2}) / 2 a_n,  u_{n+1} = u_n + h v_{n+1/2},
 ///   a_{n+1} = M^-1 (f_ext(t_{n+1}) - f_int(u_{n+1}))  at free dofs,
-/// with f_int the elements' residuals evaluated without tangent. Prescribed
+/// with f_int the elements' residuals evaluated without tangent (elements
+/// whose every dof is held at a constant value: once per report interval,
+/// not per increment; their forces only enter the reactions). Prescribed
 /// dofs follow their values (and amplitudes): their half-step velocity is the
 /// difference of the prescribed values, their acceleration the difference of
 /// those velocities. Full-step velocities v_n = v_{n-1/2} + h/2 a_n are what
@@ -84,6 +86,11 @@ class ExplicitDynamicProcedure final : public Procedure {
   void start_step(const IncrementTimes& first, Eigen::VectorXd& u);
   /// r = f_int(u) - f_ext at step time `t` (loads applied by the caller), and a = -r / m at free dofs.
   void evaluate_forces(const EvaluationState& s);
+  /// Sorts the elements into moving ones and held ones (every dof held at a
+  /// constant value over the step: their forces do not change as the scheme moves).
+  void sort_elements();
+  /// The held elements' forces at state `s` into held_residual_ (once per report interval), and their commit.
+  void evaluate_held(const EvaluationState& s);
   /// Accelerations at the prescribed dofs at step time `t` (state `u`) from
   /// their values at t + h (the central difference of the prescribed motion).
   void prescribed_accelerations(const Eigen::VectorXd& u, double t, double h);
@@ -124,6 +131,8 @@ class ExplicitDynamicProcedure final : public Procedure {
   Eigen::VectorXd residual_;             ///< f_int - f_ext at the current state
   Eigen::VectorXd next_values_;          ///< scratch: prescribed values one increment ahead
   LocalSystem local_;                    ///< scratch for one contribution
+  std::vector<int> moving_elements_, held_elements_;  ///< element indices (see sort_elements())
+  Eigen::VectorXd held_residual_;        ///< the held elements' f_int at the current report interval
   Eigen::VectorXd half_velocity_;        ///< v_{n-1/2} (v_0 before the first increment)
   Eigen::VectorXd accel_;                ///< a_n
   Eigen::VectorXd u_previous_;           ///< u_{n-1} (evaluation state's u_start)
