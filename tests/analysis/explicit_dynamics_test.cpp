@@ -591,6 +591,67 @@ TEST(ExplicitContact, TwoRingsCollideWithMomentumConservedToRoundOff) {
   EXPECT_LT(e.numerical, 0.02 * run.recorder.results.front().energy->total);
 }
 
+/// The cylinder's centre of mass and mean velocity at each report (nodes of CYLN).
+struct BodyMotion {
+  double time = 0;
+  Eigen::Vector2d centre{0, 0}, velocity{0, 0};
+  double kinetic = 0, strain = 0, numerical = 0;  ///< the model's ALLKE, ALLSE, numerical energy
+};
+std::vector<BodyMotion> body_motion(const DeckRun& run, const Eigen::VectorXd& mass, const std::string& set) {
+  std::vector<BodyMotion> out;
+  for (const IncrementResults& r : run.recorder.results) {
+    BodyMotion& b = out.emplace_back();
+    double m = 0;
+    for (int node : run.model.node_sets.at(set)) {
+      const auto i = static_cast<std::size_t>(node);
+      const double mi = mass[static_cast<Eigen::Index>(node)];
+      b.centre += mi * (run.model.coords[i] + r.displacement[i]), b.velocity += mi * r.velocity[i], m += mi;
+    }
+    b.centre /= m, b.velocity /= m;
+    b.time = r.step_time, b.kinetic = r.energy->kinetic, b.strain = r.energy->strain, b.numerical = r.energy->numerical;
+  }
+  return out;
+}
+
+TEST(ExplicitContact, CylinderSlidesInARingWithTheClosedFormSpeedAndEnergy) {
+  // A cylinder (diameter 0.4 m, depth 0.1 m, rho 1000) released at rest level
+  // with the centre of a fixed ring (inner diameter 1.8 m) slides down it
+  // without friction under g = 9.80665: its centre falls 0.7 m, so at the
+  // bottom the energy is m g 0.7 = 86.2632 J and the speed sqrt(2 g 0.7) =
+  // 3.705 m/s (deck: examples/dyn_cylinder_in_ring/make_deck.py, coarse).
+  const std::string path = std::string(TETHER_SOURCE_DIR) + "/tests/analysis/decks/cylinder_in_ring_coarse.inp";
+  const DeckRun run = tether::testing::run_deck_file(path);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const Eigen::VectorXd mass = nodal_masses(read_text(path));
+  double cylinder_mass = 0;
+  for (int node : run.model.node_sets.at("CYLN")) cylinder_mass += mass[node];
+  const double g = 9.80665, expected_energy = 86.2632, expected_speed = 3.705;
+  EXPECT_NEAR(cylinder_mass / (1000 * M_PI * 0.04 * 0.1), 1, 1e-4);  // CPE8: the circle by parabolic arcs (5e-5)
+  const std::vector<BodyMotion> motion = body_motion(run, mass, "CYLN");
+  // The bottom: the centre crosses x = 0 (linear between reports).
+  double speed = -1, energy = -1, time = -1, worst_numerical = 0;
+  for (std::size_t k = 1; k < motion.size(); ++k) {
+    worst_numerical = std::max(worst_numerical, std::abs(motion[k].numerical));
+    const BodyMotion &a = motion[k - 1], &b = motion[k];
+    if (speed >= 0 || a.centre.x() >= 0 || b.centre.x() < 0) continue;
+    const double w = -a.centre.x() / (b.centre.x() - a.centre.x());
+    speed = (1 - w) * a.velocity.norm() + w * b.velocity.norm();
+    energy = (1 - w) * (a.kinetic + a.strain) + w * (b.kinetic + b.strain);
+    time = (1 - w) * a.time + w * b.time;
+  }
+  ASSERT_GT(speed, 0) << "the cylinder did not reach the bottom";
+  // A point mass on a circle of radius 0.7 from 90 degrees: a quarter of the pendulum's period, K(1/sqrt 2) sqrt(0.7 / g).
+  const double quarter_period = 1.854075 * std::sqrt(0.7 / g);
+  std::printf("mass %.6g kg; at the bottom (t = %.4g s, pendulum %.4g s): speed %.5g m/s (%.3g %%), ALLKE + ALLSE "
+              "%.6g J (%.3g %%); largest |numerical energy| %.3g J\n",
+              cylinder_mass, time, quarter_period, speed, 100 * (speed / expected_speed - 1), energy,
+              100 * (energy / expected_energy - 1), worst_numerical);
+  EXPECT_NEAR(speed / expected_speed, 1, 0.01);
+  EXPECT_NEAR(energy / expected_energy, 1, 0.01);
+  EXPECT_LT(worst_numerical, 0.01 * expected_energy);
+  EXPECT_NEAR(time / quarter_period, 1, 0.01);
+}
+
 Eigen::VectorXd nodal_masses(const std::string& deck) {
   const auto b = build(deck);
   Eigen::VectorXd out = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(b->model.coords.size()));
