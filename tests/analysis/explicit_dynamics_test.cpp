@@ -284,6 +284,80 @@ TEST(StableIncrement, HeldElementsSetNoLimit) {
   EXPECT_LT(part.omega_max, free.omega_max);
 }
 
+/// A unit CPE4 (E 1000, nu 0.3, rho 1) held at nodes 1, 2, 4 and at node 3's
+/// y: one free dof, node 3's x, started at velocity 1. `damping` is the
+/// *DAMPING line (or empty), `procedure` the step's procedure block.
+std::string one_dof_deck(const std::string& damping, const std::string& procedure) {
+  return "*NODE\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n*ELEMENT, TYPE=CPE4, ELSET=ALL\n1, 1, 2, 3, 4\n"
+         "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n" + damping +
+         "*SOLID SECTION, ELSET=ALL, MATERIAL=M\n*NSET, NSET=HELD\n1, 2, 4\n*BOUNDARY\nHELD, 1, 2\n3, 2, 2\n"
+         "*INITIAL CONDITIONS, TYPE=VELOCITY\n3, 1, 1.\n*STEP\n" + procedure + "*END STEP\n";
+}
+
+/// The free dof's frequency: its stiffness (the element's tangent at node 3's x) over its lumped mass 1/4.
+double one_dof_omega() {
+  const auto b = build(one_dof_deck("", "*DYNAMIC, EXPLICIT\n, 1.\n"));
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(b->discretization->dofs().n_dofs());
+  LocalSystem local;
+  local.reset(8);
+  b->system->inertia()[0]->element().evaluate(EvaluationState{u, u, 0, 0, 0, false}, local, true);
+  return std::sqrt(local.tangent(4, 4) / 0.25);
+}
+
+TEST(ExplicitDamping, FreeVibrationDecaysAsExpOfMinusZetaOmegaT) {
+  // zeta = 0.05 from the mass (alpha = 2 zeta omega) or from the stiffness
+  // (beta = 2 zeta / omega): the amplitude sqrt(u^2 + ((v + zeta omega u) / omega_d)^2)
+  // of u = A e^{-zeta omega t} sin(omega_d t) follows exp(-zeta omega t).
+  const double omega = one_dof_omega(), zeta = 0.05, period = 2 * M_PI / omega;
+  const double omega_d = omega * std::sqrt(1 - zeta * zeta);
+  for (const bool mass : {true, false}) {
+    SCOPED_TRACE(mass ? "alpha" : "beta");
+    const std::string damping = mass ? "*DAMPING, ALPHA=" + num(2 * zeta * omega) + "\n"
+                                     : "*DAMPING, BETA=" + num(2 * zeta / omega) + "\n";
+    const DeckRun run =
+        run_deck_text(one_dof_deck(damping, "*DYNAMIC, EXPLICIT, DIRECT\n" + num(period / 400) + ", " + num(4 * period) + "\n"));
+    ASSERT_TRUE(run.summary.completed) << run.summary.message;
+    const auto node = static_cast<std::size_t>(run.node(3));
+    double worst = 0;
+    for (const IncrementResults& r : run.recorder.results) {
+      const double u = r.displacement[node].x(), v = r.velocity[node].x();
+      const double amplitude = std::hypot(u, (v + zeta * omega * u) / omega_d);
+      worst = std::max(worst, std::abs(amplitude / (std::exp(-zeta * omega * r.step_time) / omega_d) - 1));
+    }
+    const EnergyTotals& e = *run.last().energy;
+    std::printf("%s: largest amplitude error %.3g over 4 periods (decayed to %.3g); ALLVD %.6g of %.6g, numerical %.3g\n",
+                mass ? "mass-proportional" : "stiffness-proportional", worst, std::exp(-zeta * omega * 4 * period),
+                e.viscous, 0.125, e.numerical);
+    EXPECT_LT(worst, 2e-3);
+    EXPECT_NEAR(e.viscous + e.kinetic + e.strain, 0.125, 1e-3 * 0.125);  // 1/2 m v0^2, m = 1/4
+    EXPECT_GT(e.viscous, 0.9 * 0.125);
+  }
+}
+
+TEST(ExplicitDamping, StiffnessDampingLowersTheStableIncrementAsThePredictedFormula) {
+  // beta with xi = beta omega / 2 = 0.5 in the only mode: stable while
+  // h <= (2 / omega)(sqrt(1 + xi^2) - xi) = 0.618 (2 / omega); the estimate says so,
+  // 2 % below it the motion decays, 2 % above it diverges.
+  const double omega = one_dof_omega(), xi = 0.5, beta = 2 * xi / omega;
+  const double limit = (2 / omega) * (std::sqrt(1 + xi * xi) - xi);
+  EXPECT_NEAR(damped_stable_increment(omega, beta) / limit, 1, 1e-14);
+  const std::string damping = "*DAMPING, BETA=" + num(beta) + "\n";
+  const DeckRun estimate = run_deck_text(one_dof_deck(damping, "*DYNAMIC, EXPLICIT\n, " + num(50 * limit) + "\n"));
+  ASSERT_TRUE(estimate.summary.completed) << estimate.summary.message;
+  EXPECT_NE(estimate.recorder.messages.front().find("stable time increment " + format_time(limit)), std::string::npos)
+      << estimate.recorder.messages.front();
+  const auto run_at = [&](double factor) {
+    const double h = factor * limit;
+    return run_deck_text(one_dof_deck(damping, "*DYNAMIC, EXPLICIT, DIRECT\n" + num(h) + ", " + num(3000 * h) + "\n"));
+  };
+  const DeckRun below = run_at(0.98);
+  ASSERT_TRUE(below.summary.completed) << below.summary.message;
+  EXPECT_LT(below.last().energy->kinetic + below.last().energy->strain, 1e-6 * 0.125);
+  const DeckRun above = run_at(1.02);
+  EXPECT_FALSE(above.summary.completed);
+  EXPECT_NE(above.summary.message.find("diverged"), std::string::npos) << above.summary.message;
+}
+
 TEST(ExplicitDynamics, StableIncrementIsReportedAndUsed) {
   const double exact = square_stable_increment(1, 1);
   const DeckRun run = run_deck_text(square_deck("*DYNAMIC, EXPLICIT\n, " + num(50 * exact) + "\n"));

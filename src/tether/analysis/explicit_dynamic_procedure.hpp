@@ -13,6 +13,13 @@
 /// those velocities. Full-step velocities v_n = v_{n-1/2} + h/2 a_n are what
 /// the results, the kinetic energy and the next step see.
 ///
+/// Rayleigh damping (*DAMPING ALPHA, BETA): the mass-proportional part is
+/// integrated exactly per dof, v_{n+1/2} = e^{-alpha h} v_{n-1/2} + (1 - e^{-alpha h})/alpha a_n
+/// (every mode's amplitude decays as e^{-alpha t / 2}, and the stable increment
+/// is not lowered); the stiffness-proportional part is the force beta K_e v_{n-1/2}
+/// with the lagged velocity, as ABAQUS/Explicit does it, which lowers the stable
+/// increment to (2/omega)(sqrt(1 + xi^2) - xi), xi = beta omega / 2 (stable_increment.hpp).
+///
 /// Constraints and contact: ExplicitConstraints' and ExplicitContact's
 /// predictor–corrector add their forces at t_n before the velocities and
 /// positions are advanced (constraints first, contact from the constrained
@@ -94,6 +101,12 @@ class ExplicitDynamicProcedure final : public Procedure {
   /// Accelerations at the prescribed dofs at step time `t` (state `u`) from
   /// their values at t + h (the central difference of the prescribed motion).
   void prescribed_accelerations(const Eigen::VectorXd& u, double t, double h);
+  /// Rayleigh damping of the step: alpha per free dof (mass-proportional, from
+  /// the elements' alpha m), and beta_e K_e per damped element at the state `s`.
+  void setup_damping(const EvaluationState& s);
+  /// decay_ = exp(-alpha h_average) and gain_ = (1 - decay_) / (alpha h_average) per dof, and
+  /// effective_inverse_mass_ = gain_ / m (all 1 and 1 / m without mass-proportional damping).
+  void set_damping_factors(double h_average);
   /// Forces doing work: applied forces at free dofs, the reactions r + m a at prescribed ones.
   void work_force(Eigen::VectorXd& out) const;
   /// The constraint and contact forces at t_n (ExplicitConstraints and
@@ -132,6 +145,16 @@ class ExplicitDynamicProcedure final : public Procedure {
   Eigen::VectorXd next_values_;          ///< scratch: prescribed values one increment ahead
   LocalSystem local_;                    ///< scratch for one contribution
   std::vector<int> moving_elements_, held_elements_;  ///< element indices (see sort_elements())
+  Eigen::VectorXd mass_damping_;         ///< alpha per dof [1/time], 0 at prescribed dofs (empty: none)
+  Eigen::VectorXd decay_, gain_, effective_inverse_mass_;  ///< see set_damping_factors()
+  double factors_h_ = -1;                ///< the h_average of decay_ and gain_
+  struct StiffnessDamping {
+    int element = 0;         ///< index in the step system's inertia()
+    Eigen::MatrixXd matrix;  ///< beta_e K_e over the element's dofs [force time / length]
+  };
+  std::vector<StiffnessDamping> stiffness_damping_;
+  Eigen::VectorXd damping_force_;        ///< beta K v_{n-1/2} (with alpha m v_{n-1/2} at prescribed dofs)
+  double viscous_ = 0;                   ///< ALLVD (from the step's start value)
   Eigen::VectorXd held_residual_;        ///< the held elements' f_int at the current report interval
   Eigen::VectorXd half_velocity_;        ///< v_{n-1/2} (v_0 before the first increment)
   Eigen::VectorXd accel_;                ///< a_n

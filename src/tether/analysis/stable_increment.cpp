@@ -25,6 +25,12 @@ double largest_frequency_squared(const Eigen::MatrixXd& stiffness, const Eigen::
   return eigen.eigenvalues().maxCoeff();
 }
 
+double damped_stable_increment(double omega, double beta) {
+  const double xi = 0.5 * beta * omega;
+  // (2/omega)(sqrt(1 + xi^2) - xi), written without the cancellation at large xi.
+  return 2 / (omega * (std::sqrt(1 + xi * xi) + xi));
+}
+
 StableIncrement stable_increment(const std::vector<std::unique_ptr<ElementInertia>>& inertia,
                                  const EvaluationState& s, const std::function<bool(int)>& held) {
   StableIncrement out;
@@ -51,9 +57,10 @@ StableIncrement stable_increment(const std::vector<std::unique_ptr<ElementInerti
       throw ModelError(why.str());
     }
     const double omega = std::sqrt(omega2);
-    if (omega > out.omega_max) out.omega_max = omega, out.element = static_cast<int>(e);
+    out.omega_max = std::max(out.omega_max, omega);
+    const double dt = damped_stable_increment(omega, m.damping_beta());
+    if (dt < out.dt) out.dt = dt, out.element = static_cast<int>(e);
   }
-  if (out.element >= 0) out.dt = 2 / out.omega_max;
   return out;
 }
 

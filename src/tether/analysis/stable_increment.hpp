@@ -27,9 +27,11 @@ namespace tether {
 
 /// The increment a step's explicit integration must not exceed.
 struct StableIncrement {
-  double dt = std::numeric_limits<double>::infinity();  ///< 2 / omega_max [time], no safety factor
-  double omega_max = 0;                                 ///< largest element frequency [rad/time]
-  int element = -1;                                     ///< index (in `inertia`) of the element that sets it
+  /// min over the elements of damped_stable_increment(omega_e, beta_e) [time] (2 / omega_max
+  /// without stiffness-proportional damping), no safety factor
+  double dt = std::numeric_limits<double>::infinity();
+  double omega_max = 0;  ///< largest element frequency [rad/time]
+  int element = -1;      ///< index (in `inertia`) of the element that sets dt
 };
 
 /// The largest omega^2 [1/time^2] of K x = omega^2 M x for a symmetric `stiffness`
@@ -37,6 +39,15 @@ struct StableIncrement {
 /// (naming `what`) when a mass entry is not positive.
 double largest_frequency_squared(const Eigen::MatrixXd& stiffness, const Eigen::VectorXd& lumped_mass,
                                  const std::string& what);
+
+/// The stable increment [time] of central differences for a mode of
+/// frequency `omega` [rad/time] under stiffness-proportional damping `beta`
+/// [time] evaluated with the lagged velocity v_{n-1/2} (as ABAQUS/Explicit):
+/// (2/omega)(sqrt(1 + xi^2) - xi), xi = beta omega / 2 the mode's fraction of
+/// critical damping; 2/omega without damping. (From the recursion
+/// z^2 + (Omega^2 + 2 xi Omega - 2) z + 1 - 2 xi Omega = 0, Omega = omega h:
+/// |z| <= 1 while Omega^2 + 4 xi Omega <= 4.)
+double damped_stable_increment(double omega, double beta);
 
 /// The element-by-element estimate over every element of `inertia` (lumped
 /// masses) at state `s` (tangents under s.nlgeom), each restricted to the dofs
