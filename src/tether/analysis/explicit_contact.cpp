@@ -15,7 +15,7 @@ namespace tether {
 ExplicitContact::ExplicitContact(const Discretization& discretization) : discretization_(discretization) {
   for (const auto& pair : discretization.contact_pairs()) {
     const ContactPairSetup& s = pair->setup();
-    const std::string refuse = "*DYNAMIC, EXPLICIT: " + s.name + ": the explicit contact corrector (hard, frictionless) ";
+    const std::string refuse = "*DYNAMIC, EXPLICIT: " + s.name + ": the explicit contact corrector (hard, with Coulomb friction) ";
     if (s.law.law != PressureOverclosure::Law::Hard)
       throw ModelError(refuse + "does not support a soft pressure-overclosure law yet; use HARD");
     if (s.friction && (s.friction->stick_slope > 0 || s.friction->elastic_slip > 0))
