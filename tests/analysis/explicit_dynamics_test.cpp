@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -146,6 +147,26 @@ TEST(ExplicitDynamics, AFreeBodyFliesAtItsInitialVelocity) {
   EXPECT_EQ(e.work, 0);
 }
 
+TEST(ExplicitDynamics, GravityActsFromTheStartOfADynamicStep) {
+  // Dynamic steps hold their loads from the start (AMPLITUDE=STEP by
+  // default), body loads too: a free block falls g t^2 / 2, which central
+  // differences integrate exactly. A RAMP step ramps it: g t^3 / (6 T).
+  for (const std::string amplitude : {"", ", AMPLITUDE=RAMP"}) {
+    const std::string deck =
+        "*NODE\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n*ELEMENT, TYPE=CPE4, ELSET=ALL\n1, 1, 2, 3, 4\n*MATERIAL, NAME=M\n"
+        "*ELASTIC\n1000., 0.3\n*DENSITY\n2.\n*SOLID SECTION, ELSET=ALL, MATERIAL=M\n*STEP" + amplitude +
+        "\n*DYNAMIC, EXPLICIT\n, 0.5\n*DLOAD\nALL, GRAV, 9.8, 0., -1.\n*END STEP\n";
+    const DeckRun run = run_deck_text(deck);
+    ASSERT_TRUE(run.summary.completed) << run.summary.message;
+    const double t = run.last().step_time;
+    const double expected = amplitude.empty() ? -9.8 * t * t / 2 : -9.8 * t * t * t / (6 * 0.5);
+    // Exact for a constant acceleration; O(h^2) for the ramp (18 increments: 0.3 %).
+    const double tolerance = amplitude.empty() ? 1e-12 : 1e-2;
+    for (const Eigen::Vector2d& u : run.last().displacement)
+      EXPECT_NEAR(u.y(), expected, tolerance * std::abs(expected)) << amplitude;
+  }
+}
+
 /// A square CPE4 of side `a` (E, nu of the bar, density `rho`) free of
 /// supports, one node pushed; `procedure` is the *DYNAMIC block.
 std::string square_deck(const std::string& procedure, double a = 1, double rho = 1) {
@@ -221,6 +242,122 @@ TEST(StableIncrement, BoundsTheHighestFrequencyOfADistortedMesh) {
   EXPECT_GT(mesh_omega, 0.5 * estimate.omega_max);
 }
 
+TEST(StableIncrement, HeldElementsSetNoLimit) {
+  // A free square (E of the bar, rho 1) beside a square 100 times stiffer whose
+  // nodes are all held: the held one cannot vibrate and sets no limit.
+  const std::string deck =
+      "*NODE\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n5, 2, 0\n6, 3, 0\n7, 3, 1\n8, 2, 1\n"
+      "*ELEMENT, TYPE=CPE4, ELSET=SOFT\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=CPE4, ELSET=STIFF\n2, 5, 6, 7, 8\n"
+      "*MATERIAL, NAME=M\n*ELASTIC\n" + num(kE) + ", " + num(kNu) + "\n*DENSITY\n1.\n*MATERIAL, NAME=S\n*ELASTIC\n" +
+      num(100 * kE) + ", " + num(kNu) + "\n*DENSITY\n1.\n*SOLID SECTION, ELSET=SOFT, MATERIAL=M\n"
+      "*SOLID SECTION, ELSET=STIFF, MATERIAL=S\n*BOUNDARY\n5, 1, 2\n6, 1, 2\n7, 1, 2\n8, 1, 2\n"
+      "*STEP\n*DYNAMIC, EXPLICIT\n, 1e-4\n*END STEP\n";
+  const auto b = build(deck);
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(b->discretization->dofs().n_dofs());
+  const EvaluationState s{u, u, 0, 0, 0, false};
+  const StableIncrement all = stable_increment(b->system->inertia(), s);
+  EXPECT_EQ(all.element, 1);
+  EXPECT_NEAR(all.dt / square_stable_increment(1, 1), 0.1, 1e-12);
+  const EquationMap& equations = b->system->equations();
+  const StableIncrement free = stable_increment(b->system->inertia(), s, [&](int d) { return equations.is_prescribed(d); });
+  EXPECT_EQ(free.element, 0);
+  EXPECT_NEAR(free.dt / square_stable_increment(1, 1), 1, 1e-12);
+  // Through the procedure: the step uses the free square's increment.
+  const DeckRun run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  EXPECT_NE(run.recorder.messages.front().find("stable time increment " + format_time(square_stable_increment(1, 1))),
+            std::string::npos)
+      << run.recorder.messages.front();
+  // A partly held element: its free dofs only (the single element is the mesh: exact).
+  std::string held = deck;
+  held.replace(held.find("*STEP"), 5, "*BOUNDARY\n1, 1, 2\n2, 1, 2\n*STEP");
+  const auto c = build(held);
+  const EquationMap& eq = c->system->equations();
+  const StableIncrement part = stable_increment(c->system->inertia(), s, [&](int d) { return eq.is_prescribed(d); });
+  LocalSystem local;
+  local.reset(8);
+  c->system->inertia()[0]->element().evaluate(s, local, true);
+  const std::vector<Eigen::Index> top{4, 5, 6, 7};
+  const Eigen::VectorXd top_mass = c->system->inertia()[0]->mass().diagonal()(top);
+  const double omega = std::sqrt(largest_frequency_squared(local.tangent(top, top), top_mass, "top"));
+  EXPECT_NEAR(part.omega_max / omega, 1, 1e-12);
+  EXPECT_LT(part.omega_max, free.omega_max);
+}
+
+/// A unit CPE4 (E 1000, nu 0.3, rho 1) held at nodes 1, 2, 4 and at node 3's
+/// y: one free dof, node 3's x, started at velocity 1. `damping` is the
+/// *DAMPING line (or empty), `procedure` the step's procedure block.
+std::string one_dof_deck(const std::string& damping, const std::string& procedure) {
+  return "*NODE\n1, 0, 0\n2, 1, 0\n3, 1, 1\n4, 0, 1\n*ELEMENT, TYPE=CPE4, ELSET=ALL\n1, 1, 2, 3, 4\n"
+         "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n" + damping +
+         "*SOLID SECTION, ELSET=ALL, MATERIAL=M\n*NSET, NSET=HELD\n1, 2, 4\n*BOUNDARY\nHELD, 1, 2\n3, 2, 2\n"
+         "*INITIAL CONDITIONS, TYPE=VELOCITY\n3, 1, 1.\n*STEP\n" + procedure + "*END STEP\n";
+}
+
+/// The free dof's frequency: its stiffness (the element's tangent at node 3's x) over its lumped mass 1/4.
+double one_dof_omega() {
+  const auto b = build(one_dof_deck("", "*DYNAMIC, EXPLICIT\n, 1.\n"));
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(b->discretization->dofs().n_dofs());
+  LocalSystem local;
+  local.reset(8);
+  b->system->inertia()[0]->element().evaluate(EvaluationState{u, u, 0, 0, 0, false}, local, true);
+  return std::sqrt(local.tangent(4, 4) / 0.25);
+}
+
+TEST(ExplicitDamping, FreeVibrationDecaysAsExpOfMinusZetaOmegaT) {
+  // zeta = 0.05 from the mass (alpha = 2 zeta omega) or from the stiffness
+  // (beta = 2 zeta / omega): the amplitude sqrt(u^2 + ((v + zeta omega u) / omega_d)^2)
+  // of u = A e^{-zeta omega t} sin(omega_d t) follows exp(-zeta omega t).
+  const double omega = one_dof_omega(), zeta = 0.05, period = 2 * M_PI / omega;
+  const double omega_d = omega * std::sqrt(1 - zeta * zeta);
+  for (const bool mass : {true, false}) {
+    SCOPED_TRACE(mass ? "alpha" : "beta");
+    const std::string damping = mass ? "*DAMPING, ALPHA=" + num(2 * zeta * omega) + "\n"
+                                     : "*DAMPING, BETA=" + num(2 * zeta / omega) + "\n";
+    const DeckRun run =
+        run_deck_text(one_dof_deck(damping, "*DYNAMIC, EXPLICIT, DIRECT\n" + num(period / 400) + ", " + num(4 * period) + "\n"));
+    ASSERT_TRUE(run.summary.completed) << run.summary.message;
+    const auto node = static_cast<std::size_t>(run.node(3));
+    double worst = 0;
+    for (const IncrementResults& r : run.recorder.results) {
+      const double u = r.displacement[node].x(), v = r.velocity[node].x();
+      const double amplitude = std::hypot(u, (v + zeta * omega * u) / omega_d);
+      worst = std::max(worst, std::abs(amplitude / (std::exp(-zeta * omega * r.step_time) / omega_d) - 1));
+    }
+    const EnergyTotals& e = *run.last().energy;
+    std::printf("%s: largest amplitude error %.3g over 4 periods (decayed to %.3g); ALLVD %.6g of %.6g, numerical %.3g\n",
+                mass ? "mass-proportional" : "stiffness-proportional", worst, std::exp(-zeta * omega * 4 * period),
+                e.viscous, 0.125, e.numerical);
+    EXPECT_LT(worst, 2e-3);
+    EXPECT_NEAR(e.viscous + e.kinetic + e.strain, 0.125, 1e-3 * 0.125);  // 1/2 m v0^2, m = 1/4
+    EXPECT_GT(e.viscous, 0.9 * 0.125);
+  }
+}
+
+TEST(ExplicitDamping, StiffnessDampingLowersTheStableIncrementAsThePredictedFormula) {
+  // beta with xi = beta omega / 2 = 0.5 in the only mode: stable while
+  // h <= (2 / omega)(sqrt(1 + xi^2) - xi) = 0.618 (2 / omega); the estimate says so,
+  // 2 % below it the motion decays, 2 % above it diverges.
+  const double omega = one_dof_omega(), xi = 0.5, beta = 2 * xi / omega;
+  const double limit = (2 / omega) * (std::sqrt(1 + xi * xi) - xi);
+  EXPECT_NEAR(damped_stable_increment(omega, beta) / limit, 1, 1e-14);
+  const std::string damping = "*DAMPING, BETA=" + num(beta) + "\n";
+  const DeckRun estimate = run_deck_text(one_dof_deck(damping, "*DYNAMIC, EXPLICIT\n, " + num(50 * limit) + "\n"));
+  ASSERT_TRUE(estimate.summary.completed) << estimate.summary.message;
+  EXPECT_NE(estimate.recorder.messages.front().find("stable time increment " + format_time(limit)), std::string::npos)
+      << estimate.recorder.messages.front();
+  const auto run_at = [&](double factor) {
+    const double h = factor * limit;
+    return run_deck_text(one_dof_deck(damping, "*DYNAMIC, EXPLICIT, DIRECT\n" + num(h) + ", " + num(3000 * h) + "\n"));
+  };
+  const DeckRun below = run_at(0.98);
+  ASSERT_TRUE(below.summary.completed) << below.summary.message;
+  EXPECT_LT(below.last().energy->kinetic + below.last().energy->strain, 1e-6 * 0.125);
+  const DeckRun above = run_at(1.02);
+  EXPECT_FALSE(above.summary.completed);
+  EXPECT_NE(above.summary.message.find("diverged"), std::string::npos) << above.summary.message;
+}
+
 TEST(ExplicitDynamics, StableIncrementIsReportedAndUsed) {
   const double exact = square_stable_increment(1, 1);
   const DeckRun run = run_deck_text(square_deck("*DYNAMIC, EXPLICIT\n, " + num(50 * exact) + "\n"));
@@ -231,11 +368,12 @@ TEST(ExplicitDynamics, StableIncrementIsReportedAndUsed) {
   EXPECT_NE(m.find("explicit increment " + format_time(0.9 * exact)), std::string::npos) << m;
   // 50 stable increments hold 56 explicit ones of 0.9 of it (rounded to fill the step): 56 reports.
   EXPECT_EQ(run.recorder.results.size(), 56u);
-  // The bar's elements (side 0.01, rho 7800) scale as a sqrt(rho).
+  // The bar's elements (side 0.01, rho 7800) with every y held: their x
+  // dofs only, whose highest mode is the uniform stretch, omega^2 = 4 (lambda + 2 mu) / (rho a^2):
+  // the increment is a / c_p, the 1D wave's Courant limit.
   const DeckRun bar = run_deck_text(bar_deck(4, 0.01, "", "*DYNAMIC, EXPLICIT\n, 1e-5\n"));
   ASSERT_TRUE(bar.summary.completed) << bar.summary.message;
-  EXPECT_NE(bar.recorder.messages.front().find("stable time increment " + format_time(square_stable_increment(0.01, kRho))),
-            std::string::npos)
+  EXPECT_NE(bar.recorder.messages.front().find("stable time increment " + format_time(0.01 / kCp)), std::string::npos)
       << bar.recorder.messages.front();
 }
 
@@ -382,6 +520,249 @@ TEST(ExplicitContact, CorrectorConservesLinearMomentum) {
     else
       EXPECT_GT(b_momentum_y, 0.02 * initial.norm());
   }
+}
+
+/// Nodes and CPE4 of an n x n block of side `size` with its lower left corner
+/// at (x0, y0), labels from `first_node` / `first_element`, in ELSET `elset`;
+/// node (i, j) is first_node + j (n + 1) + i. Element (i, j) is
+/// first_element + j n + i; its face S2 is on x = x0 + size when i = n - 1, S4 on x = x0 when i = 0.
+std::string block_mesh(int first_node, int first_element, double x0, double y0, double size, int n,
+                       const std::string& elset) {
+  std::ostringstream d;
+  d.precision(17);
+  d << "*NODE, NSET=" << elset << "N\n";
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) d << first_node + j * (n + 1) + i << ", " << x0 + size * i / n << ", " << y0 + size * j / n << "\n";
+  d << "*ELEMENT, TYPE=CPE4, ELSET=" << elset << "\n";
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = first_node + j * (n + 1) + i;
+      d << first_element + j * n + i << ", " << a << ", " << a + 1 << ", " << a + n + 2 << ", " << a + n + 1 << "\n";
+    }
+  return d.str();
+}
+
+/// Linear and angular momentum (about the origin, of the positions X + u) of a report [N s], [N m s].
+struct Momentum {
+  Eigen::Vector2d linear{0, 0};
+  double angular = 0;
+};
+Momentum momentum(const IncrementResults& r, const Model& model, const Eigen::VectorXd& nodal_mass) {
+  Momentum m;
+  for (std::size_t i = 0; i < model.coords.size(); ++i) {
+    const Eigen::Vector2d x = model.coords[i] + r.displacement[i];
+    const Eigen::Vector2d v = r.velocity[i];
+    m.linear += nodal_mass[static_cast<Eigen::Index>(i)] * v;
+    m.angular += nodal_mass[static_cast<Eigen::Index>(i)] * (x.x() * v.y() - x.y() * v.x());
+  }
+  return m;
+}
+
+/// The lumped mass of each node of a deck's first step [mass].
+Eigen::VectorXd nodal_masses(const std::string& deck);
+
+TEST(ExplicitContact, CorrectorConservesAngularMomentum) {
+  // A 3 x 3 block moving at (2, 0.5) hits the upper half of a resting 4 x 4
+  // block off its centre (NLGEOM: the elements' forces are objective). The
+  // corrector's forces act along the gap gradient at t_n, whose moment about
+  // the positions of t_n is zero: the angular momentum is that of the start to round-off.
+  const std::string deck = block_mesh(1, 1, -0.8, 0.5, 0.8, 3, "A") + block_mesh(101, 101, 0, 0, 1, 4, "B") +
+                           "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n*SOLID SECTION, ELSET=A, MATERIAL=M\n"
+                           "*SOLID SECTION, ELSET=B, MATERIAL=M\n*SURFACE, NAME=AR\n3, S2\n6, S2\n9, S2\n"
+                           "*SURFACE, NAME=BL\n101, S4\n105, S4\n109, S4\n113, S4\n*SURFACE INTERACTION, NAME=I\n"
+                           "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nAR, BL\n"
+                           "*INITIAL CONDITIONS, TYPE=VELOCITY\nAN, 1, 2.\nAN, 2, 0.5\n"
+                           "*STEP, NLGEOM\n*DYNAMIC, EXPLICIT\n, 0.3\n*END STEP\n";
+  const DeckRun run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const Eigen::VectorXd mass = nodal_masses(deck);
+  Momentum start;
+  for (std::size_t i = 0; i < run.model.coords.size(); ++i) {
+    const Eigen::Vector2d v = i < 16 ? Eigen::Vector2d(2, 0.5) : Eigen::Vector2d(0, 0);
+    start.linear += mass[static_cast<Eigen::Index>(i)] * v;
+    start.angular += mass[static_cast<Eigen::Index>(i)] * (run.model.coords[i].x() * v.y() - run.model.coords[i].y() * v.x());
+  }
+  double worst_linear = 0, worst_angular = 0, b_spin = 0;
+  int touching = 0;
+  for (const IncrementResults& r : run.recorder.results) {
+    const Momentum m = momentum(r, run.model, mass);
+    worst_linear = std::max(worst_linear, (m.linear - start.linear).norm());
+    worst_angular = std::max(worst_angular, std::abs(m.angular - start.angular));
+    touching += r.contact[0].total_force.norm() > 0;
+  }
+  // B's spin about its centre of mass at the end: the impact was off centre.
+  const IncrementResults& end = run.last();
+  Eigen::Vector2d centre(0, 0), b_velocity(0, 0);
+  double b_mass = 0;
+  for (std::size_t i = 16; i < run.model.coords.size(); ++i) {
+    const double m = mass[static_cast<Eigen::Index>(i)];
+    centre += m * (run.model.coords[i] + end.displacement[i]), b_velocity += m * end.velocity[i], b_mass += m;
+  }
+  centre /= b_mass, b_velocity /= b_mass;
+  for (std::size_t i = 16; i < run.model.coords.size(); ++i) {
+    const Eigen::Vector2d x = run.model.coords[i] + end.displacement[i] - centre, v = end.velocity[i] - b_velocity;
+    b_spin += mass[static_cast<Eigen::Index>(i)] * (x.x() * v.y() - x.y() * v.x());
+  }
+  std::printf("reports in contact %d; worst momentum change: linear %.3g of %.3g, angular %.3g of %.3g; B's spin %.3g\n",
+              touching, worst_linear, start.linear.norm(), worst_angular, std::abs(start.angular), b_spin);
+  EXPECT_GT(touching, 5);
+  EXPECT_GT(std::abs(b_spin), 0.01 * std::abs(start.angular));  // the test sees rotation
+  EXPECT_LT(worst_linear, 1e-13 * start.linear.norm());
+  EXPECT_LT(worst_angular, 1e-13 * std::abs(start.angular));
+}
+
+/// The momentum of the initial velocities of `model` (masses `mass` per node).
+Momentum initial_momentum(const Model& model, const Eigen::VectorXd& mass) {
+  std::vector<Eigen::Vector2d> v(model.coords.size(), Eigen::Vector2d::Zero());
+  for (const auto& iv : model.initial_velocities) v[static_cast<std::size_t>(iv.node)][iv.dof] = iv.value;
+  Momentum m;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    m.linear += mass[static_cast<Eigen::Index>(i)] * v[i];
+    m.angular += mass[static_cast<Eigen::Index>(i)] * (model.coords[i].x() * v[i].y() - model.coords[i].y() * v[i].x());
+  }
+  return m;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(ExplicitContact, WithFrictionAngularMomentumChangesOnlyWhereSlavesArrive) {
+  // The off-centre impact with mu = 0.3: a friction force has the moment
+  // g_n lambda_t about x_n, zero once the slave sits on the master. Linear
+  // momentum stays exact; angular momentum changes a little, at arrivals.
+  const std::string deck = block_mesh(1, 1, -0.8, 0.5, 0.8, 3, "A") + block_mesh(101, 101, 0, 0, 1, 4, "B") +
+                           "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*DENSITY\n1.\n*SOLID SECTION, ELSET=A, MATERIAL=M\n"
+                           "*SOLID SECTION, ELSET=B, MATERIAL=M\n*SURFACE, NAME=AR\n3, S2\n6, S2\n9, S2\n"
+                           "*SURFACE, NAME=BL\n101, S4\n105, S4\n109, S4\n113, S4\n*SURFACE INTERACTION, NAME=I\n"
+                           "*FRICTION\n0.3\n*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nAR, BL\n"
+                           "*INITIAL CONDITIONS, TYPE=VELOCITY\nAN, 1, 2.\nAN, 2, 0.5\n"
+                           "*STEP, NLGEOM\n*DYNAMIC, EXPLICIT\n, 0.3\n*END STEP\n";
+  const DeckRun run = run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const Eigen::VectorXd mass = nodal_masses(deck);
+  const Momentum start = initial_momentum(run.model, mass);
+  double worst_linear = 0, worst_angular = 0;
+  for (const IncrementResults& r : run.recorder.results) {
+    const Momentum m = momentum(r, run.model, mass);
+    worst_linear = std::max(worst_linear, (m.linear - start.linear).norm());
+    worst_angular = std::max(worst_angular, std::abs(m.angular - start.angular));
+  }
+  std::printf("mu = 0.3: worst momentum change: linear %.3g of %.3g, angular %.3g of %.3g; ALLFD %.4g\n", worst_linear,
+              start.linear.norm(), worst_angular, std::abs(start.angular), run.last().energy->friction);
+  EXPECT_GT(run.last().energy->friction, 0);
+  EXPECT_LT(worst_linear, 1e-13 * start.linear.norm());
+  EXPECT_LT(worst_angular, 1e-4 * std::abs(start.angular));  // measured 2.9e-5
+}
+
+TEST(ExplicitContact, TwoRingsCollideWithMomentumConservedToRoundOff) {
+  // Two identical rings (NLGEOM, frictionless) fly at each other off centre,
+  // touch, roll the contact around and part (deck: tests/analysis/decks/make_rings.py).
+  const std::string path = std::string(TETHER_SOURCE_DIR) + "/tests/analysis/decks/rings.inp";
+  const std::string deck = read_text(path);
+  const DeckRun run = tether::testing::run_deck_file(path);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const Eigen::VectorXd mass = nodal_masses(deck);
+  const Momentum start = initial_momentum(run.model, mass);
+  double worst_linear = 0, worst_angular = 0, lowest_numerical = 0;
+  int touching = 0;
+  for (const IncrementResults& r : run.recorder.results) {
+    const Momentum m = momentum(r, run.model, mass);
+    worst_linear = std::max(worst_linear, (m.linear - start.linear).norm());
+    worst_angular = std::max(worst_angular, std::abs(m.angular - start.angular));
+    touching += r.contact[0].total_force.norm() > 0;
+    lowest_numerical = std::min(lowest_numerical, r.energy->numerical);
+  }
+  // |p| of one ring, the scale of the linear momentum (the total is 0).
+  const double ring_momentum = 0.5 * mass.sum() * 5;
+  const EnergyTotals& e = *run.last().energy;
+  std::printf("reports in contact %d of %zu; worst change of the linear momentum %.3g (of one ring's %.4g), of "
+              "the angular %.3g (of %.4g); energy at the end: ALLKE %.6g ALLSE %.6g numerical %.4g (%.3g %% of %.6g)\n",
+              touching, run.recorder.results.size(), worst_linear, ring_momentum, worst_angular, start.angular,
+              e.kinetic, e.strain, e.numerical, 100 * e.numerical / run.recorder.results.front().energy->total,
+              run.recorder.results.front().energy->total);
+  EXPECT_GT(touching, 20);
+  EXPECT_EQ(run.last().contact[0].total_force.norm(), 0);  // they have parted
+  EXPECT_LT(worst_linear, 1e-13 * ring_momentum);
+  EXPECT_LT(worst_angular, 1e-13 * std::abs(start.angular));
+  // The kinematic impact loses energy (nodal masses stop against the master), never gains it.
+  EXPECT_GE(lowest_numerical, -1e-12 * e.total);
+  EXPECT_LT(e.numerical, 0.02 * run.recorder.results.front().energy->total);
+}
+
+/// The cylinder's centre of mass and mean velocity at each report (nodes of CYLN).
+struct BodyMotion {
+  double time = 0;
+  Eigen::Vector2d centre{0, 0}, velocity{0, 0};
+  double kinetic = 0, strain = 0, numerical = 0;  ///< the model's ALLKE, ALLSE, numerical energy
+};
+std::vector<BodyMotion> body_motion(const DeckRun& run, const Eigen::VectorXd& mass, const std::string& set) {
+  std::vector<BodyMotion> out;
+  for (const IncrementResults& r : run.recorder.results) {
+    BodyMotion& b = out.emplace_back();
+    double m = 0;
+    for (int node : run.model.node_sets.at(set)) {
+      const auto i = static_cast<std::size_t>(node);
+      const double mi = mass[static_cast<Eigen::Index>(node)];
+      b.centre += mi * (run.model.coords[i] + r.displacement[i]), b.velocity += mi * r.velocity[i], m += mi;
+    }
+    b.centre /= m, b.velocity /= m;
+    b.time = r.step_time, b.kinetic = r.energy->kinetic, b.strain = r.energy->strain, b.numerical = r.energy->numerical;
+  }
+  return out;
+}
+
+TEST(ExplicitContact, CylinderSlidesInARingWithTheClosedFormSpeedAndEnergy) {
+  // A cylinder (diameter 0.4 m, depth 0.1 m, rho 1000) released at rest level
+  // with the centre of a fixed ring (inner diameter 1.8 m) slides down it
+  // without friction under g = 9.80665: its centre falls 0.7 m, so at the
+  // bottom the energy is m g 0.7 = 86.2632 J and the speed sqrt(2 g 0.7) =
+  // 3.705 m/s (deck: examples/dyn_cylinder_in_ring/make_deck.py, coarse).
+  const std::string path = std::string(TETHER_SOURCE_DIR) + "/tests/analysis/decks/cylinder_in_ring_coarse.inp";
+  const DeckRun run = tether::testing::run_deck_file(path);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  const Eigen::VectorXd mass = nodal_masses(read_text(path));
+  double cylinder_mass = 0;
+  for (int node : run.model.node_sets.at("CYLN")) cylinder_mass += mass[node];
+  const double g = 9.80665, expected_energy = 86.2632, expected_speed = 3.705;
+  EXPECT_NEAR(cylinder_mass / (1000 * M_PI * 0.04 * 0.1), 1, 1e-4);  // CPE8: the circle by parabolic arcs (5e-5)
+  const std::vector<BodyMotion> motion = body_motion(run, mass, "CYLN");
+  // The bottom: the centre crosses x = 0 (linear between reports).
+  double speed = -1, energy = -1, time = -1, worst_numerical = 0;
+  for (std::size_t k = 1; k < motion.size(); ++k) {
+    worst_numerical = std::max(worst_numerical, std::abs(motion[k].numerical));
+    const BodyMotion &a = motion[k - 1], &b = motion[k];
+    if (speed >= 0 || a.centre.x() >= 0 || b.centre.x() < 0) continue;
+    const double w = -a.centre.x() / (b.centre.x() - a.centre.x());
+    speed = (1 - w) * a.velocity.norm() + w * b.velocity.norm();
+    energy = (1 - w) * (a.kinetic + a.strain) + w * (b.kinetic + b.strain);
+    time = (1 - w) * a.time + w * b.time;
+  }
+  ASSERT_GT(speed, 0) << "the cylinder did not reach the bottom";
+  // A point mass on a circle of radius 0.7 from 90 degrees: a quarter of the pendulum's period, K(1/sqrt 2) sqrt(0.7 / g).
+  const double quarter_period = 1.854075 * std::sqrt(0.7 / g);
+  std::printf("mass %.6g kg; at the bottom (t = %.4g s, pendulum %.4g s): speed %.5g m/s (%.3g %%), ALLKE + ALLSE "
+              "%.6g J (%.3g %%); largest |numerical energy| %.3g J\n",
+              cylinder_mass, time, quarter_period, speed, 100 * (speed / expected_speed - 1), energy,
+              100 * (energy / expected_energy - 1), worst_numerical);
+  EXPECT_NEAR(speed / expected_speed, 1, 0.01);
+  EXPECT_NEAR(energy / expected_energy, 1, 0.01);
+  EXPECT_LT(worst_numerical, 0.01 * expected_energy);
+  EXPECT_NEAR(time / quarter_period, 1, 0.01);
+}
+
+Eigen::VectorXd nodal_masses(const std::string& deck) {
+  const auto b = build(deck);
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(b->model.coords.size()));
+  for (const auto& m : b->system->inertia()) {
+    const auto dofs = m->dofs();
+    for (std::size_t i = 0; i < dofs.size(); i += 2)
+      out[b->discretization->dofs().node_of(dofs[i])] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+  }
+  return out;
 }
 
 TEST(ExplicitContact, SoftContactIsRefusedByName) {
@@ -531,6 +912,31 @@ TEST(ExplicitDynamics, ARestartWithinTheStepContinuesTheSameMotion) {
     EXPECT_NEAR(resumed.results.back().velocity[0].x(), full.results.back().velocity[0].x(), 1e-9)
         << "from report " << k + 1;
   }
+}
+
+TEST(ExplicitDamping, ARestartWithMassDampingContinuesTheSameMotion) {
+  // The exponential update composes exactly (two half increments make one),
+  // so a restart from the full-step state of a report continues the run.
+  std::string deck = wall_deck(40, 0.01, 1, 2.2 * 0.4 / kCp);
+  deck.replace(deck.find("*DENSITY\n7800"), 13, "*DAMPING, ALPHA=2000.\n*DENSITY\n7800");
+  deck.replace(deck.find("*STEP"), 5, "*RESTART, WRITE, FREQUENCY=1\n*STEP");
+  const Model model = read_deck_string(deck, "test.inp");
+  StateRecorder full;
+  StaticAnalysis uninterrupted(model, full);
+  ASSERT_TRUE(uninterrupted.run().completed);
+  const Eigen::VectorXd u_full = uninterrupted.solution();
+  ASSERT_GT(full.results.back().energy->viscous, 0.01 * full.results.front().energy->kinetic);  // it damps
+  StateRecorder resumed;
+  StaticAnalysis analysis(model, resumed);
+  analysis.resume(full.states[40], "memory.rst");
+  ASSERT_TRUE(analysis.run().completed);
+  const int n_disp = 2 * static_cast<int>(model.coords.size());
+  EXPECT_LT((analysis.solution() - u_full).head(n_disp).cwiseAbs().maxCoeff(),
+            1e-12 * u_full.head(n_disp).cwiseAbs().maxCoeff());
+  // ALLVD is a sum of force x displacement over increments: the restart's half
+  // increment splits one of them differently (measured 1.5e-5 of ALLVD).
+  EXPECT_NEAR(resumed.results.back().energy->viscous, full.results.back().energy->viscous,
+              1e-4 * full.results.back().energy->viscous);
 }
 
 }  // namespace

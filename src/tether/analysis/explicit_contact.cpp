@@ -2,6 +2,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 
@@ -14,7 +15,7 @@ namespace tether {
 ExplicitContact::ExplicitContact(const Discretization& discretization) : discretization_(discretization) {
   for (const auto& pair : discretization.contact_pairs()) {
     const ContactPairSetup& s = pair->setup();
-    const std::string refuse = "*DYNAMIC, EXPLICIT: " + s.name + ": the explicit contact corrector (hard, frictionless) ";
+    const std::string refuse = "*DYNAMIC, EXPLICIT: " + s.name + ": the explicit contact corrector (hard, with Coulomb friction) ";
     if (s.law.law != PressureOverclosure::Law::Hard)
       throw ModelError(refuse + "does not support a soft pressure-overclosure law yet; use HARD");
     if (s.friction && (s.friction->stick_slope > 0 || s.friction->elastic_slip > 0))
@@ -29,16 +30,25 @@ ExplicitContact::ExplicitContact(const Discretization& discretization) : discret
     p.slipping.assign(s.slave_nodes.size(), false);
   }
   positions_.assign(discretization.model().coords.size(), Eigen::Vector2d::Zero());
+  tolerance_ = 1e-12 * discretization.length_scale();
 }
 
-std::vector<ExplicitContact::Constraint> ExplicitContact::penetrations(const Eigen::VectorXd& u) {
+namespace {
+
+/// Position of `node` at the displacements `u` [length].
+Eigen::Vector2d position(const std::vector<Eigen::Vector2d>& coords, const Eigen::VectorXd& u, int node) {
+  return coords[static_cast<std::size_t>(node)] +
+         Eigen::Vector2d(u[DofMap::displacement(node, 0)], u[DofMap::displacement(node, 1)]);
+}
+
+}  // namespace
+
+std::vector<ExplicitContact::Constraint> ExplicitContact::penetrations(const Eigen::VectorXd& u_now,
+                                                                       const Eigen::VectorXd& u) {
   const std::vector<Eigen::Vector2d>& coords = discretization_.model().coords;
-  for (std::size_t i = 0; i < coords.size(); ++i) {
-    const int node = static_cast<int>(i);
-    positions_[i] = coords[i] + Eigen::Vector2d(u[DofMap::displacement(node, 0)], u[DofMap::displacement(node, 1)]);
-  }
+  for (std::size_t i = 0; i < coords.size(); ++i) positions_[i] = position(coords, u, static_cast<int>(i));
   std::vector<Constraint> out;
-  std::vector<Eigen::Vector2d> slaves, segment;
+  std::vector<Eigen::Vector2d> slaves, segment, segment_now;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     Pair& pair = pairs_[p];
     const ContactPairSetup& s = *pair.setup;
@@ -53,27 +63,58 @@ std::vector<ExplicitContact::Constraint> ExplicitContact::penetrations(const Eig
       const ContactPairing& pairing = pair.pairing[k];
       if (!pairing.found() || pairing.at_corner || pairing.gap >= 0) continue;
       const auto nodes = pair.surface.segment_nodes(pairing.segment);
-      segment.clear();
-      for (int node : nodes) segment.push_back(positions_[static_cast<std::size_t>(node)]);
+      segment.clear(), segment_now.clear();
+      for (int node : nodes) {
+        segment.push_back(positions_[static_cast<std::size_t>(node)]);
+        segment_now.push_back(position(coords, u_now, node));
+      }
       const SegmentGeometry g = segment_geometry(slaves[k], segment, ContactDerivatives::gradient);
       if (g.projection.status == ProjectionStatus::degenerate || !g.projection.inside || g.gap >= 0) continue;
+      // The force's direction: the same pairing at t_n (the extended segment; a degenerate one keeps g's).
+      const SegmentGeometry now =
+          segment_geometry(position(coords, u_now, s.slave_nodes[k]), segment_now, ContactDerivatives::gradient);
+      const SegmentGeometry& acting = now.projection.status == ProjectionStatus::degenerate ? g : now;
       Constraint c;
       c.pair = static_cast<int>(p), c.slave = static_cast<int>(k), c.gap = g.gap;
-      c.dofs.push_back(DofMap::displacement(s.slave_nodes[k], 0));
-      c.dofs.push_back(DofMap::displacement(s.slave_nodes[k], 1));
-      for (int node : nodes) c.dofs.push_back(DofMap::displacement(node, 0)), c.dofs.push_back(DofMap::displacement(node, 1));
+      c.nodes.push_back(s.slave_nodes[k]);
+      c.nodes.insert(c.nodes.end(), nodes.begin(), nodes.end());
+      for (int node : c.nodes) c.dofs.push_back(DofMap::displacement(node, 0)), c.dofs.push_back(DofMap::displacement(node, 1));
       c.gradient.assign(g.gap_gradient.data(), g.gap_gradient.data() + g.n_dofs);
+      c.direction.assign(acting.gap_gradient.data(), acting.gap_gradient.data() + acting.n_dofs);
+      c.normal_now = acting.normal;
       c.tangent_gradient.resize(c.gradient.size());
       for (std::size_t a = 0; 2 * a < c.gradient.size(); ++a) {  // node a's block is -N_a n (slave: +n)
         const double weight = c.gradient[2 * a] * g.normal.x() + c.gradient[2 * a + 1] * g.normal.y();
         c.tangent_gradient[2 * a] = weight * g.tangent.x(), c.tangent_gradient[2 * a + 1] = weight * g.tangent.y();
       }
-      pair.normal[k] = g.normal;
+      pair.normal[k] = acting.normal;
       pair.tangent[k] = g.tangent;
       out.push_back(std::move(c));
     }
   }
   return out;
+}
+
+void ExplicitContact::corrected_gaps(std::vector<Constraint>& constraints, const std::vector<int>& active,
+                                     const Eigen::VectorXd& u, const Eigen::VectorXd& inverse_mass, double c,
+                                     const Eigen::VectorXd& f, Eigen::VectorXd& gaps) const {
+  const std::vector<Eigen::Vector2d>& coords = discretization_.model().coords;
+  gaps.resize(static_cast<Eigen::Index>(active.size()));
+  std::vector<Eigen::Vector2d> points;
+  for (std::size_t r = 0; r < active.size(); ++r) {
+    Constraint& k = constraints[static_cast<std::size_t>(active[r])];
+    points.clear();
+    for (std::size_t a = 0; a < k.nodes.size(); ++a) {
+      const int dx = k.dofs[2 * a], dy = k.dofs[2 * a + 1];
+      points.push_back(position(coords, u, k.nodes[a]) +
+                       c * Eigen::Vector2d(inverse_mass[dx] * f[dx], inverse_mass[dy] * f[dy]));
+    }
+    const SegmentGeometry g =
+        segment_geometry(points.front(), std::span(points).subspan(1), ContactDerivatives::gradient);
+    gaps[static_cast<Eigen::Index>(r)] = g.gap;
+    if (g.projection.status != ProjectionStatus::degenerate)
+      k.gradient.assign(g.gap_gradient.data(), g.gap_gradient.data() + g.n_dofs);
+  }
 }
 
 Eigen::VectorXd ExplicitContact::multipliers(const std::vector<Constraint>& constraints, const std::vector<int>& active,
@@ -117,17 +158,56 @@ double moved(const std::vector<int>& dofs, const std::vector<double>& row, const
 
 }  // namespace
 
-Eigen::VectorXd ExplicitContact::normal_multipliers(const std::vector<Constraint>& constraints,
-                                                    const Eigen::VectorXd& inverse_mass, double c) const {
+Eigen::VectorXd ExplicitContact::solve_normal(std::vector<Constraint>& constraints, const std::vector<int>& active,
+                                              const Eigen::VectorXd& u, const Eigen::VectorXd& inverse_mass,
+                                              double c) {
+  constexpr int kMaxPasses = 25;
+  const auto m = static_cast<Eigen::Index>(active.size());
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m), gaps(m);
+  for (int pass = 0;; ++pass) {
+    for (int k : active)  // the forces D^T lambda of this pass (0 elsewhere)
+      for (int dof : constraints[static_cast<std::size_t>(k)].dofs) normal_force_[dof] = 0;
+    for (Eigen::Index r = 0; r < m; ++r) {
+      const Constraint& k = constraints[static_cast<std::size_t>(active[static_cast<std::size_t>(r)])];
+      for (std::size_t i = 0; i < k.dofs.size(); ++i) normal_force_[k.dofs[i]] += k.direction[i] * lambda[r];
+    }
+    corrected_gaps(constraints, active, u, inverse_mass, c, normal_force_, gaps);
+    if (pass > 0 && gaps.cwiseAbs().maxCoeff() <= tolerance_) break;
+    if (pass == kMaxPasses)
+      throw ModelError("*DYNAMIC, EXPLICIT: the contact correction did not converge in " + std::to_string(kMaxPasses) +
+                       " passes (largest remaining penetration " + std::to_string(gaps.cwiseAbs().maxCoeff()) + ")");
+    // Jacobian c G M^-1 D^T (G at the corrected positions): rows scaled by c / m, times D^T.
+    std::vector<Eigen::Triplet<double>> g_entries, d_entries;
+    for (Eigen::Index r = 0; r < m; ++r) {
+      const Constraint& k = constraints[static_cast<std::size_t>(active[static_cast<std::size_t>(r)])];
+      for (std::size_t i = 0; i < k.dofs.size(); ++i) {
+        g_entries.emplace_back(r, k.dofs[i], c * inverse_mass[k.dofs[i]] * k.gradient[i]);
+        d_entries.emplace_back(r, k.dofs[i], k.direction[i]);
+      }
+    }
+    Eigen::SparseMatrix<double> g_rows(m, u.size()), d_rows(m, u.size());
+    g_rows.setFromTriplets(g_entries.begin(), g_entries.end());
+    d_rows.setFromTriplets(d_entries.begin(), d_entries.end());
+    Eigen::SparseMatrix<double> jacobian = g_rows * d_rows.transpose();
+    jacobian.makeCompressed();
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(jacobian);
+    if (lu.info() != Eigen::Success)
+      throw ModelError("*DYNAMIC, EXPLICIT: the contact corrector's system is singular: two penetrating slave nodes "
+                       "constrain the same motion (coincident slave nodes, or a slave node on two master surfaces)");
+    lambda -= lu.solve(gaps);
+  }
+  return lambda;
+}
+
+Eigen::VectorXd ExplicitContact::normal_multipliers(std::vector<Constraint>& constraints, const Eigen::VectorXd& u,
+                                                    const Eigen::VectorXd& inverse_mass, double c) {
   Eigen::VectorXd out = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(constraints.size()));
+  if (normal_force_.size() != u.size()) normal_force_ = Eigen::VectorXd::Zero(u.size());
   std::vector<int> active;
   for (std::size_t k = 0; k < constraints.size(); ++k)
-    if (mobility(constraints[k].dofs, constraints[k].gradient, inverse_mass) > 0) active.push_back(static_cast<int>(k));
+    if (mobility(constraints[k].dofs, constraints[k].direction, inverse_mass) > 0) active.push_back(static_cast<int>(k));
   while (!active.empty()) {  // release the slaves the correction would pull back
-    Eigen::VectorXd rhs(static_cast<Eigen::Index>(active.size()));
-    for (std::size_t r = 0; r < active.size(); ++r)
-      rhs[static_cast<Eigen::Index>(r)] = -constraints[static_cast<std::size_t>(active[r])].gap;
-    const Eigen::VectorXd lambda = multipliers(constraints, active, inverse_mass, c, false, rhs);
+    const Eigen::VectorXd lambda = solve_normal(constraints, active, u, inverse_mass, c);
     std::vector<int> kept;
     for (std::size_t r = 0; r < active.size(); ++r)
       if (lambda[static_cast<Eigen::Index>(r)] >= 0) kept.push_back(active[r]);
@@ -137,6 +217,8 @@ Eigen::VectorXd ExplicitContact::normal_multipliers(const std::vector<Constraint
     }
     active = std::move(kept);
   }
+  for (std::size_t k = 0; k < constraints.size(); ++k)  // normal_force_ back to 0
+    for (int dof : constraints[k].dofs) normal_force_[dof] = 0;
   return out;
 }
 
@@ -210,12 +292,12 @@ void ExplicitContact::add_friction(const std::vector<Constraint>& constraints, c
 void ExplicitContact::correct(const Eigen::VectorXd& u_now, const Eigen::VectorXd& u,
                               const Eigen::VectorXd& inverse_mass, double c, Eigen::VectorXd& force) {
   force.setZero(u.size());
-  const std::vector<Constraint> constraints = penetrations(u);
-  const Eigen::VectorXd lambda = normal_multipliers(constraints, inverse_mass, c);
+  std::vector<Constraint> constraints = penetrations(u_now, u);
+  const Eigen::VectorXd lambda = normal_multipliers(constraints, u, inverse_mass, c);
   for (std::size_t k = 0; k < constraints.size(); ++k) {
     const Constraint& ck = constraints[k];
     const double l = lambda[static_cast<Eigen::Index>(k)];
-    for (std::size_t i = 0; i < ck.dofs.size(); ++i) force[ck.dofs[i]] += ck.gradient[i] * l;
+    for (std::size_t i = 0; i < ck.dofs.size(); ++i) force[ck.dofs[i]] += ck.direction[i] * l;
     pairs_[static_cast<std::size_t>(ck.pair)].multiplier[static_cast<std::size_t>(ck.slave)] = l;
   }
   add_friction(constraints, lambda, u_now, u, inverse_mass, c, force);

@@ -47,15 +47,16 @@ void ExplicitDynamicProcedure::check_supported() const {
   if (!disc.elimination_rows().empty())
     throw ModelError(scheme + "eliminated dofs (*EQUATION, *MPC, *TIE by elimination) yet: " +
                      std::to_string(disc.elimination_rows().size()) + " dependent dof(s)");
-  for (const auto& m : system_.inertia())
-    if (m->damped())
-      throw ModelError(scheme + "*DAMPING (Rayleigh) yet: " + m->element().describe() + " is damped");
   if (system_.inertia().empty()) throw ModelError(scheme + "a model without elements");
 }
 
 void ExplicitDynamicProcedure::update_limit(const Eigen::VectorXd& u, double total_time, bool report) {
   const Step& step = system_.step();
-  stable_ = stable_increment(system_.inertia(), EvaluationState{u, u, 0, total_time, 0, step.nlgeom});
+  const EquationMap& equations = system_.equations();
+  stable_ = stable_increment(system_.inertia(), EvaluationState{u, u, 0, total_time, 0, step.nlgeom},
+                             [&equations](int dof) { return equations.is_prescribed(dof); });
+  if (stable_.element < 0)
+    throw ModelError("*DYNAMIC, EXPLICIT (step " + step.name + "): every dof of every element is held: nothing moves");
   const std::string where =
       system_.inertia()[static_cast<std::size_t>(stable_.element)]->element().describe();
   if (step.direct) {
@@ -119,6 +120,10 @@ void ExplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
   u_previous_ = u;
   force_previous_ = force_ = step_u_ = Eigen::VectorXd::Zero(n);
   h_previous_ = 0;
+  sort_elements();
+  setup_damping(EvaluationState{u, u, 0, step_start, 0, system_.step().nlgeom});
+  residual_.resize(0), held_residual_.resize(0);
+  evaluate_held(EvaluationState{u, u, 0, step_start, 0, system_.step().nlgeom});
   evaluate_forces(EvaluationState{u, u, 0, step_start, 0, system_.step().nlgeom});
   if (!motion_.started) {
     EnergyTotals& e = motion_.energy;
@@ -131,11 +136,84 @@ void ExplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
   }
   work_ = motion_.energy.work;
   friction_start_ = motion_.energy.friction;
+  viscous_ = motion_.energy.viscous;
+}
+
+void ExplicitDynamicProcedure::setup_damping(const EvaluationState& s) {
+  const auto n = static_cast<Eigen::Index>(mass_.size());
+  mass_damping_.resize(0);
+  stiffness_damping_.clear();
+  Eigen::VectorXd alpha_mass = Eigen::VectorXd::Zero(n);
+  const auto& inertia = system_.inertia();
+  LocalSystem k;
+  for (std::size_t e = 0; e < inertia.size(); ++e) {
+    const ElementInertia& m = *inertia[e];
+    const auto dofs = m.dofs();
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      alpha_mass[dofs[i]] += m.damping_alpha() * m.mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+    if (m.damping_beta() == 0) continue;
+    k.reset(static_cast<Eigen::Index>(dofs.size()));
+    m.element().evaluate(s, k, true);
+    stiffness_damping_.push_back({static_cast<int>(e), m.damping_beta() * k.tangent});
+  }
+  if (alpha_mass.cwiseAbs().maxCoeff() > 0) {
+    mass_damping_ = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index d = 0; d < n; ++d)
+      if (mass_[d] > 0) mass_damping_[d] = alpha_mass[d] / mass_[d];
+  }
+  factors_h_ = -1;
+  set_damping_factors(0);
+}
+
+void ExplicitDynamicProcedure::set_damping_factors(double h_average) {
+  if (h_average == factors_h_) return;
+  factors_h_ = h_average;
+  const auto n = inverse_mass_.size();
+  decay_.setOnes(n), gain_.setOnes(n);
+  if (mass_damping_.size() > 0)
+    for (Eigen::Index d = 0; d < n; ++d) {
+      const double x = mass_damping_[d] * h_average;
+      if (x == 0 || inverse_mass_[d] == 0) continue;  // prescribed dofs follow their motion
+      decay_[d] = std::exp(-x);
+      gain_[d] = -std::expm1(-x) / x;
+    }
+  effective_inverse_mass_ = gain_.cwiseProduct(inverse_mass_);
+}
+
+void ExplicitDynamicProcedure::sort_elements() {
+  const auto n = static_cast<std::size_t>(system_.discretization().dofs().n_dofs());
+  std::vector<bool> constant(n, false);
+  for (int d : prescribed_) constant[static_cast<std::size_t>(d)] = true;  // held dofs keep their values...
+  for (const auto& [dof, v] : system_.loads().prescribed)  // ... unless the step moves them
+    constant[static_cast<std::size_t>(dof)] = v.amplitude < 0 ? v.start == v.target : v.target == 0;
+  moving_elements_.clear(), held_elements_.clear();
+  const auto& elements = system_.discretization().elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto dofs = elements[e]->dofs();
+    const bool held = std::all_of(dofs.begin(), dofs.end(), [&](int d) { return constant[static_cast<std::size_t>(d)]; });
+    (held ? held_elements_ : moving_elements_).push_back(static_cast<int>(e));
+  }
+}
+
+void ExplicitDynamicProcedure::evaluate_held(const EvaluationState& s) {
+  if (residual_.size() == s.u.size() && held_residual_.size() == s.u.size()) residual_ -= held_residual_;
+  held_residual_.setZero(s.u.size());
+  const auto& elements = system_.discretization().elements();
+  for (int e : held_elements_) {
+    const auto& el = elements[static_cast<std::size_t>(e)];
+    local_.reset(static_cast<Eigen::Index>(el->dofs().size()));
+    el->evaluate(s, local_, false);
+    scatter(*el, local_.residual, 1, held_residual_);
+    el->commit(s);
+  }
+  if (residual_.size() == s.u.size()) residual_ += held_residual_;  // held dofs only: no free acceleration changes
 }
 
 void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
-  residual_.setZero(s.u.size());
-  for (const auto& el : system_.discretization().elements()) {
+  residual_ = held_residual_;
+  const auto& elements = system_.discretization().elements();
+  for (int e : moving_elements_) {
+    const auto& el = elements[static_cast<std::size_t>(e)];
     local_.reset(static_cast<Eigen::Index>(el->dofs().size()));
     el->evaluate(s, local_, false);
     scatter(*el, local_.residual, 1, residual_);
@@ -147,6 +225,20 @@ void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
     scatter(*p, local_.residual, -1, external_);
   }
   residual_ -= external_;
+  damping_force_.setZero(s.u.size());
+  const auto& inertia = system_.inertia();
+  for (const StiffnessDamping& c : stiffness_damping_) {  // beta K_e v_{n-1/2}
+    const auto dofs = inertia[static_cast<std::size_t>(c.element)]->dofs();
+    for (std::size_t i = 0; i < dofs.size(); ++i) {
+      double f = 0;
+      for (std::size_t j = 0; j < dofs.size(); ++j)
+        f += c.matrix(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) * half_velocity_[dofs[j]];
+      damping_force_[dofs[i]] += f;
+    }
+  }
+  if (mass_damping_.size() > 0)  // into the reactions (free dofs: integrated exactly in advance())
+    for (int d : prescribed_) damping_force_[d] += mass_damping_[d] * mass_[d] * half_velocity_[d];
+  residual_ += damping_force_;
   for (int d : free_) accel_[d] = -residual_[d] * inverse_mass_[d];
 }
 
@@ -173,16 +265,20 @@ void ExplicitDynamicProcedure::work_force(Eigen::VectorXd& out) const {
 void ExplicitDynamicProcedure::correction_force(Eigen::VectorXd& u, double h, Eigen::VectorXd& force) {
   const double h_average = 0.5 * (h_previous_ + h), c = h * h_average;
   const int n_disp = system_.discretization().dofs().n_displacement_dofs();
+  set_damping_factors(h_average);
   predicted_ = u;
-  for (int d = 0; d < n_disp; ++d) predicted_[d] += h * (half_velocity_[d] + h_average * accel_[d]);
+  for (int d = 0; d < n_disp; ++d)
+    predicted_[d] += h * (decay_[d] * half_velocity_[d] + h_average * gain_[d] * accel_[d]);
   force.setZero(u.size());
+  // A force f at t_n moves the predicted positions by c gain M^-1 f.
+  const Eigen::VectorXd& mobility = effective_inverse_mass_;
   if (constraints_) {  // first the constraints, then contact from the constrained prediction
-    constraints_->correct(predicted_, inverse_mass_, c, constraint_force_, u);
+    constraints_->correct(predicted_, mobility, c, constraint_force_, u);
     force += constraint_force_;
-    predicted_ += c * inverse_mass_.cwiseProduct(constraint_force_);
+    predicted_ += c * mobility.cwiseProduct(constraint_force_);
   }
   if (contact_) {
-    contact_->correct(u, predicted_, inverse_mass_, c, contact_only_);
+    contact_->correct(u, predicted_, mobility, c, contact_only_);
     force += contact_only_;
   }
 }
@@ -200,17 +296,22 @@ void ExplicitDynamicProcedure::advance(Eigen::VectorXd& u, double t, double h) {
   std::swap(force_previous_, force_);
   const double h_average = 0.5 * (h_previous_ + h);
   const int n_disp = system_.discretization().dofs().n_displacement_dofs();
+  set_damping_factors(h_average);
   u_previous_ = u;
+  double viscous_power = 0;  // (the damping forces at t_n) . (u_{n+1} - u_n) / h
   for (int d = 0; d < n_disp; ++d) {
-    half_velocity_[d] += h_average * accel_[d];
+    const double undamped = half_velocity_[d] + h_average * accel_[d];
+    half_velocity_[d] = decay_[d] * half_velocity_[d] + h_average * gain_[d] * accel_[d];
     u[d] += h * half_velocity_[d];
+    viscous_power += (damping_force_[d] + mass_[d] * (undamped - half_velocity_[d]) / h_average) * half_velocity_[d];
   }
+  viscous_ += h * viscous_power;
   const double t_next = t + h;
   system_.apply_loads(IncrementTimes{t_next, motion_time_offset_ + t_next, h, period_, false}, u, cloads_);
   for (int d = 0; d < n_disp; ++d) step_u_[d] = u[d] - u_previous_[d];
   const EvaluationState s{u, u_previous_, t_next, motion_time_offset_ + t_next, h, system_.step().nlgeom};
   evaluate_forces(s);
-  for (const auto& el : system_.discretization().elements()) el->commit(s);
+  for (int e : moving_elements_) system_.discretization().elements()[static_cast<std::size_t>(e)]->commit(s);
   h_previous_ = h;
   ++n_increments_;
 }
@@ -221,11 +322,16 @@ IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttemp
   motion_time_offset_ = t.total_time - t.step_time;
   if (!started_) start_step(t, u), started_ = true;
   const double t_start = t.step_time - t.dt;
-  if (system_.step().nlgeom && n_increments_ > 0) update_limit(u, t.total_time - t.dt, false);
+  if (system_.step().nlgeom && n_increments_ > 0) {
+    update_limit(u, t.total_time - t.dt, false);
+    if (!stiffness_damping_.empty()) setup_damping(EvaluationState{u, u, t_start, t.total_time - t.dt, 0, true});
+  }
   const int k = static_cast<int>(std::max(1.0, std::ceil(t.dt / limit_ - 1e-9)));
   const double h = t.dt / k;
   const Eigen::VectorXd u_start = u;
   const auto evaluation_start = Clock::now();
+  if (n_increments_ > 0 && !held_elements_.empty())  // the held elements' forces of this interval
+    evaluate_held(EvaluationState{u, u, t_start, t.total_time - t.dt, 0, system_.step().nlgeom});
   for (int i = 0; i < k; ++i) advance(u, i + 1 == k ? t.step_time - h : t_start + i * h, h);
   evaluation_seconds_ += seconds_since(evaluation_start);
 
@@ -262,7 +368,11 @@ IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttemp
 }
 
 bool ExplicitDynamicProcedure::diverged(const EnergyTotals& e) const {
-  const double put_in = std::abs(motion_.balance_start) + std::abs(e.work);
+  // What was put in, plus what the forces at t_n put in over one increment
+  // (the full-step kinetic energy runs half an increment ahead of ALLWK: a
+  // model at rest loaded from t = 0 has ALLWK = 0 and ALLKE > 0 at the first report).
+  const double power = std::abs(force_.dot(motion_.v));
+  const double put_in = std::abs(motion_.balance_start) + std::abs(e.work) + h_previous_ * power;
   return !std::isfinite(e.total) || e.kinetic + e.strain > kEnergyGrowthLimit * put_in;
 }
 
@@ -280,13 +390,17 @@ IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttem
   }
   const int n_disp = dofs.n_displacement_dofs();
   motion_.v = Eigen::VectorXd::Zero(u.size());
-  motion_.v.head(n_disp) = half_velocity_.head(n_disp) + (0.5 * h_previous_) * accel.head(n_disp);
+  set_damping_factors(0.5 * h_previous_);  // v_n: half an increment from v_{n-1/2}
+  motion_.v.head(n_disp) = decay_.head(n_disp).cwiseProduct(half_velocity_.head(n_disp)) +
+                           (0.5 * h_previous_) * gain_.head(n_disp).cwiseProduct(accel.head(n_disp));
   motion_.a = accel;
   force_ = external_;
   for (int d : prescribed_) force_[d] += residual[d] + mass_[d] * accel[d];
   motion_.work_force = force_;
   motion_.static_residual = residual;
-  motion_.damping_force = Eigen::VectorXd::Zero(u.size());
+  motion_.damping_force = damping_force_;
+  if (mass_damping_.size() > 0)
+    for (int d : free_) motion_.damping_force[d] += mass_damping_[d] * mass_[d] * motion_.v[d];  // at t_n
   Eigen::VectorXd reaction = residual;
   reaction.head(n_disp) += mass_.head(n_disp).cwiseProduct(accel.head(n_disp));
 
@@ -306,9 +420,9 @@ IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttem
   e.strain = 0;
   for (const auto& el : disc.elements()) e.strain += el->strain_energy(s);
   e.work = work_ + 0.5 * (force_previous_ + force_).dot(step_u_);
-  e.viscous = 0;
+  e.viscous = viscous_;
   e.friction = friction_start_ + (contact_ ? contact_->dissipation() : 0.0);
-  e.total = e.kinetic + e.strain + e.friction - e.work;
+  e.total = e.kinetic + e.strain + e.viscous + e.friction - e.work;
   e.numerical = motion_.balance_start - e.total;
   results.energy = e;
   results.step = attempt.step;

@@ -5,11 +5,20 @@
 /// Each explicit increment h (velocity Verlet form of central differences):
 ///   v_{n+1/2} = v_{n-1/2} + (h_{n-1/2} + h_{n+1/2}) / 2 a_n,  u_{n+1} = u_n + h v_{n+1/2},
 ///   a_{n+1} = M^-1 (f_ext(t_{n+1}) - f_int(u_{n+1}))  at free dofs,
-/// with f_int the elements' residuals evaluated without tangent. Prescribed
+/// with f_int the elements' residuals evaluated without tangent (elements
+/// whose every dof is held at a constant value: once per report interval,
+/// not per increment; their forces only enter the reactions). Prescribed
 /// dofs follow their values (and amplitudes): their half-step velocity is the
 /// difference of the prescribed values, their acceleration the difference of
 /// those velocities. Full-step velocities v_n = v_{n-1/2} + h/2 a_n are what
 /// the results, the kinetic energy and the next step see.
+///
+/// Rayleigh damping (*DAMPING ALPHA, BETA): the mass-proportional part is
+/// integrated exactly per dof, v_{n+1/2} = e^{-alpha h} v_{n-1/2} + (1 - e^{-alpha h})/alpha a_n
+/// (every mode's amplitude decays as e^{-alpha t / 2}, and the stable increment
+/// is not lowered); the stiffness-proportional part is the force beta K_e v_{n-1/2}
+/// with the lagged velocity, as ABAQUS/Explicit does it, which lowers the stable
+/// increment to (2/omega)(sqrt(1 + xi^2) - xi), xi = beta omega / 2 (stable_increment.hpp).
 ///
 /// Constraints and contact: ExplicitConstraints' and ExplicitContact's
 /// predictor–corrector add their forces at t_n before the velocities and
@@ -84,9 +93,20 @@ class ExplicitDynamicProcedure final : public Procedure {
   void start_step(const IncrementTimes& first, Eigen::VectorXd& u);
   /// r = f_int(u) - f_ext at step time `t` (loads applied by the caller), and a = -r / m at free dofs.
   void evaluate_forces(const EvaluationState& s);
+  /// Sorts the elements into moving ones and held ones (every dof held at a
+  /// constant value over the step: their forces do not change as the scheme moves).
+  void sort_elements();
+  /// The held elements' forces at state `s` into held_residual_ (once per report interval), and their commit.
+  void evaluate_held(const EvaluationState& s);
   /// Accelerations at the prescribed dofs at step time `t` (state `u`) from
   /// their values at t + h (the central difference of the prescribed motion).
   void prescribed_accelerations(const Eigen::VectorXd& u, double t, double h);
+  /// Rayleigh damping of the step: alpha per free dof (mass-proportional, from
+  /// the elements' alpha m), and beta_e K_e per damped element at the state `s`.
+  void setup_damping(const EvaluationState& s);
+  /// decay_ = exp(-alpha h_average) and gain_ = (1 - decay_) / (alpha h_average) per dof, and
+  /// effective_inverse_mass_ = gain_ / m (all 1 and 1 / m without mass-proportional damping).
+  void set_damping_factors(double h_average);
   /// Forces doing work: applied forces at free dofs, the reactions r + m a at prescribed ones.
   void work_force(Eigen::VectorXd& out) const;
   /// The constraint and contact forces at t_n (ExplicitConstraints and
@@ -102,7 +122,8 @@ class ExplicitDynamicProcedure final : public Procedure {
   IncrementResults interval_results(const IncrementAttempt& attempt, const EvaluationState& s,
                                     const ElementPointSource* points);
   /// The energy in the model (ALLKE + ALLSE) is not finite or more than
-  /// kEnergyGrowthLimit times what was put in (the balance's start plus |ALLWK|).
+  /// kEnergyGrowthLimit times what was put in (the balance's start plus |ALLWK|
+  /// plus h |F_n . v_n|, the work of the next increment).
   [[nodiscard]] bool diverged(const EnergyTotals& e) const;
 
   StepSystem& system_;
@@ -123,6 +144,18 @@ class ExplicitDynamicProcedure final : public Procedure {
   Eigen::VectorXd residual_;             ///< f_int - f_ext at the current state
   Eigen::VectorXd next_values_;          ///< scratch: prescribed values one increment ahead
   LocalSystem local_;                    ///< scratch for one contribution
+  std::vector<int> moving_elements_, held_elements_;  ///< element indices (see sort_elements())
+  Eigen::VectorXd mass_damping_;         ///< alpha per dof [1/time], 0 at prescribed dofs (empty: none)
+  Eigen::VectorXd decay_, gain_, effective_inverse_mass_;  ///< see set_damping_factors()
+  double factors_h_ = -1;                ///< the h_average of decay_ and gain_
+  struct StiffnessDamping {
+    int element = 0;         ///< index in the step system's inertia()
+    Eigen::MatrixXd matrix;  ///< beta_e K_e over the element's dofs [force time / length]
+  };
+  std::vector<StiffnessDamping> stiffness_damping_;
+  Eigen::VectorXd damping_force_;        ///< beta K v_{n-1/2} (with alpha m v_{n-1/2} at prescribed dofs)
+  double viscous_ = 0;                   ///< ALLVD (from the step's start value)
+  Eigen::VectorXd held_residual_;        ///< the held elements' f_int at the current report interval
   Eigen::VectorXd half_velocity_;        ///< v_{n-1/2} (v_0 before the first increment)
   Eigen::VectorXd accel_;                ///< a_n
   Eigen::VectorXd u_previous_;           ///< u_{n-1} (evaluation state's u_start)

@@ -25,16 +25,31 @@ double largest_frequency_squared(const Eigen::MatrixXd& stiffness, const Eigen::
   return eigen.eigenvalues().maxCoeff();
 }
 
+double damped_stable_increment(double omega, double beta) {
+  const double xi = 0.5 * beta * omega;
+  // (2/omega)(sqrt(1 + xi^2) - xi), written without the cancellation at large xi.
+  return 2 / (omega * (std::sqrt(1 + xi * xi) + xi));
+}
+
 StableIncrement stable_increment(const std::vector<std::unique_ptr<ElementInertia>>& inertia,
-                                 const EvaluationState& s) {
+                                 const EvaluationState& s, const std::function<bool(int)>& held) {
   StableIncrement out;
   LocalSystem local;
+  std::vector<Eigen::Index> free;
   for (std::size_t e = 0; e < inertia.size(); ++e) {
     const ElementInertia& m = *inertia[e];
-    local.reset(static_cast<Eigen::Index>(m.dofs().size()));
+    const auto dofs = m.dofs();
+    free.clear();
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      if (!held || !held(dofs[i])) free.push_back(static_cast<Eigen::Index>(i));
+    if (free.empty()) continue;
+    local.reset(static_cast<Eigen::Index>(dofs.size()));
     m.element().evaluate(s, local, true);
     const std::string what = m.element().describe();
-    const double omega2 = largest_frequency_squared(local.tangent, m.mass().diagonal(), what);
+    const Eigen::VectorXd mass = m.mass().diagonal();
+    const double omega2 = free.size() == dofs.size()
+                              ? largest_frequency_squared(local.tangent, mass, what)
+                              : largest_frequency_squared(local.tangent(free, free), mass(free), what);
     if (!(omega2 > 0) || !std::isfinite(omega2)) {
       std::ostringstream why;
       why << what << " gives a stable time increment that is not a positive number (largest omega^2 = " << omega2
@@ -42,9 +57,10 @@ StableIncrement stable_increment(const std::vector<std::unique_ptr<ElementInerti
       throw ModelError(why.str());
     }
     const double omega = std::sqrt(omega2);
-    if (omega > out.omega_max) out.omega_max = omega, out.element = static_cast<int>(e);
+    out.omega_max = std::max(out.omega_max, omega);
+    const double dt = damped_stable_increment(omega, m.damping_beta());
+    if (dt < out.dt) out.dt = dt, out.element = static_cast<int>(e);
   }
-  if (out.element >= 0) out.dt = 2 / out.omega_max;
   return out;
 }
 

@@ -37,6 +37,9 @@ std::vector<StepBodyLoad> step_body_loads(const Model& model, int step_index) {
       removed.amplitude = -1;
       loads.push_back({removed, RampedValue{value.second, 0.0, -1}});
     }
+    if (!step.ramp_loads)  // AMPLITUDE=STEP (and dynamic steps by default): the target holds from the step's start
+      for (StepBodyLoad& l : loads)
+        if (l.value.amplitude < 0) l.value.start = l.value.target;
     if (k == step_index) break;
     total_time += step.period;
     end.clear();

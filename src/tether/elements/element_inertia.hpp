@@ -71,6 +71,9 @@ class ElementInertia final : public Contribution {
   /// Adds the damping force C v_e [force] at state `s` with global velocities `v` to `out` (global).
   void add_damping_force(const EvaluationState& s, const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
   [[nodiscard]] bool damped() const { return damping_alpha_ != 0 || damping_beta_ != 0; }
+  /// Rayleigh factors: mass-proportional [1/time], stiffness-proportional [time].
+  [[nodiscard]] double damping_alpha() const { return damping_alpha_; }
+  [[nodiscard]] double damping_beta() const { return damping_beta_; }
   /// Adds M_e x_e to `out` (global vectors).
   void add_mass_times(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   /// Moves the mass of the element's nodes flagged in `massless` (the

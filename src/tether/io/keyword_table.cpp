@@ -182,7 +182,9 @@ std::vector<KeywordSpec> build_table() {
        "one line `rho[, temperature]` with rho > 0 [mass/volume] (a single line holds at every temperature)", {},
        handle_density, ""},
       {"DAMPING", kMaterial,
-       "Rayleigh damping of the material in dynamic steps: C = ALPHA M + BETA K (K the element's tangent).",
+       "Rayleigh damping of the material in dynamic steps: C = ALPHA M + BETA K (K the element's tangent). "
+       "Explicit steps integrate the ALPHA part exactly and apply BETA K to the lagged velocity, which lowers the "
+       "stable increment to (2/omega)(sqrt(1 + xi^2) - xi), xi = BETA omega / 2.",
        "",
        {real("ALPHA", "0", "Mass-proportional factor [1/time]."),
         real("BETA", "0", "Stiffness-proportional factor [time]."),
