@@ -152,6 +152,16 @@ TEST(ImplicitDynamics, PlasticDissipationClosesTheBalance) {
   EXPECT_GT(end.plastic, 0.2 * e0);
   EXPECT_LT(std::abs(end.numerical), 0.01 * end.plastic);
   EXPECT_NEAR(end.kinetic + end.strain + end.plastic + end.numerical, e0, 1e-12);
+  // The same element in an explicit step (lumped mass): with ALLPD in the
+  // balance the numerical energy is 16 % of ALLPD (a gain of 0.038 J, not
+  // yet explained); without it, it would be all of ALLPD.
+  std::string explicit_deck = replaced(deck, "*DYNAMIC, ALPHA=0, DIRECT\n0.002, 0.5", "*DYNAMIC, EXPLICIT\n, 0.5");
+  const DeckRun central = run_deck_text(explicit_deck);
+  ASSERT_TRUE(central.summary.completed) << central.summary.message;
+  const EnergyTotals& c = *central.last().energy;
+  std::printf("explicit: ALLPD %.6g, numerical %.3g\n", c.plastic, c.numerical);
+  EXPECT_GT(c.plastic, 0.2 * e0);
+  EXPECT_LT(std::abs(c.numerical), 0.2 * c.plastic);
 }
 
 TEST(ImplicitDynamics, AFreeBodyFliesAtItsInitialVelocity) {

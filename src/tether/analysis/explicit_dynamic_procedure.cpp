@@ -422,7 +422,8 @@ IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttem
   e.work = work_ + 0.5 * (force_previous_ + force_).dot(step_u_);
   e.viscous = viscous_;
   e.friction = friction_start_ + (contact_ ? contact_->dissipation() : 0.0);
-  e.total = e.kinetic + e.strain + e.viscous + e.friction - e.work;
+  e.plastic = results.plastic_dissipation.value_or(0.0);  // the material points' committed records
+  e.total = e.kinetic + e.strain + e.viscous + e.friction + e.plastic - e.work;
   e.numerical = motion_.balance_start - e.total;
   results.energy = e;
   results.step = attempt.step;
