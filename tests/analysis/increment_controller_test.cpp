@@ -233,7 +233,7 @@ TEST(IncrementController, AProceduresEstimateSetsTheNextIncrementWithinTheBounds
   EXPECT_DOUBLE_EQ(c.dt(), 0.27);
   c.accept(c.next_attempt(), 1, 1.5);
   EXPECT_DOUBLE_EQ(c.dt(), 0.3);
-  c.next_attempt();
+  static_cast<void>(c.next_attempt());
   EXPECT_EQ(c.cut_back(0.4), IncrementController::CutBack::Retry);  // the estimate, not the controls' 0.25
   EXPECT_DOUBLE_EQ(c.dt(), 0.12);
   EXPECT_EQ(c.cut_back(), IncrementController::CutBack::Retry);

@@ -161,7 +161,7 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
         const int node = dofs.node_of(dof), component = dofs.component_of(dof);
         auto it = std::find_if(v.nodal_force.begin(), v.nodal_force.end(),
                                [&](const NodalConstraintForce& n) { return n.node == node; });
-        if (it == v.nodal_force.end()) it = v.nodal_force.insert(v.nodal_force.end(), {node, Eigen::Vector2d::Zero()});
+        if (it == v.nodal_force.end()) it = v.nodal_force.insert(v.nodal_force.end(), NodalConstraintForce{node, Eigen::Vector2d::Zero(), std::nullopt});
         if (component < kDofsPerNode)
           it->force[component] -= l * c;
         else

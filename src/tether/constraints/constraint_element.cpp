@@ -155,7 +155,7 @@ MultiplierValues ConstraintElement::values(const EvaluationState& state, const D
     const int node = dofs.node_of(dofs_[i]), component = dofs.component_of(dofs_[i]);
     std::size_t a = 0;
     while (a < v.nodal_force.size() && v.nodal_force[a].node != node) ++a;
-    if (a == v.nodal_force.size()) v.nodal_force.push_back({node, Eigen::Vector2d::Zero()});
+    if (a == v.nodal_force.size()) v.nodal_force.push_back({node, Eigen::Vector2d::Zero(), std::nullopt});
     if (component < kDofsPerNode)
       v.nodal_force[a].force[component] += force[i];
     else

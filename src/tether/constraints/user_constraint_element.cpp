@@ -157,7 +157,8 @@ MultiplierValues UserConstraintElement::values(const EvaluationState& state) con
   }
   // The force the constraint exerts on a displacement dof is -residual (user_constraint.h).
   for (int a = 0; a < n_nodes(); ++a)
-    v.nodal_force.push_back({node_indices_[a], -Eigen::Vector2d(residual[abi_index(a, 0)], residual[abi_index(a, 1)])});
+    v.nodal_force.push_back(
+        {node_indices_[a], -Eigen::Vector2d(residual[abi_index(a, 0)], residual[abi_index(a, 1)]), std::nullopt});
   return v;
 }
 
