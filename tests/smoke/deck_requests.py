@@ -16,8 +16,8 @@ E -> strains, PEEQ -> equivalent plastic strain, PE -> plastic strains;
 *CONTACT PRINT CSTR/CSTRESS -> contact stress, CDIS/CDISP ->
 relative contact displacement (one block for all pairs, set ""), CFN/CFS ->
 total normal/shear contact force per pair (no variables: CSTR, CDIS), and
-the contact state block of every pair; *OUTPUT, HISTORY with *NODE OUTPUT / *ELEMENT OUTPUT (or
-VARIABLE=PRESELECT) like the print requests. A request with FREQUENCY=0
+the contact state block of every pair; *OUTPUT, HISTORY with *NODE OUTPUT / *ELEMENT OUTPUT
+like the print requests (VARIABLE=PRESELECT there: the energies, no block of its own). A request with FREQUENCY=0
 writes nothing; file requests (*NODE FILE, *OUTPUT, FIELD, ...) write no
 .dat blocks. Variables tether does not print are left out (the reader warns).
 """
@@ -64,9 +64,9 @@ def read(path):
             dynamic = True
             current.append(("energies", ""))  # at every step's end
         elif keyword == "*OUTPUT":
+            # VARIABLE=PRESELECT on a history request means ABAQUS's whole-model energies: no .dat block
+            # beyond the energies dynamic steps write anyway.
             history = _frequency(params) if "HISTORY" in params else "field"
-            if history != "field" and history > 0 and "VARIABLE" in params:
-                current += [("displacements", "NALL"), ("forces", "NALL"), ("stresses", "EALL"), ("strains", "EALL")]
         elif keyword in ("*NODE PRINT", "*NODE OUTPUT"):
             frequency = _frequency(params) if keyword == "*NODE PRINT" else history
             if frequency == "field" or frequency == 0:
