@@ -12,6 +12,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "bar_decks.hpp"
 #include "run_deck.hpp"
 #include "tether/analysis/increment_controller.hpp"
 #include "tether/analysis/stable_increment.hpp"
@@ -36,24 +37,7 @@ const double kLambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu)), kMu = kE / (2 * (
 /// 1D-strain (plane strain, rollers) wave speed.
 const double kCp = std::sqrt((kLambda + 2 * kMu) / kRho);
 
-/// A bar of `n` square CPE4 of side `h` along x, one element high, every node
-/// held in y (1D strain). Node i (1..n+1) at x = (i-1) h, y = 0; node n+1+i above it.
-/// Sets: LEFT (x = 0), RIGHT (x = L), INNER (the rest), ALLN. `bc` and
-/// `step` are appended to the model data and the step.
-std::string bar_deck(int n, double h, const std::string& bc, const std::string& step) {
-  std::ostringstream d;
-  d.precision(17);
-  d << "*NODE\n";
-  for (int i = 0; i <= n; ++i) d << i + 1 << ", " << i * h << ", 0\n" << n + 2 + i << ", " << i * h << ", " << h << "\n";
-  d << "*ELEMENT, TYPE=CPE4, ELSET=BAR\n";
-  for (int i = 0; i < n; ++i) d << i + 1 << ", " << i + 1 << ", " << i + 2 << ", " << n + 3 + i << ", " << n + 2 + i << "\n";
-  d << "*NSET, NSET=ALLN, GENERATE\n1, " << 2 * n + 2 << ", 1\n*NSET, NSET=LEFT\n1, " << n + 2 << "\n*NSET, NSET=RIGHT\n"
-    << n + 1 << ", " << 2 * n + 2 << "\n*NSET, NSET=INNER, GENERATE\n2, " << n << ", 1\n" << n + 3 << ", " << 2 * n + 1
-    << ", 1\n*MATERIAL, NAME=STEEL\n*ELASTIC\n" << kE << ", " << kNu << "\n*DENSITY\n" << kRho
-    << "\n*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL\n1.\n*BOUNDARY\nALLN, 2, 2\n"
-    << bc << "*STEP\n" << step << "*END STEP\n";
-  return d.str();
-}
+using tether::testing::bar_deck;  // bar_decks.hpp: 1D-strain steel bar, sets LEFT, RIGHT, INNER, ALLN
 
 /// Where the x velocity along the bar's bottom edge first crosses `level`
 /// coming from x = 0 (linear between nodes) [length].
@@ -422,23 +406,10 @@ TEST(ExplicitDynamics, UnsupportedContributionsAreRefusedByName) {
 }
 
 
-/// The bar of bar_deck (every node held in y) at rest against a rigid wall:
-/// one CPE4 left of x = 0 (3 h tall, every node held) whose right face is
-/// the master of the bar's left end. The bar moves at -v0.
+/// The bar of bar_deck at rest against a rigid wall (bar_decks.hpp) in an
+/// explicit step of `period`.
 std::string wall_deck(int n, double h, double v0, double period) {
-  std::string deck = bar_deck(n, h, "", "*DYNAMIC, EXPLICIT\n, " + num(period) + "\n");
-  const int w = 2 * n + 10;
-  std::ostringstream wall;
-  wall.precision(17);
-  wall << "*NODE\n" << w + 1 << ", " << -h << ", " << -h << "\n" << w + 2 << ", 0, " << -h << "\n" << w + 3 << ", 0, "
-       << 2 * h << "\n" << w + 4 << ", " << -h << ", " << 2 * h << "\n*ELEMENT, TYPE=CPE4, ELSET=WALL\n" << n + 1 << ", "
-       << w + 1 << ", " << w + 2 << ", " << w + 3 << ", " << w + 4 << "\n*NSET, NSET=WALLN, GENERATE\n" << w + 1 << ", "
-       << w + 4 << ", 1\n*SOLID SECTION, ELSET=WALL, MATERIAL=STEEL\n1.\n*SURFACE, NAME=BAREND\n1, S4\n"
-       << "*SURFACE, NAME=WALLFACE\n" << n + 1 << ", S2\n*SURFACE INTERACTION, NAME=I\n"
-       << "*CONTACT PAIR, INTERACTION=I, TYPE=NODE TO SURFACE\nBAREND, WALLFACE\n*BOUNDARY\nWALLN, 1, 2\n"
-       << "*INITIAL CONDITIONS, TYPE=VELOCITY\nALLN, 1, " << -v0 << "\n";
-  deck.replace(deck.find("*STEP"), 5, wall.str() + "*STEP");
-  return deck;
+  return tether::testing::wall_deck(n, h, v0, "*DYNAMIC, EXPLICIT\n, " + num(period) + "\n");
 }
 
 TEST(ExplicitContact, ElasticBarHitsARigidWall) {
