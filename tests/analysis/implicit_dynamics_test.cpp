@@ -152,16 +152,24 @@ TEST(ImplicitDynamics, PlasticDissipationClosesTheBalance) {
   EXPECT_GT(end.plastic, 0.2 * e0);
   EXPECT_LT(std::abs(end.numerical), 0.01 * end.plastic);
   EXPECT_NEAR(end.kinetic + end.strain + end.plastic + end.numerical, e0, 1e-12);
-  // The same element in an explicit step (lumped mass): with ALLPD in the
-  // balance the numerical energy is 16 % of ALLPD (a gain of 0.038 J, not
-  // yet explained); without it, it would be all of ALLPD.
-  std::string explicit_deck = replaced(deck, "*DYNAMIC, ALPHA=0, DIRECT\n0.002, 0.5", "*DYNAMIC, EXPLICIT\n, 0.5");
-  const DeckRun central = run_deck_text(explicit_deck);
-  ASSERT_TRUE(central.summary.completed) << central.summary.message;
-  const EnergyTotals& c = *central.last().energy;
-  std::printf("explicit: ALLPD %.6g, numerical %.3g\n", c.plastic, c.numerical);
-  EXPECT_GT(c.plastic, 0.2 * e0);
-  EXPECT_LT(std::abs(c.numerical), 0.2 * c.plastic);
+  // The same element in an explicit step (lumped mass). At the stable
+  // increment (19 increments) the numerical energy is -0.038, the size of the
+  // central-difference modified-energy swing of this one-mode model (the
+  // elastic element swings to -0.047): a discretisation error, not energy
+  // lost from the books. With fixed increments it falls as h^2: measured
+  // 4.8e-3, 6.3e-4, 2.3e-4, 5.7e-5 for h = 1e-2 ... 1.25e-3.
+  const auto explicit_numerical = [&](const std::string& increment) {
+    const DeckRun central = run_deck_text(replaced(
+        deck, "*DYNAMIC, ALPHA=0, DIRECT\n0.002, 0.5", "*DYNAMIC, EXPLICIT, DIRECT\n" + increment + ", 0.5"));
+    EXPECT_TRUE(central.summary.completed) << central.summary.message;
+    const EnergyTotals& c = *central.last().energy;
+    EXPECT_GT(c.plastic, 0.2 * e0);
+    std::printf("explicit h %s: ALLPD %.6g, numerical %.3g\n", increment.c_str(), c.plastic, c.numerical);
+    return std::abs(c.numerical) / c.plastic;
+  };
+  const double coarse = explicit_numerical("5e-3"), fine = explicit_numerical("1.25e-3");
+  EXPECT_LT(coarse, 5e-3);
+  EXPECT_LT(fine, coarse / 8);  // at least second order over the two halvings (measured 11x)
 }
 
 TEST(ImplicitDynamics, AFreeBodyFliesAtItsInitialVelocity) {
