@@ -74,8 +74,17 @@ ImplicitDynamicProcedure::ImplicitDynamicProcedure(StepSystem& system, AnalysisO
       alpha_(system.step().dynamic.alpha),
       beta_((1 - alpha_) * (1 - alpha_) / 4),
       gamma_(0.5 - alpha_) {
-  if (system.step().dynamic.redistribute_contact_mass)
-    contact_mass_ = redistribute_contact_mass(system.discretization(), system.inertia());
+  if (!system.step().dynamic.redistribute_contact_mass) return;
+  contact_mass_ = redistribute_contact_mass(system.discretization(), system.inertia());
+  if (contact_mass_.nodes == 0) return;
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(system.discretization().dofs().n_dofs());
+  for (const auto& m : system.inertia()) {
+    const auto d = m->dofs();
+    for (std::size_t i = 0; i < d.size(); ++i)
+      diagonal[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+  }
+  for (int d = 0; d < system.discretization().dofs().n_displacement_dofs(); ++d)
+    if (diagonal[d] == 0) massless_.push_back(d);  // M is positive semi-definite: its row is zero
 }
 
 void ImplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::VectorXd& u) {
@@ -272,6 +281,12 @@ void ImplicitDynamicProcedure::complete(const IncrementAttempt& attempt, const I
     motion_.v[d] = nm.velocity(a, motion_.v[d], motion_.a[d]);
     motion_.a[d] = a;
   }
+  // A massless dof's Newmark recursion is not damped by its equation of
+  // motion; under the trapezoidal rule its a grows from increment to
+  // increment and the next predictor throws its node far off (inverting
+  // elements). Its v and a do not enter M a, so take the increment's mean
+  // velocity and no acceleration: the predictor extrapolates linearly.
+  for (int d : massless_) motion_.v[d] = (s.u[d] - s.u_start[d]) / attempt.time.dt, motion_.a[d] = 0;
   motion_.static_residual = r_new;
 
   const DiscretizationPoints point_source(disc, s);

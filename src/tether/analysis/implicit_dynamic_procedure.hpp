@@ -82,6 +82,9 @@ class ImplicitDynamicProcedure final : public Procedure {
   Eigen::VectorXd external_;   ///< cloads_ + alpha/(1+alpha) * the previous static residual
   ForceAverage force_average_;
   ContactMassSummary contact_mass_;
+  /// Displacement dofs whose mass was moved away (zero row of M): their
+  /// Newmark v and a are not set by the equation of motion (see complete()).
+  std::vector<int> massless_;
   double output_seconds_ = 0;
 };
 
