@@ -303,7 +303,7 @@ TEST(DeckReader, ControlsPersistAcrossStepsUntilReset) {
   EXPECT_FALSE(m.steps[3].controls.line_search);  // N_ls = 0 turns it off again
 }
 
-TEST(DeckReader, ReadsOutputRequestsForTheirStepOnly) {
+TEST(DeckReader, ReadsOutputRequestsAndCarriesThemIntoLaterSteps) {
   std::string deck = replaced(kDeck, "*END STEP", R"(*NODE PRINT, NSET=RIGHT, TOTALS=ONLY, FREQUENCY=2
 RF
 *EL PRINT, ELSET=E1
@@ -345,10 +345,16 @@ E
   EXPECT_EQ(o[5].kind, K::ElementPrint);
   EXPECT_EQ(o[5].frequency, 1);
   const auto& o2 = m.steps[1].outputs;
-  ASSERT_EQ(o2.size(), 2u);  // HISTORY PRESELECT: ABAQUS's whole-model energies, no nodal or element request
+  // FIELD PRESELECT replaces step 1's file requests; HISTORY PRESELECT is
+  // ABAQUS's whole-model energies (no request); step 1's prints carry over.
+  ASSERT_EQ(o2.size(), 5u);
   EXPECT_EQ(o2[0].kind, K::NodeFile);
   EXPECT_EQ(o2[0].variables, (std::vector<std::string>{"U", "RF"}));
   EXPECT_EQ(o2[1].kind, K::ElementFile);
+  EXPECT_EQ(o2[2].kind, K::NodePrint);
+  EXPECT_EQ(o2[2].where.line, o[0].where.line);
+  EXPECT_EQ(o2[3].kind, K::ElementPrint);
+  EXPECT_EQ(o2[4].kind, K::ElementPrint);
 }
 
 TEST(DeckReader, WarnsAboutIgnoredInputButAcceptsIt) {

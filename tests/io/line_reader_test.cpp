@@ -137,7 +137,8 @@ TEST(ReadDeck, ReadsACompleteDeckFile) {
   EXPECT_TRUE(m.steps[0].pressures.empty());
   EXPECT_EQ(m.steps[1].pressures.size(), 2u);
   EXPECT_EQ(m.steps[0].outputs.size(), 2u);
-  EXPECT_EQ(m.steps[1].outputs.size(), 1u);
+  // step 2 gives its own *Node File; step 1's *Node Print and *El File carry over
+  EXPECT_EQ(m.steps[1].outputs.size(), 3u);
   EXPECT_DOUBLE_EQ(m.sections[0].thickness, 0.5);
 }
 

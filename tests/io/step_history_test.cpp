@@ -108,11 +108,37 @@ TOP, P, 2.0
   EXPECT_DOUBLE_EQ(p3[0].magnitude, 5.0);
 }
 
-TEST(StepHistory, OutputRequestsDoNotCarryOver) {
-  const std::string deck = kMesh + "*STEP\n*STATIC\n*NODE PRINT\nU\n*END STEP\n*STEP\n*STATIC\n*END STEP\n";
+// Output requests stay in force in later steps until a step requests the
+// same kind again, which replaces all of that kind (ABAQUS: "output requests
+// apply to the step in which they are defined and to all subsequent steps
+// until they are respecified"; CalculiX: the first *NODE PRINT of a step
+// wipes out the earlier ones).
+TEST(StepHistory, OutputRequestsCarryOverUntilTheirKindIsRequestedAgain) {
+  const std::string deck = kMesh +
+                           "*STEP\n*STATIC\n*NODE PRINT\nU\n*EL PRINT\nS\n*END STEP\n"
+                           "*STEP\n*STATIC\n*END STEP\n"
+                           "*STEP\n*STATIC\n*NODE PRINT, FREQUENCY=0\nU\n*END STEP\n";
   const Model m = read_deck_string(deck, "o.inp");
-  EXPECT_EQ(m.steps[0].outputs.size(), 1u);
-  EXPECT_TRUE(m.steps[1].outputs.empty());
+  using K = OutputRequest::Kind;
+  ASSERT_EQ(m.steps[0].outputs.size(), 2u);
+  ASSERT_EQ(m.steps[1].outputs.size(), 2u);
+  EXPECT_EQ(m.steps[1].outputs[0].kind, K::NodePrint);
+  EXPECT_EQ(m.steps[1].outputs[1].kind, K::ElementPrint);
+  ASSERT_EQ(m.steps[2].outputs.size(), 2u);  // its own *NODE PRINT (off), the *EL PRINT carried twice
+  EXPECT_EQ(m.steps[2].outputs[0].frequency, 0);
+  EXPECT_EQ(m.steps[2].outputs[1].kind, K::ElementPrint);
+}
+
+TEST(StepHistory, VelocityRequestsAreNotCarriedIntoAStaticStep) {
+  const std::string deck = replaced(kMesh, "200e3, 0.3\n", "200e3, 0.3\n*DENSITY\n1.\n") +
+                           "*STEP\n*DYNAMIC\n0.1, 1.\n*NODE PRINT\nU, V\n*NODE FILE\nA\n*END STEP\n"
+                           "*STEP\n*STATIC\n*END STEP\n";
+  std::vector<DeckWarning> warnings;
+  const Model m = read_deck_string(deck, "v.inp", &warnings);
+  ASSERT_EQ(m.steps[1].outputs.size(), 1u);  // U kept; the request of A alone is dropped
+  EXPECT_EQ(m.steps[1].outputs[0].variables, (std::vector<std::string>{"U"}));
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].message.find("not carried"), std::string::npos) << warnings[0].message;
 }
 
 TEST(StepHistory, OpNewInModelDataWarns) {

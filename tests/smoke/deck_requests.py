@@ -20,6 +20,8 @@ the contact state block of every pair; *OUTPUT, HISTORY with *NODE OUTPUT / *ELE
 like the print requests (VARIABLE=PRESELECT there: the energies, no block of its own). A request with FREQUENCY=0
 writes nothing; file requests (*NODE FILE, *OUTPUT, FIELD, ...) write no
 .dat blocks. Variables tether does not print are left out (the reader warns).
+A step that gives no request of a kind (node, element, contact) keeps the
+previous step's requests of that kind, without V and A in a *STATIC step.
 """
 import tethertools.deck  # tools/ on PYTHONPATH (set by CTest)
 
@@ -45,31 +47,55 @@ def _frequency(params, default=1):
     return int(params.get("FREQUENCY", default))
 
 
+def _carry(steps):
+    """Each step's blocks: its own, plus the previous step's of every kind it
+    does not request (output requests stay in force until a step requests
+    that kind again, as in ABAQUS and CalculiX)."""
+    out, previous = [], {}
+    for step in steps:
+        kinds = {k: (v if v is not None else [b for b in previous.get(k, [])
+                                               if step["dynamic"] or b[0] not in ("velocities", "accelerations")])
+                 for k, v in step["kinds"].items()}
+        out.append(step["always"] + [b for k in ("node", "element", "contact") for b in kinds[k]])
+        previous = kinds
+    return out
+
+
 def read(path):
     steps, pairs, constraints = [], [], False
-    current = None
+    current = None  # {"always": [...], "kinds": {"node"|"element"|"contact": None (none given) or [...]}}
     history = None  # (frequency) of the current *OUTPUT, HISTORY block, or "field"
     dynamic = False  # a *DYNAMIC step: energies in the .dat and JOB_energy.csv
+
+    def kind(name):
+        if current["kinds"][name] is None:
+            current["kinds"][name] = []  # the first request of a kind replaces the carried ones
+        return current["kinds"][name]
+
     for keyword, params, data in _blocks(path):
         if keyword in _CONSTRAINT_KEYWORDS:
             constraints = True
         elif keyword == "*CONTACT PAIR":
             pairs.extend("-".join(s.strip().upper() for s in line.split(",")[:2]) for line in data)
         elif keyword == "*STEP":
-            current, history = [], None
+            current = {"always": [], "kinds": {"node": None, "element": None, "contact": None}, "dynamic": False}
+            history = None
             steps.append(current)
         elif current is None:
             continue
         elif keyword == "*DYNAMIC":
-            dynamic = True
-            current.append(("energies", ""))  # at every step's end
+            dynamic = current["dynamic"] = True
+            current["always"].append(("energies", ""))  # at every step's end
         elif keyword == "*OUTPUT":
             # VARIABLE=PRESELECT on a history request means ABAQUS's whole-model energies: no .dat block
             # beyond the energies dynamic steps write anyway.
             history = _frequency(params) if "HISTORY" in params else "field"
         elif keyword in ("*NODE PRINT", "*NODE OUTPUT"):
             frequency = _frequency(params) if keyword == "*NODE PRINT" else history
-            if frequency == "field" or frequency == 0:
+            if frequency == "field":
+                continue
+            blocks = kind("node")
+            if frequency == 0:
                 continue
             nset = params.get("NSET", "NALL").upper()
             totals = params.get("TOTALS", "NO").upper()
@@ -79,18 +105,25 @@ def read(path):
                     titles = ["total force"]
                 elif v == "RF" and totals == "YES":
                     titles = ["forces", "total force"]
-                current += [(t, nset) for t in titles]
+                blocks += [(t, nset) for t in titles]
         elif keyword in ("*EL PRINT", "*ELEMENT OUTPUT"):
             frequency = _frequency(params) if keyword == "*EL PRINT" else history
-            if frequency == "field" or frequency == 0:
+            if frequency == "field":
+                continue
+            blocks = kind("element")
+            if frequency == 0:
                 continue
             elset = params.get("ELSET", "EALL").upper()
-            current += [(t, elset) for v in _variables(data) for t in _ELEMENT_TITLES.get(v, [])]
-        elif keyword == "*CONTACT PRINT" and _frequency(params) > 0:
+            blocks += [(t, elset) for v in _variables(data) for t in _ELEMENT_TITLES.get(v, [])]
+        elif keyword == "*CONTACT PRINT":
+            blocks = kind("contact")
+            if _frequency(params) == 0:
+                continue
             for v in _variables(data) or ["CSTR", "CDIS"]:  # the reader's default
                 if v in _CONTACT_TITLES:
-                    current.append((_CONTACT_TITLES[v], ""))
+                    blocks.append((_CONTACT_TITLES[v], ""))
                 elif v in _CONTACT_PAIR_TITLES:
-                    current += [(_CONTACT_PAIR_TITLES[v], p) for p in pairs]
-            current += [("contact state", p) for p in pairs]
+                    blocks += [(_CONTACT_PAIR_TITLES[v], p) for p in pairs]
+            blocks += [("contact state", p) for p in pairs]
+    steps = _carry(steps)
     return {"steps": steps, "contact_pairs": pairs, "constraints": constraints, "dynamic": dynamic}

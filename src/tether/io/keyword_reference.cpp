@@ -70,7 +70,12 @@ std::string keyword_reference_markdown() {
         "*MATERIAL and *ELSET, an *ELEMENT before its *NODE lines; a set that names another set still comes "
         "after it. Errors name the line that refers to the missing name. Model data still ends at the first "
         "*STEP, and an *NSET, *ELSET or *AMPLITUDE written inside a step is read with the model data, before "
-        "every step (as in CalculiX).\n\n";
+        "every step (as in CalculiX).\n\n"
+     << "Output requests (*NODE PRINT, *EL PRINT, *CONTACT PRINT, *NODE FILE, *EL FILE, *CONTACT FILE and "
+        "*OUTPUT's *NODE OUTPUT / *ELEMENT OUTPUT) stay in force in later steps, as in ABAQUS and CalculiX: a "
+        "step that gives none of a kind keeps the previous step's requests of that kind; the first request of a "
+        "kind in a step replaces them all (FREQUENCY=0 turns that kind off). V and A are dropped, with a "
+        "warning, from requests carried into a *STATIC step.\n\n";
   md << "## Supported keywords\n\n";
   for (const deck::KeywordSpec& k : deck::keyword_table()) {
     if (!k.not_supported.empty()) continue;

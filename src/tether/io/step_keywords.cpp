@@ -229,6 +229,33 @@ void handle_controls(DeckState& state, const KeywordBlock& block, const Paramete
   }
 }
 
+/// Carries the previous step's output requests of every kind that step `s`
+/// does not request itself (ABAQUS and CalculiX alike: requests stay in force
+/// until a later step gives one of the same kind, which replaces them all).
+/// V and A do not exist in a static step: they are dropped from carried
+/// requests there, with a warning.
+void carry_output_requests(DeckState& state, Step& s) {
+  if (state.model.steps.size() < 2) return;
+  const Step& previous = state.model.steps[state.model.steps.size() - 2];
+  std::vector<OutputRequest> carried;
+  for (const OutputRequest& r : previous.outputs) {
+    const bool own = std::any_of(s.outputs.begin(), s.outputs.end(),
+                                 [&r](const OutputRequest& o) { return o.kind == r.kind; });
+    if (own) continue;
+    OutputRequest c = r;
+    if (s.procedure == StepProcedure::Static) {
+      const auto dynamic_only = [](const std::string& v) { return v == "V" || v == "A"; };
+      if (std::any_of(c.variables.begin(), c.variables.end(), dynamic_only))
+        state.warn(r.where, "output variables V and A of this request are not carried into step " + s.name +
+                                ", which is *STATIC (no velocities there)");
+      std::erase_if(c.variables, dynamic_only);
+      if (c.variables.empty()) continue;
+    }
+    carried.push_back(std::move(c));
+  }
+  s.outputs.insert(s.outputs.end(), carried.begin(), carried.end());
+}
+
 void handle_end_step(DeckState& state, const KeywordBlock& block, const ParameterValues&) {
   if (!state.step_has_procedure)
     throw InputError(state.step().where, "step " + state.step().name +
@@ -242,6 +269,7 @@ void handle_end_step(DeckState& state, const KeywordBlock& block, const Paramete
         if (v == "V" || v == "A")
           throw InputError(r.where, "output variable " + v + " (velocity, acceleration) exists in *DYNAMIC steps "
                                     "only, and step " + s.name + " is *STATIC");
+  carry_output_requests(state, s);
   s.controls = state.controls;
   s.boundary = state.boundary;
   s.cloads = state.cloads;
