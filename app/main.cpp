@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 
+#include "energy_plot.hpp"
 #include "progress_observer.hpp"
 #include "tether/core/error.hpp"
 #include "tether/io/deck_reader.hpp"
@@ -181,7 +182,7 @@ AnalysisOptions analysis_options(const std::string& solver, bool condense, doubl
 }
 
 int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
-        bool quiet, const std::string& restart, double memory_mb, Dialect dialect, bool reuse) {
+        bool quiet, const std::string& restart, double memory_mb, Dialect dialect, bool reuse, bool plot) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<DeckWarning> warnings;
   Model model = read_deck(deck, &warnings, dialect);
@@ -213,9 +214,19 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
 
   ProgressObserver progress;
   const JobSummary summary = job.run(!quiet && isatty(fileno(stdout)) ? &progress : nullptr);
+  std::vector<fs::path> files = job.written_files();
+  const fs::path energy_csv = dir / (job_name + "_energy.csv");
+  if (plot && std::find(files.begin(), files.end(), energy_csv) != files.end()) {
+    const fs::path png = dir / (job_name + "_energy.png");
+    const std::string why = app::plot_energy(energy_csv, png, job_name);
+    if (why.empty())
+      files.push_back(png);
+    else if (!quiet)
+      fmt::print(stderr, "{}: warning: no energy plot ({}); the energies are in {}\n", deck, why, energy_csv.string());
+  }
   if (!quiet) {
     std::string written;
-    for (const fs::path& f : job.written_files()) written += (written.empty() ? "" : "  ") + f.string();
+    for (const fs::path& f : files) written += (written.empty() ? "" : "  ") + f.string();
     fmt::print("{}: {} ({} increments, {} iterations, {} cut-backs, {:.2f} s)\n{}\nresults: {}\n", job_name,
                summary.message, summary.increments, summary.iterations, summary.cutbacks, summary.seconds,
                timing_line(summary.seconds, summary.timing), written);
@@ -238,7 +249,7 @@ int main(int argc, char** argv) {
   const std::string dialect_help =
       "Where ABAQUS and CalculiX give the same deck data different meanings, read it as abaqus (default) or "
       "calculix means it (docs/keywords.md, section Dialects)";
-  bool ascii = false, quiet = false, no_condense = false, no_reuse = false;
+  bool ascii = false, quiet = false, no_condense = false, no_reuse = false, no_plot = false;
   double memory_mb = 0;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
   run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
@@ -252,6 +263,9 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--no-condense", no_condense,
                     "With contact: factorize the whole matrix at every iteration instead of condensing it onto "
                     "the contact equations (for comparison; same answer)");
+  run_cmd->add_flag("--no-plot", no_plot,
+                    "Do not draw JOB_energy.png, the energy history of dynamic steps (drawn by python3 with "
+                    "matplotlib from JOB_energy.csv)");
   run_cmd->add_flag("--no-reuse", no_reuse,
                     "Assemble the tangent of a linear bulk (small strain, elastic) and factorize it at every "
                     "iteration instead of once per step and increment size (for comparison; same answer)");
@@ -297,7 +311,7 @@ int main(int argc, char** argv) {
       }
       return check_many(decks_of(check_paths), chosen);
     }
-    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb, chosen, !no_reuse);
+    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb, chosen, !no_reuse, !no_plot);
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInput;

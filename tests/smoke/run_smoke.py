@@ -17,7 +17,9 @@ checks, for the run to pass:
 - no result file names a node or element outside the mesh: the node labels of
   the .dat's nodal and contact blocks are NodeIds of the .vtu, the element
   labels of its element blocks (and the master elements of contact state
-  rows) are ElementIds.
+  rows) are ElementIds;
+- a deck with a *DYNAMIC step writes JOB_energy.csv (header, finite rows, the
+  last at the last .vtu's time) and its plot JOB_energy.png.
 With --restart-after-step N the deck (which must have *RESTART, WRITE) is also
 cut before its step N+1 and run to WORK/first; the whole deck is then continued
 from WORK/first/first.rst twice, with `--restart` and with `*RESTART, READ,
@@ -167,6 +169,14 @@ def check_energy(path, last_time):
         raise SmokeError(f"{path}: no rows, or a row without 11 finite values")
     if abs(rows[-1][2] - last_time) > 1e-9 * max(1.0, abs(last_time)):
         raise SmokeError(f"{path}: last row at time {rows[-1][2]}, the last .vtu at {last_time}")
+    png = path[: -len(".csv")] + ".png"
+    try:
+        with open(png, "rb") as f:
+            signature = f.read(8)
+    except OSError as e:
+        raise SmokeError(f"a dynamic deck drew no energy plot: {e}") from e
+    if signature != b"\x89PNG\r\n\x1a\n" or os.path.getsize(png) < 1000:
+        raise SmokeError(f"{png}: not a PNG image of a plot")
 
 
 def prepare_deck(deck, work, replacements):

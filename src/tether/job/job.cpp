@@ -184,7 +184,8 @@ std::vector<std::filesystem::path> Job::written_files() const {
   std::vector<std::filesystem::path> out;
   if (!files_) return out;
   const ResultWriter& w = files_->writer();
-  for (const std::filesystem::path& f : {w.pvd_path(), w.dat_path(), w.sta_path(), files_->msg_path(), w.restart_path()})
+  for (const std::filesystem::path& f :
+       {w.pvd_path(), w.dat_path(), w.sta_path(), files_->msg_path(), w.restart_path(), w.energy_path()})
     if (std::filesystem::exists(f)) out.push_back(f);
   return out;
 }

@@ -32,7 +32,7 @@ void remove_earlier_results(const std::filesystem::path& directory, const std::s
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(directory.empty() ? fs::path(".") : directory, ec))
     if (entry.is_regular_file() && is_increment_vtu(entry.path().filename().string(), job)) fs::remove(entry.path());
-  for (const char* extension : {".pvd", ".rst", "_energy.csv"}) fs::remove(directory / (job + extension));
+  for (const char* extension : {".pvd", ".rst", "_energy.csv", "_energy.png"}) fs::remove(directory / (job + extension));
 }
 
 std::filesystem::path prepared(const std::filesystem::path& directory, const std::string& job) {

@@ -1,0 +1,46 @@
+#pragma once
+// Running the tether program from tests: its output, exit code and a scratch folder.
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <sys/wait.h>
+
+namespace cli_test {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code = -1;
+  std::string out;  ///< stdout and stderr together
+};
+
+/// Runs the tether program with `args` (stdout is a pipe, so not a terminal),
+/// with `environment` ("NAME=value ...", shell syntax) added to its environment.
+inline Result tether(const std::string& args, const std::string& environment = "") {
+  const std::string command =
+      (environment.empty() ? "" : "env " + environment + " ") + std::string(TETHER_CLI) + " " + args + " 2>&1";
+  Result r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe)) r.out += buffer.data();
+  const int status = pclose(pipe);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+/// An empty folder tests/app/scratch/NAME under the build tree.
+inline fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(TETHER_BINARY_DIR) / "tests" / "app" / "scratch" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+inline void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+}  // namespace cli_test
