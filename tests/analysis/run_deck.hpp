@@ -53,6 +53,15 @@ inline Run run_deck_text(const std::string& text, AnalysisOptions options = {}) 
   return run;
 }
 
+/// Reads `text` (named "test.inp") in `dialect` and runs it.
+inline Run run_deck_text_in(const std::string& text, Dialect dialect, AnalysisOptions options = {}) {
+  Run run;
+  run.model = read_deck_string(text, "test.inp", nullptr, dialect);
+  StaticAnalysis analysis(run.model, run.recorder, options);
+  run.summary = analysis.run();
+  return run;
+}
+
 /// Reads a deck file and runs it.
 inline Run run_deck_file(const std::string& path, AnalysisOptions options = {}) {
   Run run;

@@ -16,4 +16,13 @@ double amplitude_value(const Amplitude& amplitude, double step_time, double tota
 double step_magnitude(const Model& model, int amplitude, double start, double target, double step_time,
                       double period, double total_time);
 
+/// Integral of a tabular amplitude over step times [from, to] (exact for the
+/// piecewise linear table, constant beyond its ends); `step_start_total` is
+/// the total time at the step's start, for TIME=TOTAL TIME amplitudes [time].
+double amplitude_integral(const Amplitude& amplitude, double from, double to, double step_start_total);
+
+/// Integral of step_magnitude() over step times [0, step_time] [magnitude * time].
+double step_magnitude_integral(const Model& model, int amplitude, double start, double target, double step_time,
+                               double period, double total_time);
+
 }  // namespace tether

@@ -185,7 +185,7 @@ void ExplicitDynamicProcedure::sort_elements() {
   std::vector<bool> constant(n, false);
   for (int d : prescribed_) constant[static_cast<std::size_t>(d)] = true;  // held dofs keep their values...
   for (const auto& [dof, v] : system_.loads().prescribed)  // ... unless the step moves them
-    constant[static_cast<std::size_t>(dof)] = v.amplitude < 0 ? v.start == v.target : v.target == 0;
+    constant[static_cast<std::size_t>(dof)] = !prescribed_moves(v);
   moving_elements_.clear(), held_elements_.clear();
   const auto& elements = system_.discretization().elements();
   for (std::size_t e = 0; e < elements.size(); ++e) {
@@ -248,7 +248,7 @@ void ExplicitDynamicProcedure::prescribed_accelerations(const Eigen::VectorXd& u
   next_values_.resize(u.size());
   for (int d : prescribed_) next_values_[d] = u[d];  // held dofs (unused nodes) keep their values
   for (const auto& [dof, v] : system_.loads().prescribed)
-    next_values_[dof] = step_magnitude(model, v.amplitude, v.start, v.target, t + h, period_, step_start + t + h);
+    next_values_[dof] = prescribed_value(model, v, t + h, period_, step_start + t + h);
   const double h_average = 0.5 * (h_previous_ + h);
   for (int d : prescribed_) {
     const double v_next = (next_values_[d] - u[d]) / h;

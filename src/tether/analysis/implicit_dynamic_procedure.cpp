@@ -1,11 +1,14 @@
 #include "tether/analysis/implicit_dynamic_procedure.hpp"
 
+#include "tether/analysis/amplitude.hpp"
+
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <unordered_map>
 
+#include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/contact/contact_pair.hpp"
@@ -115,6 +118,7 @@ void ImplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
   motion_.damping_force = Eigen::VectorXd::Zero(n);
   for (const auto& m : system_.inertia()) m->add_damping_force(s, motion_.v, motion_.damping_force);
   motion_.a = solve_mass(system_, -r0 - motion_.damping_force);
+  follow_prescribed_velocities(first.total_time - first.step_time, 0, 0);
   motion_.static_residual = r0;
   Eigen::VectorXd reaction = r0 + motion_.damping_force;
   for (const auto& m : system_.inertia()) m->add_mass_times(motion_.a, reaction);
@@ -126,6 +130,20 @@ void ImplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
     for (const auto& el : disc.elements()) e.strain += el->strain_energy(s);
     e.total = motion_.balance_start = e.kinetic + e.strain;
     motion_.started = true;
+  }
+}
+
+void ImplicitDynamicProcedure::follow_prescribed_velocities(double step_start, double step_time, double dt) {
+  const Model& model = system_.discretization().model();
+  const double period = system_.step().period;
+  const auto velocity = [&](const RampedValue& v, double t) {
+    return step_magnitude(model, v.amplitude, v.start, v.target, t, period, step_start + t);
+  };
+  for (const auto& [dof, v] : system_.loads().prescribed) {
+    if (!v.velocity) continue;
+    const double now = velocity(v, step_time);
+    motion_.a[dof] = dt > 0 ? (now - velocity(v, step_time - dt)) / dt : 0.0;
+    motion_.v[dof] = now;
   }
 }
 
@@ -287,6 +305,8 @@ void ImplicitDynamicProcedure::complete(const IncrementAttempt& attempt, const I
   // elements). Its v and a do not enter M a, so take the increment's mean
   // velocity and no acceleration: the predictor extrapolates linearly.
   for (int d : massless_) motion_.v[d] = (s.u[d] - s.u_start[d]) / attempt.time.dt, motion_.a[d] = 0;
+  follow_prescribed_velocities(attempt.time.total_time - attempt.time.step_time, attempt.time.step_time,
+                               attempt.time.dt);
   motion_.static_residual = r_new;
 
   const DiscretizationPoints point_source(disc, s);

@@ -70,6 +70,11 @@ class ImplicitDynamicProcedure final : public Procedure {
   double half_increment_residual(const IncrementTimes& t, const EvaluationState& end);
   void complete(const IncrementAttempt& attempt, const IncrementProblem& problem, int iterations,
                 double force_scale);
+  /// Dofs with a prescribed velocity (*BOUNDARY, TYPE=VELOCITY) take it as
+  /// their v at `step_time` and its mean rate over the last `dt` as their a
+  /// (0 at the step's start), rather than Newmark's recursion, which rings
+  /// after a velocity jump. `step_start` is the total time at the step's start.
+  void follow_prescribed_velocities(double step_start, double step_time, double dt);
 
   StepSystem& system_;
   AnalysisObserver& observer_;

@@ -1,5 +1,6 @@
 #include "tether/analysis/step_loads.hpp"
 
+#include "tether/analysis/amplitude.hpp"
 #include "tether/core/error.hpp"
 
 namespace tether {
@@ -18,6 +19,16 @@ int global_dof(const DofMap& dofs, int node, int dof, const SourceLocation& wher
 
 }  // namespace
 
+double prescribed_value(const Model& model, const RampedValue& v, double step_time, double period, double total_time) {
+  if (!v.velocity) return step_magnitude(model, v.amplitude, v.start, v.target, step_time, period, total_time);
+  return v.origin + step_magnitude_integral(model, v.amplitude, v.start, v.target, step_time, period, total_time);
+}
+
+bool prescribed_moves(const RampedValue& v) {
+  if (v.velocity) return v.target != 0 || (v.amplitude < 0 && v.start != 0);
+  return v.amplitude < 0 ? v.start != v.target : v.target != 0;
+}
+
 StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::VectorXd& u,
                           const std::map<std::pair<int, int>, double>& cload_end,
                           const std::map<std::pair<int, int>, double>& pressure_end) {
@@ -25,7 +36,10 @@ StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::Vec
   std::map<int, RampedValue> prescribed;
   for (const Prescribed& p : step.boundary) {
     const int dof = global_dof(dofs, p.node, p.dof, p.where);
-    prescribed[dof] = RampedValue{u[dof], p.value, p.amplitude};
+    if (p.velocity)  // applied at once and held without an amplitude (ABAQUS's STEP), in every kind of step
+      prescribed[dof] = RampedValue{p.value, p.value, p.amplitude, true, u[dof]};
+    else
+      prescribed[dof] = RampedValue{u[dof], p.value, p.amplitude};
   }
   loads.prescribed.assign(prescribed.begin(), prescribed.end());
 
@@ -69,11 +83,12 @@ StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::Vec
     loads.pressures.push_back(removed);
     loads.pressure_values.push_back(RampedValue{value, 0.0, -1});
   }
-  if (!step.ramp_loads) {  // AMPLITUDE=STEP: the target holds from the step's start
-    const auto hold = [](RampedValue& v) {
-      if (v.amplitude < 0) v.start = v.target;
-    };
+  const auto hold = [](RampedValue& v) {
+    if (v.amplitude < 0) v.start = v.target;
+  };
+  if (!step.ramp_prescribed)  // the target holds from the step's start (see Step::ramp_prescribed)
     for (auto& [dof, v] : loads.prescribed) hold(v);
+  if (!step.ramp_loads) {  // AMPLITUDE=STEP: the target holds from the step's start
     for (auto& [dof, v] : loads.forces) hold(v);
     for (RampedValue& v : loads.pressure_values) hold(v);
   }

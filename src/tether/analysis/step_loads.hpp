@@ -16,7 +16,19 @@ struct RampedValue {
   double start = 0;
   double target = 0;
   int amplitude = -1;
+  /// A prescribed velocity (*BOUNDARY, TYPE=VELOCITY): the magnitude above
+  /// is the velocity, and the dof's value is `origin` (its value at the
+  /// step's start) plus the magnitude's integral over the step time.
+  bool velocity = false;
+  double origin = 0;
 };
+
+/// The value of prescribed dof `v` at `step_time` (step_magnitude(), or for a
+/// velocity the displacement it has integrated to).
+double prescribed_value(const Model& model, const RampedValue& v, double step_time, double period, double total_time);
+
+/// False when `v` keeps its dof where the step started (nothing moves it).
+bool prescribed_moves(const RampedValue& v);
 
 /// Everything that varies with time in one step.
 struct StepLoads {

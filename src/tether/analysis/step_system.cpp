@@ -66,7 +66,7 @@ void StepSystem::apply_loads(const IncrementTimes& t, Eigen::VectorXd& u, Eigen:
   const auto magnitude = [&](const RampedValue& v) {
     return step_magnitude(model, v.amplitude, v.start, v.target, t.step_time, t.period, t.total_time);
   };
-  for (const auto& [dof, v] : loads_.prescribed) u[dof] = magnitude(v);
+  for (const auto& [dof, v] : loads_.prescribed) u[dof] = prescribed_value(model, v, t.step_time, t.period, t.total_time);
   equations().update_dependents(u);
   forces.setZero(discretization_.dofs().n_dofs());
   for (const auto& [dof, v] : loads_.forces) forces[dof] += magnitude(v);

@@ -212,7 +212,11 @@ std::vector<KeywordSpec> build_table() {
        "ignored with a warning (2D); dofs 4-6 in a range starting at 1-3 are ignored with a warning; "
        "other dofs are errors",
        {amplitude_param(), op_param(),
-        choice("TYPE", "DISPLACEMENT", {"DISPLACEMENT"}, "Only displacement boundary conditions are supported.")},
+        choice("TYPE", "DISPLACEMENT", {"DISPLACEMENT", "VELOCITY"},
+               "DISPLACEMENT: the values are displacements. VELOCITY (in a step; ABAQUS): the values are "
+               "velocities [length/time], applied at once and held (or times the AMPLITUDE), and the dof moves by "
+               "their time integral from where the step found it; a later step keeps the velocity until the dof "
+               "is given again.")},
        handle_boundary, ""},
       {"CLOAD", kAnyStep, "Concentrated nodal forces.", "`node_or_nset, dof (1 or 2), magnitude`",
        {amplitude_param(), op_param()}, handle_cload, ""},

@@ -193,6 +193,10 @@ void handle_amplitude(DeckState& state, const KeywordBlock& block, const Paramet
 
 void handle_boundary(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   const int amplitude = state.amplitude(params.name("AMPLITUDE"), block.where);
+  const bool velocity = params.name("TYPE") == "VELOCITY";
+  if (velocity && !state.in_step)
+    throw InputError(block.where, "*BOUNDARY, TYPE=VELOCITY is history data: expected it inside a step "
+                                  "(*STEP ... *END STEP)");
   std::vector<Prescribed> added;
   bool warned = false;
   for (const DataLine& line : block.data) {
@@ -205,14 +209,17 @@ void handle_boundary(DeckState& state, const KeywordBlock& block, const Paramete
       if (!typed || f.size() > 2)
         throw InputError(at, "bad boundary type '" + f[1] + "': expected a dof number or one of ENCASTRE, "
                                                             "PINNED, XSYMM, YSYMM, XASYMM, YASYMM, ZASYMM, ZSYMM");
+      if (velocity)
+        throw InputError(at, "boundary type " + to_upper(f[1]) + " with TYPE=VELOCITY: expected "
+                             "`node_or_nset, first_dof[, last_dof[, velocity]]`");
       if (typed->empty()) state.warn(at, "ZSYMM ignored: it constrains only out-of-plane dofs");
       dofs = *typed;
     } else {
-      if (f.size() > 3 && !f[3].empty()) value = parse_real(f[3], at, "prescribed value");
+      if (f.size() > 3 && !f[3].empty()) value = parse_real(f[3], at, velocity ? "prescribed velocity" : "prescribed value");
       dofs = boundary_range_dofs(state, f, value, at, warned);
     }
     for (int n : state.nodes_of(f[0], at))
-      for (int d : dofs) added.push_back({n, d, value, amplitude, at});
+      for (int d : dofs) added.push_back({n, d, value, amplitude, at, velocity});
   }
   merge(state, state.boundary, std::move(added), block, params,
         [](const Prescribed& p) { return node_dof_key(p.node, p.dof); });

@@ -150,7 +150,8 @@ void require_one_procedure(const DeckState& state, const KeywordBlock& block) {
 }
 
 /// Loads without an amplitude in a dynamic step: held from the step's start
-/// unless *STEP said AMPLITUDE=RAMP (ABAQUS's default for dynamic steps).
+/// unless *STEP said AMPLITUDE=RAMP (ABAQUS's and CalculiX's default for
+/// dynamic steps).
 void dynamic_load_default(DeckState& state, Step& s) {
   if (!state.step_amplitude_given) s.ramp_loads = false;
 }
@@ -270,6 +271,11 @@ void handle_end_step(DeckState& state, const KeywordBlock& block, const Paramete
           throw InputError(r.where, "output variable " + v + " (velocity, acceleration) exists in *DYNAMIC steps "
                                     "only, and step " + s.name + " is *STATIC");
   carry_output_requests(state, s);
+  // Prescribed displacements without an amplitude: ABAQUS/Standard always
+  // ramps them (static and implicit dynamic steps, whatever *STEP AMPLITUDE=
+  // says); ABAQUS/Explicit and CalculiX treat them as the loads.
+  const bool abaqus_standard = state.model.dialect == Dialect::Abaqus && s.procedure != StepProcedure::ExplicitDynamic;
+  s.ramp_prescribed = abaqus_standard || s.ramp_loads;
   s.controls = state.controls;
   s.boundary = state.boundary;
   s.cloads = state.cloads;

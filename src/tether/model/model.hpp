@@ -133,9 +133,12 @@ struct Amplitude {
 struct Prescribed {
   int node = 0;               ///< node index
   int dof = 0;                ///< 0 = x (or r), 1 = y (or z), 2 = in-plane rotation (ABAQUS dof 6)
-  double value = 0;           ///< [length] ([rad] for a rotation)
+  double value = 0;           ///< [length] ([rad] for a rotation); a velocity [length/time] when `velocity`
   int amplitude = -1;         ///< index into Model::amplitudes or -1
   SourceLocation where;
+  /// *BOUNDARY, TYPE=VELOCITY: `value` (times the amplitude) is the dof's
+  /// velocity; its displacement is the time integral from the step's start.
+  bool velocity = false;
 };
 
 /// `*CLOAD` line: concentrated force on one node component.
@@ -215,6 +218,12 @@ struct Step {
   /// or applied at the step's start and held (AMPLITUDE=STEP, the default of
   /// dynamic steps).
   bool ramp_loads = true;
+  /// Prescribed displacements (*BOUNDARY, TYPE=DISPLACEMENT) without an
+  /// amplitude: ramped over the step, or held from its start. ABAQUS/Standard
+  /// always ramps them, in dynamic steps too; ABAQUS/Explicit and CalculiX
+  /// follow the step's default (held in dynamic steps) — set by the reader
+  /// from the dialect (docs/keywords.md, Dialects).
+  bool ramp_prescribed = true;
   bool nlgeom = false;
   int max_increments = 100;           ///< INC=
   double initial_increment = 1;       ///< first increment [time]; 0 = the whole period
