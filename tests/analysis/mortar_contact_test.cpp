@@ -292,6 +292,11 @@ TEST(MortarPairInput, UnsupportedLawsAndSurfacesAreRefusedWithAReason) {
                                                          "*SURFACE, NAME=MASTER, TYPE=ELEMENT\n1001, S4\n"));
   EXPECT_NE(shared.find("belongs to both the slave surface SLAVE and the master surface MASTER"), std::string::npos)
       << shared;
+  // A slave node on three faces: the top body's first element's right side (interior) added to the slave.
+  const std::string branched = model_error_of(edited_patch("*SURFACE, NAME=SLAVE, TYPE=ELEMENT\n",
+                                                           "*SURFACE, NAME=SLAVE, TYPE=ELEMENT\n1001, S2\n"));
+  EXPECT_NE(branched.find("is on 3 faces of the slave surface SLAVE"), std::string::npos) << branched;
+  EXPECT_NE(branched.find("test.inp:"), std::string::npos) << branched;
 }
 
 }  // namespace

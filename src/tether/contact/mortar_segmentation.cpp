@@ -49,10 +49,18 @@ std::vector<Vec2T<double>> values(std::span<const Vec2T<T>> a) {
   return out;
 }
 
+/// Σ_a N_a x_a, accumulated in place (no temporaries of Vec2T<Dual2>).
 template <class T>
 Vec2T<T> interpolate(std::span<const Vec2T<T>> x, const std::array<T, 3>& N) {
   Vec2T<T> r{T(0.0), T(0.0)};
-  for (std::size_t a = 0; a < x.size(); ++a) r = r + N[a] * x[a];
+  for (std::size_t a = 0; a < x.size(); ++a) {
+    T term = N[a];
+    term *= x[a].x;
+    r.x += term;
+    term = N[a];
+    term *= x[a].y;
+    r.y += term;
+  }
   return r;
 }
 
