@@ -119,6 +119,38 @@ class Dual2 {
   }
   Dual2& operator/=(const Dual2& b) { return *this *= b.inverse(); }
 
+  /// *this += a b (`subtract`: *this -= a b) without a temporary: the same
+  /// operations, in the same order, as `*this += a * b`, so the same bits.
+  void add_product(const Dual2& a, const Dual2& b, bool subtract = false) {
+    const Eigen::Index n = a.g_.size();
+    const bool fused = a.second() && b.second() && b.g_.size() == n && (constant() || (second() && g_.size() == n));
+    if (!fused) {
+      if (subtract)
+        *this -= a * b;
+      else
+        *this += a * b;
+      return;
+    }
+    const double s = subtract ? -1.0 : 1.0;
+    const bool fresh = constant();
+    if (fresh) g_.resize(n), h_.resize(n, n);
+    v_ += s * (a.v_ * b.v_);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double t = a.v_ * b.g_[i] + b.v_ * a.g_[i];
+      g_[i] = fresh ? s * t : g_[i] + s * t;
+    }
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const double ga_j = a.g_[j], gb_j = b.g_[j];
+      double* h = h_.col(j).data();
+      const double* ha = a.h_.col(j).data();
+      const double* hb = b.h_.col(j).data();
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double t = ((ha[i] * b.v_ + a.v_ * hb[i]) + a.g_[i] * gb_j) + b.g_[i] * ga_j;
+        h[i] = fresh ? s * t : h[i] + s * t;
+      }
+    }
+  }
+
   [[nodiscard]] Dual2 inverse() const { return chain(1 / v_, -1 / (v_ * v_), 2 / (v_ * v_ * v_)); }
   friend Dual2 operator-(Dual2 a) {
     a.v_ = -a.v_;
