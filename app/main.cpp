@@ -166,7 +166,8 @@ fs::path output_directory(const std::string& deck, const std::string& output_dir
   return dir;
 }
 
-AnalysisOptions analysis_options(const std::string& solver, bool condense, double memory_mb, bool reuse) {
+AnalysisOptions analysis_options(const std::string& solver, bool condense, double memory_mb, bool reuse,
+                                  bool mortar_condensation) {
   AnalysisOptions options;
   options.solver = parse_solver_kind(solver);
   // Refuse before the run, not when the factors first go to disk; only the
@@ -175,13 +176,15 @@ AnalysisOptions analysis_options(const std::string& solver, bool condense, doubl
     check_out_of_core_directory();
   options.condense_contact = condense;
   options.reuse_linear_bulk = reuse;
+  options.mortar_dual_condensation = mortar_condensation;
   options.memory_budget_mb = memory_mb;
   options.stream_element_results = true;  // the writer does not keep the results
   return options;
 }
 
 int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
-        bool quiet, const std::string& restart, double memory_mb, Dialect dialect, bool reuse) {
+        bool quiet, const std::string& restart, double memory_mb, Dialect dialect, bool reuse,
+        bool mortar_condensation) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<DeckWarning> warnings;
   Model model = read_deck(deck, &warnings, dialect);
@@ -190,7 +193,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   const std::string job_name = fs::path(deck).stem().string();
   const std::string restart_file = restart_source(model, deck, restart);
   JobOptions options;
-  options.analysis = analysis_options(solver, condense, memory_mb, reuse);
+  options.analysis = analysis_options(solver, condense, memory_mb, reuse, mortar_condensation);
   options.output_dir = output_directory(deck, output_dir, restart_file);
   options.name = job_name;
   if (ascii) options.writer.encoding = VtuEncoding::Ascii;
@@ -238,7 +241,7 @@ int main(int argc, char** argv) {
   const std::string dialect_help =
       "Where ABAQUS and CalculiX give the same deck data different meanings, read it as abaqus (default) or "
       "calculix means it (docs/keywords.md, section Dialects)";
-  bool ascii = false, quiet = false, no_condense = false, no_reuse = false;
+  bool ascii = false, quiet = false, no_condense = false, no_reuse = false, mortar_condensation = false;
   double memory_mb = 0;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
   run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
@@ -255,6 +258,10 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--no-reuse", no_reuse,
                     "Assemble the tangent of a linear bulk (small strain, elastic) and factorize it at every "
                     "iteration instead of once per step and increment size (for comparison; same answer)");
+  run_cmd->add_flag("--mortar-condensation", mortar_condensation,
+                    "With mortar contact: eliminate its multipliers exactly through the dual basis and factorize "
+                    "the condensed matrix at every iteration instead of condensing onto the contact equations (for "
+                    "comparison; same answer to round-off; docs/theory/mortar.md)");
   run_cmd->add_option("--memory", memory_mb,
                       "Memory the run may use, in MB (e.g. 480, 2000): MUMPS factors (the condensed contact solver, "
                       "--solver mumps, symmetric indefinite systems) that would not fit are kept on disk in the "
@@ -297,7 +304,8 @@ int main(int argc, char** argv) {
       }
       return check_many(decks_of(check_paths), chosen);
     }
-    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb, chosen, !no_reuse);
+    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb, chosen, !no_reuse,
+               mortar_condensation);
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInput;

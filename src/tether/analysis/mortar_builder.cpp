@@ -132,4 +132,19 @@ std::vector<int> mortar_equations(const std::vector<std::unique_ptr<MortarPair>>
   return out;
 }
 
+std::vector<DualNodeEquations> mortar_dual_equations(const std::vector<std::unique_ptr<MortarPair>>& pairs,
+                                                     const DofMap& dofs, const EquationMap& equations) {
+  const auto single = [&](int dof) {
+    const auto w = equations.weights(dof);
+    return w.size() == 1 && w[0].weight == 1 ? w[0].equation : -1;
+  };
+  std::vector<DualNodeEquations> out;
+  for (const auto& pair : pairs)
+    for (int i = 0; i < pair->n_slaves(); ++i) {
+      const MortarSlave& s = pair->slave(i);
+      out.push_back({single(s.multiplier), {single(dofs.displacement(s.node, 0)), single(dofs.displacement(s.node, 1))}});
+    }
+  return out;
+}
+
 }  // namespace tether
