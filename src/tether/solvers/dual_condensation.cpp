@@ -53,12 +53,18 @@ void DualCondensedSolver::choose_eliminated(const SparseMatrix& a) {
       if (by_col >= 0) coupled[static_cast<std::size_t>(by_col)] = true;
     }
   z_.clear();
+  decoupled_.clear();
   std::vector<bool> taken(static_cast<std::size_t>(n), false);
   statistics_ = {};
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     const DualNodeEquations& node = nodes_[k];
     if (node.multiplier < 0) continue;
-    if (diagonal[k] != 0) {  // open, or a soft law: the row solves for λ_j itself
+    if (diagonal[k] != 0 && !coupled[k]) {  // open: λ_j = b_j / a_jj, apart from B (its -1/c_j is tiny)
+      decoupled_.emplace_back(node.multiplier, diagonal[k]);
+      ++statistics_.diagonal;
+      continue;
+    }
+    if (diagonal[k] != 0) {  // a soft law: the row solves for λ_j itself
       z_.push_back(node.multiplier);
       ++statistics_.diagonal;
       continue;
@@ -84,10 +90,12 @@ void DualCondensedSolver::build_condensed(const SparseMatrix& a) {
   const auto nz = static_cast<Eigen::Index>(z_.size());
   std::vector<int> z_index(static_cast<std::size_t>(n), -1);
   for (std::size_t k = 0; k < z_.size(); ++k) z_index[static_cast<std::size_t>(z_[k])] = static_cast<int>(k);
+  std::vector<bool> apart(static_cast<std::size_t>(n), false);
+  for (const auto& [eq, d] : decoupled_) apart[static_cast<std::size_t>(eq)] = true;
   r_.clear();
   r_index_.assign(static_cast<std::size_t>(n), -1);
   for (int e = 0; e < n; ++e)
-    if (z_index[static_cast<std::size_t>(e)] < 0) {
+    if (z_index[static_cast<std::size_t>(e)] < 0 && !apart[static_cast<std::size_t>(e)]) {
       r_index_[static_cast<std::size_t>(e)] = static_cast<int>(r_.size());
       r_.push_back(e);
     }
@@ -98,6 +106,7 @@ void DualCondensedSolver::build_condensed(const SparseMatrix& a) {
     for (SparseMatrix::InnerIterator it(a, col); it; ++it) {
       const int r = static_cast<int>(it.row());
       const int zr_ = z_index[static_cast<std::size_t>(r)], zc = z_index[static_cast<std::size_t>(col)];
+      if (apart[static_cast<std::size_t>(r)] || apart[static_cast<std::size_t>(col)]) continue;  // their diagonal only
       if (zr_ < 0 && zc < 0)
         triplets.emplace_back(r_index_[static_cast<std::size_t>(r)], r_index_[static_cast<std::size_t>(col)], it.value());
       else if (zr_ >= 0 && zc >= 0)
@@ -119,12 +128,26 @@ void DualCondensedSolver::build_condensed(const SparseMatrix& a) {
   a_zr_ = Eigen::MatrixXd::Zero(nz, static_cast<Eigen::Index>(cols_i_.size()));
   for (const auto& t : rz) a_rz_(local(rows_i_, t.row()), t.col()) += t.value();
   for (const auto& t : zr) a_zr_(t.row(), local(cols_i_, t.col())) += t.value();
+  // B mixes stiffnesses with mortar weights (areas): equilibrated rows and
+  // columns, B̃ = R B C, so that the condition test does not depend on the units.
+  row_scale_ = Eigen::VectorXd::Ones(nz);
+  column_scale_ = Eigen::VectorXd::Ones(nz);
+  for (Eigen::Index i = 0; i < nz; ++i) {
+    const double m = b.row(i).cwiseAbs().maxCoeff();
+    if (m > 0) row_scale_[i] = 1 / m;
+  }
+  b = row_scale_.asDiagonal() * b;
+  for (Eigen::Index j = 0; j < nz; ++j) {
+    const double m = b.col(j).cwiseAbs().maxCoeff();
+    if (m > 0) column_scale_[j] = 1 / m;
+  }
+  b = b * column_scale_.asDiagonal();
   b_lu_.compute(b);
   const double rcond = b_lu_.rcond();
   statistics_.full = !(rcond >= kMinReciprocalCondition);
   if (statistics_.full) return;
   // S = A_RR - A_RZ B⁻¹ A_ZR, the correction dense on rows_i_ × cols_i_.
-  const Eigen::MatrixXd correction = a_rz_ * b_lu_.solve(a_zr_);
+  const Eigen::MatrixXd correction = a_rz_ * solve_b(a_zr_);
   for (std::size_t i = 0; i < rows_i_.size(); ++i)
     for (std::size_t j = 0; j < cols_i_.size(); ++j)
       triplets.emplace_back(rows_i_[i], cols_i_[j],
@@ -141,6 +164,7 @@ void DualCondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
   choose_eliminated(a);
   if (!z_.empty()) build_condensed(a);
   if (z_.empty() || statistics_.full) {
+    decoupled_.clear();
     statistics_.full = true;
     z_.clear();
     inner_->analyze(a);
@@ -181,16 +205,21 @@ void DualCondensedSolver::solve_condensed(const Eigen::VectorXd& b, Eigen::Vecto
   Eigen::VectorXd b_z(nz), b_r(static_cast<Eigen::Index>(r_.size()));
   for (Eigen::Index k = 0; k < nz; ++k) b_z[k] = b[z_[static_cast<std::size_t>(k)]];
   for (std::size_t k = 0; k < r_.size(); ++k) b_r[static_cast<Eigen::Index>(k)] = b[r_[k]];
-  const Eigen::VectorXd y = a_rz_ * b_lu_.solve(b_z);
+  const Eigen::VectorXd y = a_rz_ * solve_b(b_z);
   for (std::size_t i = 0; i < rows_i_.size(); ++i) b_r[rows_i_[i]] -= y[static_cast<Eigen::Index>(i)];
   Eigen::VectorXd x_r;
   inner_->solve(b_r, x_r);
   Eigen::VectorXd coupled(static_cast<Eigen::Index>(cols_i_.size()));
   for (std::size_t j = 0; j < cols_i_.size(); ++j) coupled[static_cast<Eigen::Index>(j)] = x_r[cols_i_[j]];
-  const Eigen::VectorXd x_z = b_lu_.solve(b_z - a_zr_ * coupled);
+  const Eigen::VectorXd x_z = solve_b(b_z - a_zr_ * coupled);
   x.resize(b.size());
   for (std::size_t k = 0; k < r_.size(); ++k) x[r_[k]] = x_r[static_cast<Eigen::Index>(k)];
   for (Eigen::Index k = 0; k < nz; ++k) x[z_[static_cast<std::size_t>(k)]] = x_z[k];
+  for (const auto& [eq, d] : decoupled_) x[eq] = b[eq] / d;
+}
+
+Eigen::MatrixXd DualCondensedSolver::solve_b(const Eigen::MatrixXd& y) const {
+  return column_scale_.asDiagonal() * b_lu_.solve(row_scale_.asDiagonal() * y);
 }
 
 }  // namespace tether

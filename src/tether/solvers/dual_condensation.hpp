@@ -31,6 +31,7 @@
 /// of A. Theory: docs/theory/mortar.md ("Condensation").
 
 #include <array>
+#include <utility>
 #include <memory>
 #include <vector>
 
@@ -51,7 +52,7 @@ struct DualNodeEquations {
 /// Work of the last factorize().
 struct DualCondensationStatistics {
   int closed = 0;     ///< multipliers eliminated with a pivot (closed HARD rows)
-  int diagonal = 0;   ///< multipliers eliminated alone (open rows, soft laws)
+  int diagonal = 0;   ///< multipliers eliminated alone (open rows, solved apart; soft laws, in B)
   int coupled = 0;    ///< equations of S that the elimination filled
   int condensed_equations = 0;  ///< size of S
   bool full = false;  ///< B was (numerically) singular: the full matrix went to the inner solver
@@ -74,6 +75,8 @@ class DualCondensedSolver final : public LinearSolver {
  private:
   void choose_eliminated(const SparseMatrix& a);
   void solve_condensed(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  /// B⁻¹ y through the equilibrated factors.
+  [[nodiscard]] Eigen::MatrixXd solve_b(const Eigen::MatrixXd& y) const;
   void build_condensed(const SparseMatrix& a);
 
   std::vector<DualNodeEquations> nodes_;
@@ -84,7 +87,9 @@ class DualCondensedSolver final : public LinearSolver {
   std::vector<int> rows_i_;     ///< S indices of the rows of A_RZ with entries
   std::vector<int> cols_i_;     ///< S indices of the columns of A_ZR with entries
   Eigen::MatrixXd a_rz_, a_zr_;  ///< dense: rows_i_ × Z and Z × cols_i_
-  Eigen::PartialPivLU<Eigen::MatrixXd> b_lu_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> b_lu_;  ///< of R B C (equilibrated)
+  Eigen::VectorXd row_scale_, column_scale_;   ///< R, C
+  std::vector<std::pair<int, double>> decoupled_;  ///< open multipliers: equation, diagonal
   SparseMatrix s_;
   SparseMatrix a_;  ///< the full matrix of the last factorize (refinement)
   std::vector<int> analysed_r_;  ///< r_ when the inner solver last analysed
