@@ -106,3 +106,27 @@ TEST(DualCondensation, UnsymmetricCouplingStillExact) {
 }
 
 }  // namespace
+
+namespace {
+
+// An open row's diagonal -1/c_j = -A_j²/(E t) is many orders below the
+// stiffnesses (1e-13 here against 1e2): such rows are solved apart, and B is
+// equilibrated, so that the elimination is not taken for singular (before,
+// every factorization of the 25k Hertz deck went to the full matrix).
+TEST(DualCondensation, TinyOpenDiagonalsDoNotMakeTheBlockLookSingular) {
+  Eigen::MatrixXd dense = saddle_matrix();
+  for (int j = kMultipliers - kOpen; j < kMultipliers; ++j) dense(kChain + j, kChain + j) = -1e-13;
+  const SparseMatrix a = dense.sparseView();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(dense.rows(), 1, 3);
+  DualCondensedSolver solver(mortar_nodes(), make_linear_solver(SolverKind::Auto));
+  solver.analyze(a);
+  solver.factorize(a, true);
+  EXPECT_FALSE(solver.statistics().full);
+  EXPECT_EQ(solver.statistics().closed, kMultipliers - kOpen);
+  Eigen::VectorXd x;
+  solver.solve(b, x);
+  const Eigen::VectorXd exact = dense.partialPivLu().solve(b);  // (full pivoting's rank test drops -1e-13)
+  EXPECT_LT((x - exact).norm(), 1e-12 * exact.norm());
+}
+
+}  // namespace
