@@ -167,34 +167,45 @@ fs::path output_directory(const std::string& deck, const std::string& output_dir
   return dir;
 }
 
-AnalysisOptions analysis_options(const std::string& solver, bool condense, double memory_mb, bool reuse) {
+
+/// What `tether run` was asked to do (its command line).
+struct RunRequest {
+  std::string deck, output_dir, solver = "auto", restart;
+  bool condense = true, ascii = false, quiet = false, reuse = true, plot = true, mortar_condensation = false;
+  double memory_mb = 0;
+  Dialect dialect = Dialect::Abaqus;
+};
+
+AnalysisOptions analysis_options(const RunRequest& request) {
   AnalysisOptions options;
-  options.solver = parse_solver_kind(solver);
+  options.solver = parse_solver_kind(request.solver);
   // Refuse before the run, not when the factors first go to disk; only the
   // solvers that can put them there (MUMPS, directly or through auto) need it.
-  if (memory_mb > 0 && (options.solver == SolverKind::Auto || options.solver == SolverKind::Mumps))
+  if (request.memory_mb > 0 && (options.solver == SolverKind::Auto || options.solver == SolverKind::Mumps))
     check_out_of_core_directory();
-  options.condense_contact = condense;
-  options.reuse_linear_bulk = reuse;
-  options.memory_budget_mb = memory_mb;
+  options.condense_contact = request.condense;
+  options.reuse_linear_bulk = request.reuse;
+  options.mortar_dual_condensation = request.mortar_condensation;
+  options.memory_budget_mb = request.memory_mb;
   options.stream_element_results = true;  // the writer does not keep the results
   return options;
 }
 
-int run(const std::string& deck, const std::string& output_dir, const std::string& solver, bool condense, bool ascii,
-        bool quiet, const std::string& restart, double memory_mb, Dialect dialect, bool reuse, bool plot) {
+int run(const RunRequest& request) {
+  const std::string& deck = request.deck;
+  const bool quiet = request.quiet;
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<DeckWarning> warnings;
-  Model model = read_deck(deck, &warnings, dialect);
+  Model model = read_deck(deck, &warnings, request.dialect);
   if (!quiet)
     for (const auto& w : warnings) fmt::print(stderr, "{}\n", warning_text(w));
   const std::string job_name = fs::path(deck).stem().string();
-  const std::string restart_file = restart_source(model, deck, restart);
+  const std::string restart_file = restart_source(model, deck, request.restart);
   JobOptions options;
-  options.analysis = analysis_options(solver, condense, memory_mb, reuse);
-  options.output_dir = output_directory(deck, output_dir, restart_file);
+  options.analysis = analysis_options(request);
+  options.output_dir = output_directory(deck, request.output_dir, restart_file);
   options.name = job_name;
-  if (ascii) options.writer.encoding = VtuEncoding::Ascii;
+  if (request.ascii) options.writer.encoding = VtuEncoding::Ascii;
   options.keep = JobOptions::Keep::None;  // written, not kept
   options.started = t0;
   const fs::path dir = options.output_dir;
@@ -208,7 +219,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
     job.resume(read_restart_file(restart_file), restart_file);
     if (!quiet) fmt::print("{}: restarting from {}; the results go to {}\n", job_name, restart_file, dir.string());
   }
-  job.log(fmt::format("deck {} read in the {} dialect", deck, dialect_name(dialect)));
+  job.log(fmt::format("deck {} read in the {} dialect", deck, dialect_name(request.dialect)));
   for (const auto& w : warnings) job.log(warning_text(w));
   if (!restart_file.empty()) job.log("restart from " + restart_file + " into " + dir.string());
 
@@ -216,7 +227,7 @@ int run(const std::string& deck, const std::string& output_dir, const std::strin
   const JobSummary summary = job.run(!quiet && isatty(fileno(stdout)) ? &progress : nullptr);
   std::vector<fs::path> files = job.written_files();
   const fs::path energy_csv = dir / (job_name + "_energy.csv");
-  if (plot && std::find(files.begin(), files.end(), energy_csv) != files.end()) {
+  if (request.plot && std::find(files.begin(), files.end(), energy_csv) != files.end()) {
     const fs::path png = dir / (job_name + "_energy.png");
     const std::string why = app::plot_energy(energy_csv, png, job_name);
     if (why.empty())
@@ -249,7 +260,7 @@ int main(int argc, char** argv) {
   const std::string dialect_help =
       "Where ABAQUS and CalculiX give the same deck data different meanings, read it as abaqus (default) or "
       "calculix means it (docs/keywords.md, section Dialects)";
-  bool ascii = false, quiet = false, no_condense = false, no_reuse = false, no_plot = false;
+  bool ascii = false, quiet = false, no_condense = false, no_reuse = false, no_plot = false, mortar_condensation = false;
   double memory_mb = 0;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
   run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
@@ -269,6 +280,10 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--no-reuse", no_reuse,
                     "Assemble the tangent of a linear bulk (small strain, elastic) and factorize it at every "
                     "iteration instead of once per step and increment size (for comparison; same answer)");
+  run_cmd->add_flag("--mortar-condensation", mortar_condensation,
+                    "With mortar contact: eliminate its multipliers exactly through the dual basis and factorize "
+                    "the condensed matrix at every iteration instead of condensing onto the contact equations (for "
+                    "comparison; same answer to round-off; docs/theory/mortar.md)");
   run_cmd->add_option("--memory", memory_mb,
                       "Memory the run may use, in MB (e.g. 480, 2000): MUMPS factors (the condensed contact solver, "
                       "--solver mumps, symmetric indefinite systems) that would not fit are kept on disk in the "
@@ -311,7 +326,12 @@ int main(int argc, char** argv) {
       }
       return check_many(decks_of(check_paths), chosen);
     }
-    return run(deck, output_dir, solver, !no_condense, ascii, quiet, restart, memory_mb, chosen, !no_reuse, !no_plot);
+    RunRequest request;
+    request.deck = deck, request.output_dir = output_dir, request.solver = solver, request.restart = restart;
+    request.condense = !no_condense, request.ascii = ascii, request.quiet = quiet, request.reuse = !no_reuse;
+    request.plot = !no_plot, request.mortar_condensation = mortar_condensation;
+    request.memory_mb = memory_mb, request.dialect = chosen;
+    return run(request);
   } catch (const InputError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return kInput;

@@ -292,6 +292,11 @@ TEST(MortarPairInput, UnsupportedLawsAndSurfacesAreRefusedWithAReason) {
                                                          "*SURFACE, NAME=MASTER, TYPE=ELEMENT\n1001, S4\n"));
   EXPECT_NE(shared.find("belongs to both the slave surface SLAVE and the master surface MASTER"), std::string::npos)
       << shared;
+  // A slave node on three faces: the top body's first element's right side (interior) added to the slave.
+  const std::string branched = model_error_of(edited_patch("*SURFACE, NAME=SLAVE, TYPE=ELEMENT\n",
+                                                           "*SURFACE, NAME=SLAVE, TYPE=ELEMENT\n1001, S2\n"));
+  EXPECT_NE(branched.find("is on 3 faces of the slave surface SLAVE"), std::string::npos) << branched;
+  EXPECT_NE(branched.find("test.inp:"), std::string::npos) << branched;
 }
 
 }  // namespace
@@ -365,6 +370,46 @@ TEST(MortarFriction, BlockPushedOverAFacetedFoundationAtEightOffsets) {
     EXPECT_NEAR(pair.total_force.x() + run.reaction_sum("PUSHED", 0), 0.0, 1e-6) << x0;
     EXPECT_GT(pair.dissipation, 0) << x0;
   }
+}
+
+}  // namespace
+
+namespace {
+
+// The exact dual condensation (DualCondensedSolver, --mortar-condensation):
+// the frictionless block pushed over the finer foundation (finite sliding,
+// curved normals, re-segmentation at every iteration: the coupling block is
+// banded) runs through the same Newton iterations and ends with the same
+// displacements and multipliers to 1e-10 as the default solve.
+TEST(MortarCondensation, SameIterationsAndResultsAsTheFullSystem) {
+  std::string deck = tether::testing::block_on_foundation(0.5123, "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n", "", 0.3);
+  const std::string from = "TYPE=NODE TO SURFACE";
+  deck.replace(deck.find(from), from.size(), "TYPE=SURFACE TO SURFACE");
+  const auto plain = run_deck_text(deck);
+  AnalysisOptions options;
+  options.mortar_dual_condensation = true;
+  const auto condensed = run_deck_text(deck, options);
+  ASSERT_TRUE(plain.summary.completed) << plain.summary.message;
+  ASSERT_TRUE(condensed.summary.completed) << condensed.summary.message;
+  EXPECT_EQ(condensed.summary.iterations, plain.summary.iterations);
+  ASSERT_EQ(condensed.recorder.results.size(), plain.recorder.results.size());
+  double largest = 0, difference = 0;
+  for (std::size_t i = 0; i < plain.recorder.results.size(); ++i)
+    for (std::size_t n = 0; n < plain.recorder.results[i].displacement.size(); ++n) {
+      largest = std::max(largest, plain.recorder.results[i].displacement[n].cwiseAbs().maxCoeff());
+      difference = std::max(difference, (plain.recorder.results[i].displacement[n] -
+                                         condensed.recorder.results[i].displacement[n]).cwiseAbs().maxCoeff());
+    }
+  EXPECT_LT(difference, 1e-10 * largest);
+  const ContactPairValues& a = plain.last().contact.at(0);
+  const ContactPairValues& b = condensed.last().contact.at(0);
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  int closed = 0;
+  for (std::size_t k = 0; k < a.nodes.size(); ++k) {
+    EXPECT_NEAR(b.nodes[k].pressure, a.nodes[k].pressure, 1e-10 * 10) << "slave node " << k;
+    closed += a.nodes[k].status != ContactNodeValues::Status::Open ? 1 : 0;
+  }
+  EXPECT_GT(closed, 0);
 }
 
 }  // namespace

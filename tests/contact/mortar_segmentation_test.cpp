@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include "tether/contact/mortar_segmentation.hpp"
 
@@ -189,3 +190,28 @@ TEST(MortarSegmentation, ExactDerivativesMatchFiniteDifferences) {
 }
 
 }  // namespace
+
+// Dual2 keeps its derivatives in place, up to kDual2MaxVariables variables:
+// the product Π (1 + x_i) over that many has the closed-form gradient
+// P / (1 + x_i) and Hessian P / ((1 + x_i)(1 + x_k)) (i ≠ k, 0 on the
+// diagonal); one more variable is refused.
+TEST(Dual2, ProductOfTheLargestNumberOfVariablesAndNoMore) {
+  const int n = kDual2MaxVariables;
+  std::vector<double> x;
+  Dual2 product(1.0);
+  for (int i = 0; i < n; ++i) {
+    x.push_back(0.05 * i - 0.4);
+    product *= Dual2(1.0) + Dual2::variable(x.back(), i, n);
+  }
+  double p = 1;
+  for (double v : x) p *= 1 + v;
+  EXPECT_NEAR(product.value(), p, 1e-14 * std::abs(p));
+  for (int i = 0; i < n; ++i) {
+    EXPECT_NEAR(product.gradient()[i], p / (1 + x[static_cast<std::size_t>(i)]), 1e-13 * std::abs(p)) << i;
+    for (int k = 0; k < n; ++k) {
+      const double exact = i == k ? 0.0 : p / ((1 + x[static_cast<std::size_t>(i)]) * (1 + x[static_cast<std::size_t>(k)]));
+      EXPECT_NEAR(product.hessian()(i, k), exact, 1e-13 * std::abs(p)) << i << ", " << k;
+    }
+  }
+  EXPECT_THROW(Dual2::variable(0.0, 0, n + 1), std::length_error);
+}

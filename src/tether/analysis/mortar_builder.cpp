@@ -1,6 +1,7 @@
 #include "tether/analysis/mortar_builder.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "tether/core/error.hpp"
@@ -80,6 +81,16 @@ std::unique_ptr<MortarPair> make_mortar_pair(const Model& model, const ContactPa
   }
   if (setup.slave_faces.empty()) throw ModelError("slave surface " + data.slave + " has no faces" + where);
   if (setup.master_faces.empty()) throw ModelError("master surface " + data.master + " has no faces" + where);
+  // The averaged normals and the kinematics of a term (contact/dual2.hpp's
+  // fixed number of variables) assume a chain of slave faces.
+  std::map<int, int> faces_at;
+  for (const auto& face : setup.slave_faces)
+    for (int node : face) ++faces_at[node];
+  for (const auto& [node, count] : faces_at)
+    if (count > 2)
+      throw ModelError("node " + std::to_string(model.node_ids[static_cast<std::size_t>(node)]) + " is on " +
+                       std::to_string(count) + " faces of the slave surface " + data.slave + where +
+                       ": mortar contact needs a slave surface that is a chain of faces (each node on at most two)");
   std::set<int> master_nodes;
   for (const auto& f : setup.master_faces) master_nodes.insert(f.begin(), f.end());
   const std::vector<int> slave_nodes = MortarPair::slave_nodes_of(setup.slave_faces);
@@ -118,6 +129,21 @@ std::vector<int> mortar_equations(const std::vector<std::unique_ptr<MortarPair>>
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<DualNodeEquations> mortar_dual_equations(const std::vector<std::unique_ptr<MortarPair>>& pairs,
+                                                     const DofMap& dofs, const EquationMap& equations) {
+  const auto single = [&](int dof) {
+    const auto w = equations.weights(dof);
+    return w.size() == 1 && w[0].weight == 1 ? w[0].equation : -1;
+  };
+  std::vector<DualNodeEquations> out;
+  for (const auto& pair : pairs)
+    for (int i = 0; i < pair->n_slaves(); ++i) {
+      const MortarSlave& s = pair->slave(i);
+      out.push_back({single(s.multiplier), {single(dofs.displacement(s.node, 0)), single(dofs.displacement(s.node, 1))}});
+    }
   return out;
 }
 

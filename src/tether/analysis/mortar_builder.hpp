@@ -9,6 +9,7 @@
 #include "tether/contact/mortar_pair.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/model/model.hpp"
+#include "tether/solvers/dual_condensation.hpp"
 
 namespace tether {
 
@@ -26,5 +27,11 @@ std::unique_ptr<MortarPair> make_mortar_pair(const Model& model, const ContactPa
 /// multipliers. Sorted, unique.
 std::vector<int> mortar_equations(const std::vector<std::unique_ptr<MortarPair>>& pairs, const DofMap& dofs,
                                   const EquationMap& equations);
+
+/// Per slave node of `pairs`: the equation of its normal multiplier and of
+/// its two displacement components (-1 where a dof is not one free equation
+/// of weight 1), for DualCondensedSolver.
+std::vector<DualNodeEquations> mortar_dual_equations(const std::vector<std::unique_ptr<MortarPair>>& pairs,
+                                                     const DofMap& dofs, const EquationMap& equations);
 
 }  // namespace tether

@@ -183,7 +183,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       resumed ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(resumed->u_step_start.data(), u_.size())) : u_;
   StepSystem system(disc, step, make_step_loads(step, disc.dofs(), u_step_start, cload_end_, pressure_end_), u_,
                     total_time_, SolverSettings{options_.solver, options_.condense_contact, options_.memory_budget_mb,
-                                   options_.reuse_linear_bulk},
+                                   options_.reuse_linear_bulk, options_.mortar_dual_condensation},
                     [&](const std::string& m) {
                       if (index == 0) observer_.on_message(m);
                     });

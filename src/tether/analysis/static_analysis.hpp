@@ -39,6 +39,9 @@ struct AnalysisOptions {
   /// (SolverSettings::reuse_linear_bulk); off: at every iteration. The
   /// results are the same bit for bit.
   bool reuse_linear_bulk = true;
+  /// Mortar pairs' multipliers eliminated exactly through the dual basis
+  /// (SolverSettings::mortar_dual_condensation; `tether run --mortar-condensation`).
+  bool mortar_dual_condensation = false;
   /// Streamed results: the IncrementResults handed to the observer carry no
   /// integration-point values (`points` empty) but each element's mean stress
   /// and a source that computes an element's points during on_results (see

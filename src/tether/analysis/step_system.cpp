@@ -157,7 +157,7 @@ std::vector<int> StepSystem::condensation_interface(const EquationMap& equations
   const auto& pairs = discretization_.contact_pairs();
   const auto& mortar = discretization_.mortar_pairs();
   if (settings_.solver != SolverKind::Auto || !settings_.condense_contact || step_.nlgeom ||
-      (pairs.empty() && mortar.empty()))
+      (pairs.empty() && mortar.empty()) || (settings_.mortar_dual_condensation && !mortar.empty()))
     return {};
   std::vector<int> interface = contact_equations(pairs, discretization_.dofs(), equations);
   if (!mortar.empty()) {
@@ -173,6 +173,12 @@ std::vector<int> StepSystem::condensation_interface(const EquationMap& equations
 
 void StepSystem::make_solver(std::vector<int> interface) {
   solver_ = make_linear_solver(settings_.solver, settings_.memory_budget_mb);
+  if (settings_.mortar_dual_condensation && !discretization_.mortar_pairs().empty()) {
+    solver_ = std::make_unique<DualCondensedSolver>(
+        mortar_dual_equations(discretization_.mortar_pairs(), discretization_.dofs(), assembler_->equations()),
+        std::move(solver_));
+    return;
+  }
   if (interface.empty()) return;
   auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver_), settings_.memory_budget_mb);
   condensed_ = c.get();

@@ -41,6 +41,10 @@ struct SolverSettings {
   /// factorization of an unchanged tangent. Off: every iteration assembles
   /// and factorizes everything (the results are the same bit for bit).
   bool reuse_linear_bulk = true;
+  /// With mortar pairs: eliminate their multipliers exactly through the dual
+  /// basis (DualCondensedSolver) instead of condensing onto the contact
+  /// equations; the inner solver then factorizes the condensed matrix.
+  bool mortar_dual_condensation = false;
 };
 
 class StepSystem {

@@ -31,14 +31,22 @@ struct Vec2T {
   friend Vec2T operator-(const Vec2T& a, const Vec2T& b) { return {a.x - b.x, a.y - b.y}; }
   friend Vec2T operator*(const T& s, const Vec2T& a) { return {s * a.x, s * a.y}; }
 };
+/// r += a b (r -= a b with `subtract`); for Dual2 without a temporary (the same bits).
+inline void add_product(double& r, double a, double b, bool subtract = false) { r = subtract ? r - a * b : r + a * b; }
+inline void add_product(Dual2& r, const Dual2& a, const Dual2& b, bool subtract = false) { r.add_product(a, b, subtract); }
+
 template <class T>
 T dot(const Vec2T<T>& a, const Vec2T<T>& b) {
-  return a.x * b.x + a.y * b.y;
+  T r = a.x * b.x;
+  add_product(r, a.y, b.y);
+  return r;
 }
 /// z-component of a × b.
 template <class T>
 T cross(const Vec2T<T>& a, const Vec2T<T>& b) {
-  return a.x * b.y - a.y * b.x;
+  T r = a.x * b.y;
+  add_product(r, a.y, b.x, true);
+  return r;
 }
 
 /// Largest number of nodes of a mortar segment (quadratic faces).
