@@ -295,3 +295,31 @@ TEST(J2FiniteStrain, UniaxialKinematicLoadUnloadReverseMatchesTheLogarithmicClos
   EXPECT_LT(worst_lateral, 1e-8);
   EXPECT_LT(worst_thickness, 1e-10);
 }
+
+TEST(J2FiniteStrain, SimpleShearWithKinematicHardeningDoesNotOscillate) {
+  // Simple shear to gamma = 8 with linear kinematic hardening (H = 1000, to
+  // PEEQ 20): the back stress turns with the material rotation R of F = R U,
+  // so the shear stress rises monotonically (a back stress carried by the
+  // Jaumann rate would make it oscillate, Nagtegaal and de Jong 1982). Also
+  // tau11 = -tau22 and the sign pattern of simple shear.
+  const J2Plasticity m{kE, kNu, HardeningCurve({0, 20}, {200, 20200}), J2Plasticity::Hardening::Kinematic};
+  State state(J2Plasticity::kStateSize, 0.0);
+  double previous = 0;
+  int drops = 0;
+  Eigen::Matrix3d tau;
+  for (int k = 1; k <= 800; ++k) {
+    Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+    F(0, 1) = 8.0 * k / 800;
+    State next(state.size());
+    const MaterialResponse r = respond(m, F.transpose() * F, state, &next);
+    tau = F * from_voigt_stress(r.stress) * F.transpose();
+    if (tau(0, 1) <= previous) ++drops;
+    previous = tau(0, 1);
+    state = next;
+  }
+  std::printf("simple shear to 8: tau12 %.1f, tau11 %.1f, PEEQ %.3f\n", tau(0, 1), tau(0, 0), state[12]);
+  EXPECT_EQ(drops, 0);
+  EXPECT_GT(tau(0, 1), 1700);
+  EXPECT_GT(tau(0, 0), 0);
+  EXPECT_NEAR(tau(0, 0), -tau(1, 1), 1e-6 * tau(0, 0));
+}
