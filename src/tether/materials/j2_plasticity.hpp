@@ -27,8 +27,8 @@ namespace tether {
 ///
 /// State (13 values): plastic strain (Voigt, engineering shear), back stress
 /// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p. Under
-/// NLGEOM: E_p = (I - Cp^-1)/2 (Voigt, engineering shear), six unused
-/// values, PEEQ.
+/// NLGEOM: E_p = (I - Cp^-1)/2 (Voigt, engineering shear), the back stress
+/// (Kirchhoff, on the axes rotated back by R of F = R U), PEEQ.
 ///
 /// Finite strain (NLGEOM; every hardening kind; plane strain, axisymmetry and
 /// plane stress): F = Fe Fp, Hencky elasticity tau = D : ln(Ve) with the
