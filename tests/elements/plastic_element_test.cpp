@@ -71,10 +71,11 @@ TEST(PlasticElement, TangentMatchesFiniteDifferencesFromACommittedPlasticState) 
 }
 
 TEST(PlasticElement, FiniteStrainTangentMatchesFiniteDifferencesFromACommittedPlasticState) {
-  // NLGEOM (isotropic hardening; plane strain and axisymmetry): material and geometric stiffness.
-  const J2Plasticity m = steel(J2Plasticity::Hardening::Isotropic);
+  // NLGEOM (isotropic and kinematic hardening; plane strain, axisymmetry and
+  // plane stress): material and geometric stiffness.
+  for (auto h : {J2Plasticity::Hardening::Isotropic, J2Plasticity::Hardening::Kinematic})
   for (const ElementType& type : supported_types()) {
-    if (type.family == Family::PlaneStress) continue;  // refused under NLGEOM
+    const J2Plasticity m = steel(h);
     PlasticElement pe(type, m);
     ContinuumElement& e = *pe.element;
     const Eigen::VectorXd u1 = stretch(e, 0.05, 1);

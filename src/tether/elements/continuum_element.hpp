@@ -51,7 +51,7 @@ class ContinuumElement final : public Contribution {
   [[nodiscard]] std::string describe() const override;
   /// The material's word (ConstitutiveModel::symmetric_tangent); the
   /// geometric stiffness under NLGEOM is symmetric.
-  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return material_->symmetric_tangent(); }
+  [[nodiscard]] bool symmetric_tangent(bool nlgeom) const override { return material_->symmetric_tangent(nlgeom); }
   /// Small strain with a material whose small-strain law is linear
   /// (LinearElastic, NeoHooke's initial elasticity): linear. Under NLGEOM or
   /// with a history (plasticity): not.

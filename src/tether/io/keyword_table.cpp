@@ -144,7 +144,7 @@ std::vector<KeywordSpec> build_table() {
        handle_hyperelastic, ""},
       {"PLASTIC", kMaterial,
        "Von Mises plasticity on the material's *ELASTIC range (small strain; multiplicative with Hencky elasticity "
-       "under NLGEOM, isotropic hardening, not plane stress; docs/theory/plasticity.md): true yield "
+       "under NLGEOM, every hardening kind and element family; docs/theory/plasticity.md): true yield "
        "stress against equivalent plastic strain, piecewise linear, constant beyond the last row.",
        "`yield stress, plastic strain` per line, yield stress > 0, plastic strain 0 on the first line and strictly "
        "increasing (no temperature column)",

@@ -88,8 +88,9 @@ class ConstitutiveModel {
   /// tangent (elasticity): a small-strain element of it is linear in u.
   [[nodiscard]] virtual bool linear_small_strain() const { return true; }
 
-  /// True when every tangent the updates return is symmetric.
-  [[nodiscard]] virtual bool symmetric_tangent() const { return true; }
+  /// True when every tangent the updates return is symmetric (`nlgeom`: of
+  /// the finite-strain update, else of the small-strain one).
+  [[nodiscard]] virtual bool symmetric_tangent(bool /*nlgeom*/) const { return true; }
 
   /// Equivalent plastic strain PEEQ [-] of a state (0 without plasticity).
   [[nodiscard]] virtual double equivalent_plastic_strain(std::span<const double> /*state*/) const { return 0; }

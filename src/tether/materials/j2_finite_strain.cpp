@@ -1,21 +1,20 @@
 // J2Plasticity::update_finite_strain: multiplicative von Mises plasticity
 // F = Fe Fp with a Hencky (logarithmic) elastic range and the exponential
-// map, so the return in principal logarithmic strains is the small-strain
-// radial return (Simo 1992; de Souza Neto, Peric and Owen, Computational
-// Methods for Plasticity, chapter 14). See docs/theory/plasticity.md.
-#include <Eigen/Cholesky>
+// map, so the return on the logarithmic elastic trial strain is the
+// small-strain radial return (Simo 1992; de Souza Neto, Peric and Owen,
+// Computational Methods for Plasticity, chapter 14; Eterovic and Bathe 1990
+// for the back stress). Plane stress: a local Newton iteration on C33.
+// See docs/theory/plasticity.md.
 #include <Eigen/Eigenvalues>
-#include <Eigen/LU>
 #include <cmath>
 
 #include "tether/core/error.hpp"
 #include "tether/materials/j2_plasticity.hpp"
+#include "tether/materials/plane_stress.hpp"
 
 namespace tether {
 
 namespace {
-
-constexpr int kPair[3][2] = {{0, 1}, {1, 2}, {0, 2}};  // Voigt shear 12, 23, 13
 
 /// Symmetric tensor of a Voigt strain (engineering shear).
 Eigen::Matrix3d from_voigt_strain(const Vec6& e) {
@@ -26,15 +25,10 @@ Eigen::Matrix3d from_voigt_strain(const Vec6& e) {
   return m;
 }
 
-/// Voigt matrix (engineering shear in and out) of X -> A X A^T on symmetric X.
-Mat6 congruence(const Eigen::Matrix3d& A) {
-  Mat6 R;
-  for (int J = 0; J < 6; ++J) {
-    Vec6 unit = Vec6::Zero();
-    unit(J) = 1;
-    R.col(J) = to_voigt_strain(A * from_voigt_strain(unit) * A.transpose());
-  }
-  return R;
+Vec6 to_voigt_stress(const Eigen::Matrix3d& s) {
+  Vec6 v;
+  v << s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(1, 2), s(0, 2);
+  return v;
 }
 
 /// (ln a - ln b) / (a - b) for a, b > 0, and 1/a when they are equal.
@@ -44,75 +38,114 @@ double log_divided_difference(double a, double b) {
   return std::log1p(x) / (b * x);
 }
 
+/// A symmetric positive definite tensor on its principal axes, X = Q diag(x) Q^T.
+struct Spectral {
+  Eigen::Matrix3d Q;
+  Eigen::Vector3d x;
+  explicit Spectral(const Eigen::Matrix3d& X) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (X + X.transpose()));
+    Q = eig.eigenvectors();
+    x = eig.eigenvalues();
+  }
+  /// Q diag(f(x)) Q^T.
+  template <class Fn>
+  [[nodiscard]] Eigen::Matrix3d apply(Fn f) const {
+    Eigen::Vector3d y;
+    for (int a = 0; a < 3; ++a) y(a) = f(x(a));
+    return Q * y.asDiagonal() * Q.transpose();
+  }
+  /// The derivative of X -> Q diag(f(x)) Q^T in the direction dX, given the
+  /// divided differences g(a, b) = (f(xa) - f(xb)) / (xa - xb) (f'(xa) when equal).
+  template <class Divided>
+  [[nodiscard]] Eigen::Matrix3d derivative(const Eigen::Matrix3d& dX, Divided g) const {
+    Eigen::Matrix3d d = Q.transpose() * dX * Q;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) d(a, b) *= g(x(a), x(b));
+    return Q * d * Q.transpose();
+  }
+};
+
 }  // namespace
 
 void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
                                         std::span<double> new_state, const PointContext&,
                                         MaterialResponse& out) const {
-  if (plane_stress)
-    throw ModelError("*PLASTIC under NLGEOM is not available for plane stress (CPS elements) in tether: use plane "
-                     "strain (CPE) or axisymmetric (CAX) elements, or run the step without NLGEOM");
-  if (hardening_ != Hardening::Isotropic)
-    throw ModelError("*PLASTIC, HARDENING=KINEMATIC or COMBINED under NLGEOM is not available in tether (the logarithmic "
-                     "return needs the back stress coaxial with the elastic strain): use isotropic hardening, "
-                     "or run the step without NLGEOM");
-  // State: E_p = (I - Cp^-1) / 2 (Voigt, engineering shear; the plastic strain
-  // at small strain, as CalculiX reports PE under NLGEOM), unused (6), PEEQ.
+  if (!plane_stress) {
+    finite_strain_return(C, old_state, new_state, out);
+    return;
+  }
+  if (C(0, 2) != 0 || C(1, 2) != 0) throw ModelError("plane stress needs C13 = C23 = 0");
+  // Newton on E33 = (C33 - 1)/2 with dS33/dE33 = D(2,2). Once the step is
+  // below 1e-10 of E33 it is taken and the point evaluated once more, which
+  // leaves S33 at round-off (quadratic convergence).
+  bool last = false;
+  for (int it = 0; it < 50; ++it) {
+    finite_strain_return(C, old_state, new_state, out);
+    if (last) {
+      condense_out_of_plane(out.tangent);
+      return;
+    }
+    const double d33 = out.tangent(2, 2);
+    if (!(d33 > 0) || !std::isfinite(out.stress(2))) break;
+    double step = -out.stress(2) / d33;
+    last = std::abs(step) <= 1e-10 * (1 + std::abs(0.5 * (C(2, 2) - 1)));
+    while (C(2, 2) + 2 * step <= 0.01 * C(2, 2)) step *= 0.5;
+    C(2, 2) += 2 * step;
+  }
+  throw ModelError("plane stress *PLASTIC under NLGEOM: the thickness stretch iteration did not converge");
+}
+
+void J2Plasticity::finite_strain_return(const Eigen::Matrix3d& C, std::span<const double> old_state,
+                                        std::span<double> new_state, MaterialResponse& out) const {
+  // State: E_p = (I - Cp^-1) / 2 (Voigt, engineering shear; as CalculiX reports
+  // PE under NLGEOM), the back stress B on the rotated axes R^T (.) R of F = R U, PEEQ.
   const Eigen::Matrix3d Cp_inv =
       Eigen::Matrix3d::Identity() - 2 * from_voigt_strain(Eigen::Map<const Vec6>(old_state.data()));
-  // Any F with F^T F = C gives the same S and dS/dE (isotropy): the Cholesky factor.
-  const Eigen::LLT<Eigen::Matrix3d> llt(C);
-  if (llt.info() != Eigen::Success) throw ModelError("the right Cauchy-Green tensor is not positive definite");
-  const Eigen::Matrix3d F = llt.matrixL().transpose();
-  const Eigen::Matrix3d F_inv = F.inverse();
-  const Eigen::Matrix3d be_trial = F * Cp_inv * F.transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (be_trial + be_trial.transpose()));
-  const Eigen::Vector3d lambda = eig.eigenvalues();  // squared elastic trial stretches
-  const Eigen::Matrix3d& Q = eig.eigenvectors();
-  if (!(lambda.minCoeff() > 0)) throw ModelError("the elastic trial left Cauchy-Green tensor is not positive definite");
+  const Spectral c(C);
+  if (!(c.x.minCoeff() > 0)) throw ModelError("the right Cauchy-Green tensor is not positive definite");
+  const Eigen::Matrix3d U = c.apply([](double v) { return std::sqrt(v); });
+  const Eigen::Matrix3d U_inv = c.apply([](double v) { return 1 / std::sqrt(v); });
+  const Eigen::Matrix3d be_trial = U * Cp_inv * U;  // R^T be* R
+  const Spectral be(be_trial);
+  if (!(be.x.minCoeff() > 0)) throw ModelError("the elastic trial left Cauchy-Green tensor is not positive definite");
 
-  // The small-strain return on the principal logarithmic trial strains: Kirchhoff stress, tangent d tau / d eps.
-  Vec6 eps_trial = Vec6::Zero();
-  for (int a = 0; a < 3; ++a) eps_trial(a) = 0.5 * std::log(lambda(a));
-  double principal_old[kStateSize] = {};
-  principal_old[12] = old_state[12];
-  double principal_new[kStateSize] = {};
-  principal_new[12] = old_state[12];  // the elastic branch writes nothing
+  // The small-strain return at the logarithmic elastic trial strain, from no
+  // plastic strain and the committed back stress: rotated Kirchhoff stress, d tau / d eps.
+  const Eigen::Matrix3d ee_trial = be.apply([](double v) { return 0.5 * std::log(v); });
+  Vec6 eps = to_voigt_strain(ee_trial);
+  double start[kStateSize] = {}, end[kStateSize] = {};
+  for (int i = 6; i < kStateSize; ++i) start[i] = end[i] = old_state[i];  // the elastic branch writes nothing
   MaterialResponse r;
-  general_return(eps_trial, principal_old, principal_new, r);
+  general_return(eps, start, end, r);
 
-  // Exponential map: be = Q exp(2 (eps_trial - d eps_p)) Q^T; Cp^-1 = F^-1 be F^-T.
-  Eigen::Vector3d be_principal;
-  for (int a = 0; a < 3; ++a) be_principal(a) = std::exp(2 * (eps_trial(a) - principal_new[a]));
-  const Eigen::Matrix3d be = Q * be_principal.asDiagonal() * Q.transpose();
-  const Eigen::Matrix3d Cp_inv_new = F_inv * be * F_inv.transpose();
-  Eigen::Map<Vec6>(new_state.data()) = to_voigt_strain(0.5 * (Eigen::Matrix3d::Identity() - Cp_inv_new));
-  Eigen::Map<Vec6>(new_state.data() + 6).setZero();
-  new_state[12] = principal_new[12];
+  // be = exp(2 (ee_trial - d eps_p)), the exponential map (exact when the flow
+  // is coaxial with be*, always so without back stress); Cp^-1 = U^-1 be U^-1.
+  const Eigen::Matrix3d ee = ee_trial - from_voigt_strain(Eigen::Map<const Vec6>(end));
+  const Eigen::Matrix3d be_new = Spectral(ee).apply([](double v) { return std::exp(2 * v); });
+  Eigen::Map<Vec6>(new_state.data()) = to_voigt_strain(0.5 * (Eigen::Matrix3d::Identity() - U_inv * be_new * U_inv));
+  for (int i = 6; i < kStateSize; ++i) new_state[i] = end[i];
 
-  // S = F^-1 tau F^-T = A^T tau_hat A with A = Q^T F^-T, tau_hat = diag(tau_a).
-  const Eigen::Matrix3d A = Q.transpose() * F_inv.transpose();
-  const Eigen::Vector3d tau = r.stress.head<3>();
-  const Eigen::Matrix3d S = A.transpose() * tau.asDiagonal() * A;
-  out.stress << S(0, 0), S(1, 1), S(2, 2), S(0, 1), S(1, 2), S(0, 2);
-
-  // Tangent: with d = F^-T dE F^-1 and d_hat = A dE A^T (principal axes),
-  // dS = A^T (D_hat d eps_hat - d_hat tau_hat - tau_hat d_hat) A, where
-  // d eps_hat = M d_hat: 1 on the normal components, theta_ab (lambda_a + lambda_b) / 2
-  // on the shear ones (the derivative of the logarithm, Daleckii-Krein).
-  Vec6 m = Vec6::Ones(), t;
-  for (int a = 0; a < 3; ++a) t(a) = 2 * tau(a);
-  for (int k = 0; k < 3; ++k) {
-    const int a = kPair[k][0], b = kPair[k][1];
-    m(3 + k) = 0.5 * log_divided_difference(lambda(a), lambda(b)) * (lambda(a) + lambda(b));
-    t(3 + k) = 0.5 * (tau(a) + tau(b));
-  }
-  Mat6 c_hat = r.tangent * m.asDiagonal();
-  c_hat.diagonal() -= t;
-  const Mat6 R = congruence(A);
-  out.tangent = R.transpose() * c_hat * R;
+  const Eigen::Matrix3d tau = from_voigt_stress(r.stress);
+  out.stress = to_voigt_stress(U_inv * tau * U_inv);  // S = F^-1 tau F^-T = U^-1 (R^T tau R) U^-1
   out.elastic_energy = r.elastic_energy;
   out.dissipation = r.dissipation;
+
+  // Tangent dS/dE, column by column (dC = 2 dE): dU from the square root on
+  // the axes of C, d ee_trial from the logarithm on the axes of be*
+  // (Daleckii-Krein), d tau = D_alg d ee_trial, dS = d(U^-1 tau U^-1).
+  const auto sqrt_divided = [](double a, double b) { return 1 / (std::sqrt(a) + std::sqrt(b)); };
+  const auto half_log_divided = [](double a, double b) { return 0.5 * log_divided_difference(a, b); };
+  for (int j = 0; j < 6; ++j) {
+    Vec6 unit = Vec6::Zero();
+    unit(j) = 1;
+    const Eigen::Matrix3d dU = c.derivative(2 * from_voigt_strain(unit), sqrt_divided);
+    const Eigen::Matrix3d dU_inv = -U_inv * dU * U_inv;
+    const Eigen::Matrix3d dbe = dU * Cp_inv * U + U * Cp_inv * dU;
+    const Eigen::Matrix3d dee = be.derivative(dbe, half_log_divided);
+    const Eigen::Matrix3d dtau = from_voigt_stress(r.tangent * to_voigt_strain(dee));
+    const Eigen::Matrix3d dS = dU_inv * tau * U_inv + U_inv * tau * dU_inv + U_inv * dtau * U_inv;
+    out.tangent.col(j) = to_voigt_stress(dS);
+  }
 }
 
 }  // namespace tether

@@ -27,15 +27,16 @@ namespace tether {
 ///
 /// State (13 values): plastic strain (Voigt, engineering shear), back stress
 /// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p. Under
-/// NLGEOM: E_p = (I - Cp^-1)/2 (Voigt, engineering shear), six unused
-/// values, PEEQ.
+/// NLGEOM: E_p = (I - Cp^-1)/2 (Voigt, engineering shear), the back stress
+/// (Kirchhoff, on the axes rotated back by R of F = R U), PEEQ.
 ///
-/// Finite strain (NLGEOM, isotropic hardening, plane strain and
-/// axisymmetry): F = Fe Fp, Hencky elasticity tau = D : ln(Ve) with the
-/// small-strain constants, von Mises on the Kirchhoff stress, isochoric flow
-/// integrated by the exponential map; the return on the principal
-/// logarithmic strains is the small-strain radial return, and the tangent
-/// dS/dE is its exact linearisation (symmetric).
+/// Finite strain (NLGEOM; every hardening kind; plane strain, axisymmetry and
+/// plane stress): F = Fe Fp, Hencky elasticity tau = D : ln(Ve) with the
+/// small-strain constants, von Mises on the Kirchhoff stress less the back
+/// stress (carried on the axes rotated by R of F = R U), isochoric flow
+/// integrated by the exponential map; the return at the logarithmic elastic
+/// trial strain is the small-strain radial return, and the tangent dS/dE is
+/// its exact linearisation (symmetric without back stress).
 class J2Plasticity final : public ConstitutiveModel {
  public:
   enum class Hardening { Isotropic, Kinematic, Combined };
@@ -51,13 +52,18 @@ class J2Plasticity final : public ConstitutiveModel {
   void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
                            std::span<double> new_state, const PointContext& where,
                            MaterialResponse& out) const override;
-  /// Finite strain (see the class comment): PK2 stress, dS/dE, E_p and PEEQ.
-  /// Throws ModelError for plane stress and for kinematic hardening, which
-  /// tether does not provide under NLGEOM.
+  /// Finite strain (see the class comment): PK2 stress, dS/dE, E_p, back
+  /// stress and PEEQ; plane stress by a local Newton iteration on C33 (S33 = 0
+  /// to round-off) with the condensed tangent. Throws ModelError when the
+  /// return or the thickness iteration fails.
   void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
                             std::span<double> new_state, const PointContext& where,
                             MaterialResponse& out) const override;
   [[nodiscard]] bool linear_small_strain() const override { return false; }
+  /// Under NLGEOM a back stress not coaxial with the elastic strain makes dS/dE unsymmetric.
+  [[nodiscard]] bool symmetric_tangent(bool nlgeom) const override {
+    return !nlgeom || hardening_ == Hardening::Isotropic;
+  }
   [[nodiscard]] double equivalent_plastic_strain(std::span<const double> state) const override {
     return state[12];
   }
@@ -80,6 +86,9 @@ class J2Plasticity final : public ConstitutiveModel {
                       MaterialResponse& out) const;
   void plane_stress_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
                            MaterialResponse& out) const;
+  /// Finite-strain update at C (3D; plane strain and axisymmetry): PK2, dS/dE, state.
+  void finite_strain_return(const Eigen::Matrix3d& C, std::span<const double> old_state, std::span<double> new_state,
+                            MaterialResponse& out) const;
 
   double young_, poisson_;
   LinearElastic elastic_;

@@ -41,7 +41,7 @@ class UserMaterial final : public ConstitutiveModel {
                             MaterialResponse& out) const override;
   [[nodiscard]] bool linear_small_strain() const override { return false; }
   /// False: tether cannot vouch for a user routine's DDSDDE.
-  [[nodiscard]] bool symmetric_tangent() const override { return false; }
+  [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return false; }
   /// DDSDDE(4,4) of the zero-strain call (plane strain) [stress].
   [[nodiscard]] double shear_modulus() const override { return mu_; }
   [[nodiscard]] std::string describe() const override;
