@@ -4,6 +4,7 @@
 /// DeckState and throws InputError (file:line) on bad input.
 
 #include "tether/io/keyword_table.hpp"
+#include "tether/model/model.hpp"
 
 namespace tether::deck {
 
@@ -46,6 +47,15 @@ TETHER_DECK_HANDLER(handle_restart);
 // dynamic_keywords.cpp
 TETHER_DECK_HANDLER(handle_initial_conditions);
 TETHER_DECK_HANDLER(handle_damping);
+// thermal_keywords.cpp
+TETHER_DECK_HANDLER(handle_expansion);
+TETHER_DECK_HANDLER(handle_temperature);
+/// `*INITIAL CONDITIONS, TYPE=TEMPERATURE` (called by handle_initial_conditions).
+void handle_initial_temperatures(DeckState& state, const KeywordBlock& block);
+/// `*ELASTIC` with several rows `E, nu, temperature`: fills the temperature
+/// table of `elastic` (and its first-row E, nu); InputError (file:line) for a
+/// bad row or temperatures that do not increase.
+void read_elastic_table(const KeywordBlock& block, MaterialData::Elastic& elastic);
 // output_keywords.cpp
 TETHER_DECK_HANDLER(handle_node_print);
 TETHER_DECK_HANDLER(handle_el_print);
