@@ -85,3 +85,24 @@ TEST(ThermalKeywords, TemperaturesWithoutExpansionAreWarnedAbout) {
   (void)read_deck_string(kThermal, "thermal.inp", &none);
   EXPECT_TRUE(none.empty());
 }
+
+TEST(ThermalKeywords, ElasticTableWithoutTemperaturesFollowsTheDialect) {
+  // Rows at -100 and 100: ABAQUS reads the table at T = 0 (interpolated),
+  // CalculiX at its first row; both say which.
+  const std::string deck = replaced(kMesh, "200e3, 0.3\n", "300e3, 0.3, -100\n100e3, 0.3, 100\n") +
+                           "*STEP\n*STATIC\n*CLOAD\nRIGHT, 1, 10\n*END STEP\n";
+  std::vector<DeckWarning> abaqus_warnings, calculix_warnings;
+  const Model abaqus = read_deck_string(deck, "t.inp", &abaqus_warnings, Dialect::Abaqus);
+  const Model calculix = read_deck_string(deck, "t.inp", &calculix_warnings, Dialect::Calculix);
+  EXPECT_EQ(abaqus.materials[0].elastic->table_young.size(), 2u);
+  EXPECT_TRUE(calculix.materials[0].elastic->table_young.empty());
+  EXPECT_DOUBLE_EQ(calculix.materials[0].elastic->young, 300e3);
+  ASSERT_EQ(abaqus_warnings.size(), 1u);
+  EXPECT_NE(abaqus_warnings[0].message.find("interpolated at temperature 0"), std::string::npos);
+  ASSERT_EQ(calculix_warnings.size(), 1u);
+  EXPECT_NE(calculix_warnings[0].message.find("first row, as CalculiX does"), std::string::npos);
+  // A table starting at or above 0 reads its first row either way: nothing to say.
+  std::vector<DeckWarning> none;
+  (void)read_deck_string(replaced(deck, "-100", "0"), "t.inp", &none, Dialect::Calculix);
+  EXPECT_TRUE(none.empty());
+}

@@ -56,6 +56,12 @@ void handle_initial_temperatures(DeckState& state, const KeywordBlock& block);
 /// table of `elastic` (and its first-row E, nu); InputError (file:line) for a
 /// bad row or temperatures that do not increase.
 void read_elastic_table(const KeywordBlock& block, MaterialData::Elastic& elastic);
+/// After the whole deck: a deck without temperatures reads a temperature-
+/// dependent *ELASTIC at temperature 0 (ABAQUS) or at its first row
+/// (CalculiX, which calls such a run athermal); where the two differ (first
+/// row above 0) the choice is warned about, and the calculix dialect keeps
+/// only the first row.
+void apply_temperature_table_dialect(DeckState& state);
 // output_keywords.cpp
 TETHER_DECK_HANDLER(handle_node_print);
 TETHER_DECK_HANDLER(handle_el_print);

@@ -137,7 +137,9 @@ std::vector<KeywordSpec> build_table() {
       {"ELASTIC", kMaterial, "Isotropic linear elasticity (small strain; St. Venant-Kirchhoff under NLGEOM).",
        "`E, nu[, temperature]` with E > 0 and -1 < nu < 0.5: one line holds at every temperature; several lines "
        "`E, nu, temperature` (temperatures strictly increasing) are a table interpolated linearly at the point's "
-       "temperature, constant beyond its ends (as ABAQUS and CalculiX); a table with *PLASTIC is refused",
+       "temperature, constant beyond its ends (as ABAQUS and CalculiX); a table with *PLASTIC is refused. Dialects: a "
+       "deck without temperatures reads a table at temperature 0 (abaqus) or at its first row (calculix), with a "
+       "warning where the two differ (first row below 0)",
        {choice("TYPE", "ISOTROPIC", {"ISOTROPIC"}, "Only isotropic elasticity is supported.")}, handle_elastic,
        ""},
       {"HYPERELASTIC", kMaterial, "Compressible neo-Hookean hyperelasticity.", "`C10, D1[, temperature]` with C10 > 0, D1 > 0",

@@ -123,4 +123,24 @@ void read_elastic_table(const KeywordBlock& block, MaterialData::Elastic& elasti
   elastic.poisson = elastic.table_poisson.front();
 }
 
+void apply_temperature_table_dialect(DeckState& state) {
+  Model& m = state.model;
+  if (m.has_temperatures()) return;
+  for (MaterialData& material : m.materials) {
+    if (!material.elastic || material.elastic->table_young.empty()) continue;
+    MaterialData::Elastic& e = *material.elastic;
+    if (e.table_temperature.front() >= 0) continue;  // at 0 both read the first row (constant below it)
+    if (m.dialect == Dialect::Calculix) {
+      state.warn(material.where, "material " + material.name + ": the deck gives no temperatures, so its *ELASTIC "
+                                 "table is read at its first row, as CalculiX does (dialect calculix; ABAQUS "
+                                 "interpolates at temperature 0)");
+      e.table_young.clear(), e.table_poisson.clear(), e.table_temperature.clear();
+    } else {
+      state.warn(material.where, "material " + material.name + ": the deck gives no temperatures, so its *ELASTIC "
+                                 "table is interpolated at temperature 0, as ABAQUS does (CalculiX would use the "
+                                 "first row: --dialect calculix)");
+    }
+  }
+}
+
 }  // namespace tether::deck
