@@ -192,3 +192,39 @@ TEST(ThermalStress, TemperatureDependentPlaneStressStripAgreesWithCalculix) {
   EXPECT_NEAR(run.last().displacement[run.node(6)].y(), 1.181132e-03, 2e-3 * 1.181132e-03);
   EXPECT_NEAR(run.last().displacement[run.node(11)].y(), 3.440432e-03, 2e-3 * 3.440432e-03);
 }
+
+TEST(ThermalStress, ConstantElasticityKeepsTheLinearBulkAndATableDoesNot) {
+  // A thermal load with constant E is affine in u (K u - f_th(t)): the held
+  // bulk gives the displacements of a full assembly. With a temperature table
+  // the tangent changes with T(t): nothing is held.
+  const std::string rest = R"(*BOUNDARY
+1, 1, 2
+4, 1
+3, 1
+*STEP
+*STATIC
+0.5, 1
+*TEMPERATURE
+EDGE, 150
+*CLOAD
+6, 2, 50
+*END STEP
+)";
+  for (const bool table : {false, true}) {
+    const std::string expansion = table ? "*EXPANSION\n1e-5\n" : "*EXPANSION\n1e-5";
+    std::string deck = plate("CPS4", expansion, rest);
+    if (table) deck.replace(deck.find("2e5, 0.3\n"), 9, "2e5, 0.3, 0\n1e5, 0.2, 200\n");
+    const auto held = run_deck_text(deck);
+    AnalysisOptions fresh_options;
+    fresh_options.reuse_linear_bulk = false;
+    const auto fresh = run_deck_text(deck, fresh_options);
+    ASSERT_TRUE(held.summary.completed && fresh.summary.completed);
+    if (table) EXPECT_EQ(held.summary.timing.held_tangents, 0);
+    else EXPECT_GT(held.summary.timing.held_tangents, 0);
+    ASSERT_EQ(held.recorder.results.size(), fresh.recorder.results.size());
+    for (std::size_t k = 0; k < held.recorder.results.size(); ++k)
+      for (std::size_t n = 0; n < held.recorder.results[k].displacement.size(); ++n)
+        EXPECT_LT((held.recorder.results[k].displacement[n] - fresh.recorder.results[k].displacement[n]).norm(), 1e-14)
+            << "table " << table << " increment " << k;
+  }
+}
