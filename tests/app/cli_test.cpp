@@ -7,6 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <sstream>
+#include <vector>
 #include <memory>
 
 #include "cli_support.hpp"
@@ -609,4 +612,61 @@ TEST(Cli, MortarCondensationEliminatesTheMultipliersWithTheSameIterations) {
   };
   EXPECT_EQ(iterations(schur_log), 25) << schur_log;
   EXPECT_EQ(iterations(dual_log), iterations(schur_log)) << dual_log;
+}
+
+// A thermal deck through `tether run`: the .dat's temperatures (NT) and
+// displacements read back are the free expansion alpha dT x of the plate.
+TEST(Cli, ThermalDeckPrintsTemperaturesAndTheFreeExpansion) {
+  const fs::path dir = scratch("thermal");
+  write(dir / "hot.inp", R"(*HEADING
+free plate heated from 20 to 120
+*NODE, NSET=ALL
+1, 0, 0
+2, 2, 0
+3, 2, 1
+4, 0, 1
+*ELEMENT, TYPE=CPS4, ELSET=E
+1, 1, 2, 3, 4
+*MATERIAL, NAME=M
+*ELASTIC
+2e5, 0.3
+*EXPANSION, ZERO=20
+1.2e-5
+*SOLID SECTION, ELSET=E, MATERIAL=M
+*INITIAL CONDITIONS, TYPE=TEMPERATURE
+ALL, 20
+*BOUNDARY
+1, 1, 2
+4, 1
+*STEP
+*STATIC
+*TEMPERATURE
+ALL, 120
+*NODE PRINT, NSET=ALL
+U, NT
+*END STEP
+)");
+  const Result r = tether("run " + (dir / "hot.inp").string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream dat(dir / "out" / "hot.dat");
+  std::string line;
+  std::map<int, std::vector<double>> u, nt;
+  std::map<int, std::vector<double>>* block = nullptr;
+  while (std::getline(dat, line)) {
+    if (line.find("displacements") != std::string::npos) block = &u;
+    else if (line.find("temperatures") != std::string::npos) block = &nt;
+    std::istringstream in(line);
+    int node = 0;
+    if (block == nullptr || !(in >> node)) continue;
+    double v = 0;
+    while (in >> v) (*block)[node].push_back(v);
+  }
+  ASSERT_EQ(nt.size(), 4u);
+  for (const auto& [node, t] : nt) EXPECT_DOUBLE_EQ(t.at(0), 120.0);
+  ASSERT_EQ(u.size(), 4u);
+  const double eth = 1.2e-5 * 100;  // printed to 7 digits
+  EXPECT_NEAR(u[2].at(0), 2 * eth, 1e-9);
+  EXPECT_NEAR(u[3].at(0), 2 * eth, 1e-9);
+  EXPECT_NEAR(u[3].at(1), eth, 1e-9);
+  EXPECT_NEAR(u[4].at(1), eth, 1e-9);
 }

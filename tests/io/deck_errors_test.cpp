@@ -193,8 +193,8 @@ TEST(DeckErrors, ElasticConstantsOutOfRange) {
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, -1"), "200e3, -1", {"-1 < nu < 0.5"});
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "0, 0.3"), "0, 0.3", {"E > 0"});
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "-5, 0.3"), "-5, 0.3", {"E > 0"});
-  expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3, 20\n100e3, 0.3, 300"), "100e3, 0.3, 300",
-                       {"more than one data line", "temperature"});
+  expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3, 20\n100e3, 0.3, 10"), "100e3, 0.3, 10",
+                       {"*ELASTIC temperature", "strictly increasing"});
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3, hot"), "200e3, 0.3, hot", {"temperature"});
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3, 20, 1"), "200e3, 0.3, 20, 1",
                        {"expected `E, nu`[, temperature]"});

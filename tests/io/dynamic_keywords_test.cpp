@@ -68,7 +68,7 @@ TEST(DynamicKeywords, ParametersAreReadOrRefusedWithAReason) {
 TEST(DynamicKeywords, InitialConditionsAndDampingRefuseWhatTheyCannotMean) {
   const auto before_step = [](const std::string& text) { return replaced(kDynamic, "*STEP", text + "\n*STEP"); };
   expect_deck_error_at(before_step("*INITIAL CONDITIONS, TYPE=STRESS\nPLATE, 1., 2."), "TYPE=STRESS",
-                       {"TYPE=STRESS", "VELOCITY only"});
+                       {"TYPE=STRESS", "TYPE=TEMPERATURE only"});
   expect_deck_error_at(before_step("*INITIAL CONDITIONS, TYPE=VELOCITY\nRIGHT, 3, 1."), "RIGHT, 3",
                        {"in its plane only"});
   expect_deck_error_at(before_step("*INITIAL CONDITIONS, TYPE=VELOCITY\nRIGHT, 7, 0."), "RIGHT, 7", {"dof 7"});

@@ -37,6 +37,10 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
                                                            *materials_[section.material], section.thickness, dofs_,
                                                            &model.materials[section.material]));
   }
+  if (model.has_temperatures()) {
+    temperatures_ = std::make_unique<StepTemperatures>(model);
+    for (auto& element : elements_) element->set_temperatures(temperatures_.get());
+  }
 
   if (!model.coords.empty()) {
     Eigen::Vector2d lo = model.coords.front(), hi = lo;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "tether/analysis/step_temperatures.hpp"
 #include "tether/assembly/contribution.hpp"
 #include "tether/assembly/equation_map.hpp"
 #include "tether/constraints/constraint_element.hpp"
@@ -62,6 +63,9 @@ class Discretization {
   /// Out-of-plane thickness of element e (1 for axisymmetric elements).
   [[nodiscard]] double thickness(int element) const;
 
+  /// The nodal temperatures the elements read; nullptr when the deck gives none.
+  [[nodiscard]] const StepTemperatures* temperatures() const { return temperatures_.get(); }
+
   /// Diagonal of the reference bounding box (a length scale for tolerances).
   [[nodiscard]] double length_scale() const { return length_scale_; }
 
@@ -69,6 +73,7 @@ class Discretization {
   const Model& model_;
   DofMap dofs_;
   std::vector<std::unique_ptr<ConstitutiveModel>> materials_;
+  std::unique_ptr<StepTemperatures> temperatures_;  ///< when the deck gives temperatures
   std::vector<std::unique_ptr<ContinuumElement>> elements_;
   std::vector<std::unique_ptr<ConstraintElement>> constraints_;
   std::vector<std::unique_ptr<UserConstraintElement>> user_constraints_;

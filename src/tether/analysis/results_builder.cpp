@@ -90,6 +90,8 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
     }
   }
 
+  if (const StepTemperatures* t = discretization.temperatures()) r.temperature = t->all(state.step_time, state.total_time);
+
   const auto& elements = discretization.elements();
   const int n_elements = static_cast<int>(elements.size());
   const DiscretizationPoints own_source(discretization, state);

@@ -139,6 +139,12 @@ PointContext ContinuumElement::context(const EvaluationState& s, int q, const Po
   c.step_time = s.step_time;
   c.total_time = s.total_time;
   c.dt = s.dt;
+  if (temperatures_ != nullptr)
+    for (int a = 0; a < n_nodes_; ++a) {
+      const int node = nodes_[static_cast<std::size_t>(a)];
+      c.temperature += g.N(a) * temperatures_->current(node, s.step_time, s.total_time);
+      c.initial_temperature += g.N(a) * temperatures_->initial(node);
+    }
   return c;
 }
 

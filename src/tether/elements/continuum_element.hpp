@@ -16,6 +16,7 @@
 #include "tether/materials/constitutive_model.hpp"
 #include "tether/model/element_type.hpp"
 #include "tether/model/results.hpp"
+#include "tether/model/temperature_data.hpp"
 
 namespace tether {
 
@@ -84,6 +85,13 @@ class ContinuumElement final : public Contribution {
   /// commit(s); 0 once the records are committed at s, and without history).
   /// Equals plastic_dissipation(s) minus its value at the committed state.
   [[nodiscard]] double plastic_dissipation_increment(const EvaluationState& s) const;
+
+  /// Nodal temperatures the element reads (must outlive it; nullptr, the
+  /// default: every temperature is 0). The point temperature and initial
+  /// temperature are the shape-function interpolations of the nodal values,
+  /// handed to the material in PointContext (thermal strain,
+  /// temperature-dependent elasticity).
+  void set_temperatures(const NodalTemperatureField* field) { temperatures_ = field; }
 
   [[nodiscard]] int label() const { return label_; }
   [[nodiscard]] const ElementType& type() const { return type_; }
@@ -169,6 +177,7 @@ class ContinuumElement final : public Contribution {
   std::vector<double> history_;        ///< committed records, n_points_ x (kRecordState + n_state_); empty without history
   std::vector<double> committed_u_;    ///< local displacements of the committed records (the stamp, with the time)
   double committed_time_ = 0;          ///< total time of the committed records (the stamp, with committed_u_)
+  const NodalTemperatureField* temperatures_ = nullptr;  ///< nodal temperatures; null: all 0
 };
 
 }  // namespace tether

@@ -1,6 +1,7 @@
 // The dispatcher: lexed keyword blocks -> context and parameter checks from
 // the table -> one handler per keyword -> whole-model checks.
 #include "tether/io/deck_reader.hpp"
+#include "tether/io/keyword_handlers.hpp"
 
 #include "tether/io/assembly_flattening.hpp"
 #include "tether/io/deck_state.hpp"
@@ -132,6 +133,7 @@ Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& de
   if (state.model.steps.empty())
     state.warn({deck_path, 0}, "the deck has no *STEP: nothing will be solved");
   deck::check_model(state);
+  deck::apply_temperature_table_dialect(state);
   deck::apply_contact_adjustments(state);
   deck::warn_about_stiff_slaves(state);
   return std::move(state.model);

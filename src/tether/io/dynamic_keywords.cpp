@@ -7,9 +7,10 @@ namespace tether::deck {
 
 void handle_initial_conditions(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
   const std::string type = params.name("TYPE");
+  if (type == "TEMPERATURE") return handle_initial_temperatures(state, block);
   if (type != "VELOCITY")
     throw InputError(block.where, "*INITIAL CONDITIONS, TYPE=" + type +
-                                      ": tether reads TYPE=VELOCITY only (initial stresses, temperatures and "
+                                      ": tether reads TYPE=VELOCITY and TYPE=TEMPERATURE only (initial stresses and "
                                       "other fields are planned for a later version)");
   require_data(block, "`node or node set, dof, velocity`");
   for (const DataLine& line : block.data) {

@@ -4,6 +4,7 @@
 /// DeckState and throws InputError (file:line) on bad input.
 
 #include "tether/io/keyword_table.hpp"
+#include "tether/model/model.hpp"
 
 namespace tether::deck {
 
@@ -46,6 +47,21 @@ TETHER_DECK_HANDLER(handle_restart);
 // dynamic_keywords.cpp
 TETHER_DECK_HANDLER(handle_initial_conditions);
 TETHER_DECK_HANDLER(handle_damping);
+// thermal_keywords.cpp
+TETHER_DECK_HANDLER(handle_expansion);
+TETHER_DECK_HANDLER(handle_temperature);
+/// `*INITIAL CONDITIONS, TYPE=TEMPERATURE` (called by handle_initial_conditions).
+void handle_initial_temperatures(DeckState& state, const KeywordBlock& block);
+/// `*ELASTIC` with several rows `E, nu, temperature`: fills the temperature
+/// table of `elastic` (and its first-row E, nu); InputError (file:line) for a
+/// bad row or temperatures that do not increase.
+void read_elastic_table(const KeywordBlock& block, MaterialData::Elastic& elastic);
+/// After the whole deck: a deck without temperatures reads a temperature-
+/// dependent *ELASTIC at temperature 0 (ABAQUS) or at its first row
+/// (CalculiX, which calls such a run athermal); where the two differ (first
+/// row above 0) the choice is warned about, and the calculix dialect keeps
+/// only the first row.
+void apply_temperature_table_dialect(DeckState& state);
 // output_keywords.cpp
 TETHER_DECK_HANDLER(handle_node_print);
 TETHER_DECK_HANDLER(handle_el_print);

@@ -135,8 +135,11 @@ std::vector<KeywordSpec> build_table() {
       {"MATERIAL", kModelData, "Starts a material; the material options (*ELASTIC, ...) follow it.", "",
        {name("NAME", "Name of the material.", true)}, handle_material, ""},
       {"ELASTIC", kMaterial, "Isotropic linear elasticity (small strain; St. Venant-Kirchhoff under NLGEOM).",
-       "one line `E, nu[, temperature]` with E > 0 and -1 < nu < 0.5 (a single line holds at every temperature; "
-       "more lines, a temperature table, are refused)",
+       "`E, nu[, temperature]` with E > 0 and -1 < nu < 0.5: one line holds at every temperature; several lines "
+       "`E, nu, temperature` (temperatures strictly increasing) are a table interpolated linearly at the point's "
+       "temperature, constant beyond its ends (as ABAQUS and CalculiX); a table with *PLASTIC is refused. Dialects: a "
+       "deck without temperatures reads a table at temperature 0 (abaqus) or at its first row (calculix), with a "
+       "warning where the two differ (first row below 0)",
        {choice("TYPE", "ISOTROPIC", {"ISOTROPIC"}, "Only isotropic elasticity is supported.")}, handle_elastic,
        ""},
       {"HYPERELASTIC", kMaterial, "Compressible neo-Hookean hyperelasticity.", "`C10, D1[, temperature]` with C10 > 0, D1 > 0",
@@ -441,9 +444,32 @@ std::vector<KeywordSpec> build_table() {
                             "SMOOTH with mortar contact.")},
        handle_contact_pair, ""},
       {"INITIAL CONDITIONS", kModelData, "Initial values: TYPE=VELOCITY (the velocity at the start of the first "
-       "dynamic step). Other types are refused.",
-       "`node or node set, dof, velocity` (dof 1 or 2) [length/time]",
-       {name("TYPE", "VELOCITY (other types are refused).", true)}, handle_initial_conditions, ""},
+       "dynamic step) or TYPE=TEMPERATURE (the initial nodal temperatures: the thermal strain is zero at them; "
+       "nodes not given start at 0). Other types are refused.",
+       "VELOCITY: `node or node set, dof, velocity` (dof 1 or 2) [length/time]; TEMPERATURE: `node or node set, "
+       "temperature`",
+       {name("TYPE", "VELOCITY or TEMPERATURE (other types are refused).", true)}, handle_initial_conditions, ""},
+      {"EXPANSION", kMaterial,
+       "Isotropic thermal expansion: the secant coefficient alpha(T) about ZERO, thermal strain "
+       "alpha(T)(T - ZERO) - alpha(T_I)(T_I - ZERO) with T_I the initial temperature (ABAQUS's and CalculiX's "
+       "meaning). Small strain: subtracted from the strain; NLGEOM: F = (1 + eps_th) F_m.",
+       "`alpha[, temperature]`; several lines `alpha, temperature` (temperatures strictly increasing) are a table "
+       "interpolated linearly, constant beyond its ends",
+       {real("ZERO", "0", "Reference temperature of the coefficient [temperature]."),
+        choice("TYPE", "ISO", {"ISO"}, "Only isotropic expansion is supported.")},
+       handle_expansion, ""},
+      {"TEMPERATURE", kAnyStep,
+       "Nodal temperatures of the step. Nodes not listed keep their temperature (their initial one before any "
+       "step); without AMPLITUDE= a value is ramped from the node's temperature at the step's start (static "
+       "steps) or applied at once (AMPLITUDE=STEP, dynamic steps). The point temperature is the shape-function "
+       "interpolation of the nodal values. Warned about when no material has *EXPANSION or a temperature table.",
+       "`node or node set, temperature`",
+       {name("AMPLITUDE", "Amplitude: the temperature is value * a(t)."),
+        choice("OP", "MOD", {"MOD", "NEW"},
+               "MOD: replace the values of the nodes listed; NEW: nodes not listed return to their initial "
+               "temperature (ramped like a removed load)."),
+        name("FILE", "ABAQUS: temperatures from a results file (refused).")},
+       handle_temperature, ""},
       {"CONTACT PRINT", kAnyStep, "Contact output in the .dat report.", "variables: CSTR, CDIS (CalculiX), CSTRESS, CDISP, CFN, CFS (ABAQUS)",
        {frequency_param()}, handle_contact_output, ""},
       {"CONTACT FILE", kAnyStep, "Contact output in the result files.", "variables: CSTR, CDIS",
@@ -451,7 +477,6 @@ std::vector<KeywordSpec> build_table() {
       {"CONTACT OUTPUT", kAnyStep, "Contact output request (ABAQUS).", "variables: CSTRESS, CDISP, CFN, CFS",
        {frequency_param()}, handle_contact_output, ""},
       // --- recognised, not supported yet: a clear error, never silently dropped ---
-      {"EXPANSION", kMaterial, "Thermal expansion.", "", {}, nullptr, "tether has no thermal analysis"},
       {"ORIENTATION", kModelData, "Local material directions.", "", {}, nullptr,
        "tether's materials are isotropic"},
       {"TRANSFORM", kModelData, "Local nodal directions.", "", {}, nullptr, kLater},
@@ -460,7 +485,6 @@ std::vector<KeywordSpec> build_table() {
       {"BUCKLE", kAnyStep, "Buckling procedure.", "", {}, nullptr,
        "tether has static and dynamic (*DYNAMIC) procedures, no eigenvalue extraction"},
       {"HEAT TRANSFER", kAnyStep, "Heat-transfer procedure.", "", {}, nullptr, "tether has no thermal analysis"},
-      {"TEMPERATURE", kAnyStep, "Prescribed temperatures.", "", {}, nullptr, "tether has no thermal analysis"},
   };
 }
 

@@ -47,6 +47,16 @@ void handle_material(DeckState& state, const KeywordBlock& block, const Paramete
 }
 
 void handle_elastic(DeckState& state, const KeywordBlock& block, const ParameterValues&) {
+  if (block.data.size() > 1) {  // a temperature table
+    MaterialData& m = current_material(state);
+    if (m.elastic || m.neo_hooke)
+      throw InputError(block.where, "material " + m.name + " already has elastic data: expected one *ELASTIC "
+                                    "or *HYPERELASTIC per material");
+    MaterialData::Elastic elastic;
+    read_elastic_table(block, elastic);
+    m.elastic = std::move(elastic);
+    return;
+  }
   const auto v = material_values(block, 2, "`E, nu`");
   const SourceLocation at = block.data[0].where();
   if (!(v[0] > 0)) throw InputError(at, "Young's modulus E = " + std::to_string(v[0]) + ": expected E > 0");
@@ -56,7 +66,7 @@ void handle_elastic(DeckState& state, const KeywordBlock& block, const Parameter
   if (m.elastic || m.neo_hooke)
     throw InputError(block.where, "material " + m.name + " already has elastic data: expected one *ELASTIC "
                                   "or *HYPERELASTIC per material");
-  m.elastic = MaterialData::Elastic{v[0], v[1]};
+  m.elastic = MaterialData::Elastic{v[0], v[1], {}, {}, {}};
 }
 
 void handle_hyperelastic(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {

@@ -4,6 +4,7 @@
 #include "tether/materials/linear_elastic.hpp"
 #include "tether/materials/neo_hooke.hpp"
 #include "tether/materials/plane_stress.hpp"
+#include "tether/materials/thermal_model.hpp"
 #include "tether/materials/user_material.hpp"
 
 namespace tether {
@@ -76,9 +77,7 @@ std::unique_ptr<ConstitutiveModel> make_user_material(const MaterialData& data) 
   }
 }
 
-}  // namespace
-
-std::unique_ptr<ConstitutiveModel> make_constitutive_model(const MaterialData& data) {
+std::unique_ptr<ConstitutiveModel> make_mechanical_model(const MaterialData& data) {
   if (data.user) return make_user_material(data);
   if (data.depvar)
     fail(data, "*DEPVAR (" + data.depvar_where.str() + ") without *USER MATERIAL: only user materials have "
@@ -103,6 +102,12 @@ std::unique_ptr<ConstitutiveModel> make_constitutive_model(const MaterialData& d
     return std::make_unique<NeoHooke>(n.c10, n.d1);
   }
   fail(data, "no *ELASTIC or *HYPERELASTIC, NEO HOOKE definition");
+}
+
+}  // namespace
+
+std::unique_ptr<ConstitutiveModel> make_constitutive_model(const MaterialData& data) {
+  return with_thermal_behaviour(data, make_mechanical_model(data));
 }
 
 Mat6 isotropic_stiffness(double lambda, double mu) {

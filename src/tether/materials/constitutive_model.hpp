@@ -45,6 +45,8 @@ struct PointContext {
   double step_time = 0;              ///< step time at the end of the increment
   double total_time = 0;             ///< total time at the end of the increment
   double dt = 0;                     ///< increment size
+  double temperature = 0;            ///< temperature of the point at the end of the increment [temperature]
+  double initial_temperature = 0;    ///< its initial temperature (*INITIAL CONDITIONS, TYPE=TEMPERATURE)
 };
 
 /// A constitutive model with (possibly) history. The history of one

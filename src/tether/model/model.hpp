@@ -21,6 +21,7 @@
 #include "tether/model/contact_data.hpp"
 #include "tether/model/element_type.hpp"
 #include "tether/model/part_instance.hpp"
+#include "tether/model/temperature_data.hpp"
 
 namespace tether {
 
@@ -58,9 +59,23 @@ struct Surface {
 struct MaterialData {
   std::string name;
   struct Elastic {
-    double young = 0;    ///< E [stress]
-    double poisson = 0;  ///< nu [-], -1 < nu < 0.5
+    double young = 0;    ///< E [stress] (of the first row when temperature-dependent)
+    double poisson = 0;  ///< nu [-], -1 < nu < 0.5 (of the first row)
+    /// Temperature-dependent `*ELASTIC` (two or more rows): E, nu and the
+    /// temperature of each row, temperatures strictly increasing; empty for
+    /// one row. Interpolated linearly, constant beyond the first and last rows.
+    std::vector<double> table_young, table_poisson, table_temperature;
   };
+  /// `*EXPANSION` (isotropic): the secant (total) coefficient alpha(T) about
+  /// the reference temperature ZERO, thermal strain
+  /// alpha(T) (T - zero) - alpha(T_I) (T_I - zero) with T_I the initial temperature.
+  struct Expansion {
+    std::vector<double> alpha;        ///< [1/temperature], one per row
+    std::vector<double> temperature;  ///< per row, strictly increasing; empty for one row without temperature
+    double zero = 0;                  ///< ZERO= [temperature] (ABAQUS's and CalculiX's default 0)
+    SourceLocation where;             ///< the *EXPANSION line
+  };
+  std::optional<Expansion> expansion;
   struct NeoHooke {
     double c10 = 0;  ///< C10 = mu/2 [stress]
     double d1 = 0;   ///< D1 = 2/K [1/stress]; 0 means incompressible (refused)
@@ -238,6 +253,7 @@ struct Step {
   std::vector<ConcentratedLoad> cloads;
   std::vector<PressureLoad> pressures;
   std::vector<BodyLoad> body_loads;  ///< *DLOAD GRAV / CENTRIF
+  StepTemperatureData temperatures;  ///< *TEMPERATURE given in this step
   std::vector<OutputRequest> outputs;
   /// `*RESTART, WRITE, FREQUENCY=n` in force: the restart state is written
   /// after every n-th converged increment and at the end of the step; 0 = not written.
@@ -289,6 +305,15 @@ struct Model {
     SourceLocation where;
   };
   std::vector<InitialVelocity> initial_velocities;
+  /// `*INITIAL CONDITIONS, TYPE=TEMPERATURE` (one entry per node, the last given wins).
+  std::vector<NodeTemperature> initial_temperatures;
+  /// True when the deck gives temperatures (initial or in a step).
+  [[nodiscard]] bool has_temperatures() const {
+    if (!initial_temperatures.empty()) return true;
+    for (const Step& s : steps)
+      if (!s.temperatures.values.empty() || s.temperatures.reset) return true;
+    return false;
+  }
   std::optional<RestartRead> restart_read;  ///< `*RESTART, READ`, when given
 
   [[nodiscard]] int n_nodes() const { return static_cast<int>(coords.size()); }

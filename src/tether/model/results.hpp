@@ -134,6 +134,7 @@ struct IncrementResults {
                                               ///< (plus inertia and damping forces in a dynamic step)
   std::vector<Eigen::Vector2d> velocity;      ///< per node, dynamic steps only (else empty) [length/time]
   std::vector<Eigen::Vector2d> acceleration;  ///< per node, dynamic steps only (else empty) [length/time^2]
+  std::vector<double> temperature;            ///< NT per node [temperature]; empty when the deck gives no temperatures
   std::optional<EnergyTotals> energy;         ///< dynamic steps only
   std::vector<Tensor4> nodal_stress;          ///< per node: average of extrapolated element values
   std::vector<Tensor4> nodal_strain;          ///< per node, as above

@@ -101,6 +101,15 @@ void write_nodal(Out out, const Model& model, const Selection& sel, const std::v
   }
 }
 
+/// NT: `temperatures for set ...`, one row per node (0 for every node when
+/// the deck gives no temperatures).
+void write_temperatures(Out out, const Model& model, const Selection& sel, const std::vector<double>& t, double time) {
+  write_header(out, "temperatures", sel.name, time);
+  for (const int i : sel.indices)
+    fmt::format_to(out, "{:10d} {:13.6E}\n", model.node_ids[static_cast<std::size_t>(i)] - sel.label_offset,
+                   t.empty() ? 0.0 : unsigned_zero(t[static_cast<std::size_t>(i)]));
+}
+
 void write_points(Out out, const Model& model, const Selection& sel, const IncrementResults& r, bool stress) {
   if (r.points.size() != static_cast<std::size_t>(model.n_elements()) && !(r.points.empty() && r.point_source))
     throw std::invalid_argument(fmt::format("DatWriter: EL PRINT needs integration-point values for {} elements, "
@@ -371,11 +380,11 @@ void DatWriter::check(const Model& model, const OutputRequest& r) {
                                             r.set));
   }
   for (const auto& v : r.variables) {
-    const bool ok = nodal ? (v == "U" || v == "RF" || v == "V" || v == "A")
+    const bool ok = nodal ? (v == "U" || v == "RF" || v == "V" || v == "A" || v == "NT")
                           : (v == "S" || v == "E" || v == "PEEQ" || v == "PE");
     if (!ok)
       throw InputError(r.where, fmt::format("{}: variable '{}' cannot be printed (tether prints {})", keyword, v,
-                                            nodal ? "U, RF, V and A" : "S, E, PEEQ and PE"));
+                                            nodal ? "U, RF, V, A and NT" : "S, E, PEEQ and PE"));
   }
 }
 
@@ -449,6 +458,8 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
       else if (v == "A")
         write_nodal(out, model_, sel, results.acceleration, "accelerations (ax,ay,az)", true, false,
                     results.total_time);
+      else if (v == "NT")
+        write_temperatures(out, model_, sel, results.temperature, results.total_time);
       else if (v == "S" || v == "E")
         write_points(out, model_, sel, results, v == "S");
       else if (v == "PEEQ" || v == "PE")

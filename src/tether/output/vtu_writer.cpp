@@ -303,6 +303,8 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (!r.reaction.empty()) write_vectors3(sink, enc, kIndent, "RF", r.reaction);
   if (!r.velocity.empty()) write_vectors3(sink, enc, kIndent, "V", r.velocity);
   if (!r.acceleration.empty()) write_vectors3(sink, enc, kIndent, "A", r.acceleration);
+  if (!r.temperature.empty())
+    write_data_array<double>(sink, enc, kIndent, "NT", 1, n_nodes, indexed([&](std::size_t i) { return r.temperature[i]; }));
   if (!r.nodal_stress.empty()) {
     write_tensors6(sink, enc, kIndent, "S", r.nodal_stress);
     write_data_array<double>(sink, enc, kIndent, "S_Mises", 1, n_nodes,
