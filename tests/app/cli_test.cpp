@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -604,4 +605,38 @@ TEST(Cli, NoReuseAssemblesAndFactorizesEveryIterationWithTheSameResults) {
   EXPECT_NE(held_log.find("linear bulk's tangent held in"), std::string::npos) << held_log;
   EXPECT_NE(fresh_log.find("(2 factorizations)"), std::string::npos) << fresh_log;
   EXPECT_EQ(fresh_log.find("held"), std::string::npos) << fresh_log;
+}
+
+// Bolt pretension through `tether run`: every writer, and the bolt force and
+// tightening read back from the .dat (tests/analysis/pretension_test.cpp
+// holds the closed form: preload 10, then 10 + 0.6 x 4 with the length held).
+TEST(Cli, PretensionDeckRunsWithAllWritersAndTheDatGivesTheBoltForce) {
+  const fs::path dir = scratch("pretension");
+  const fs::path deck = fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/bolt_joint.inp";
+  const auto run = tether("run --ascii " + deck.string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(run.code, 0) << run.out;
+  for (const char* f : {"bolt_joint.pvd", "bolt_joint.dat", "bolt_joint.sta", "bolt_joint.msg", "bolt_joint_1_1.vtu",
+                        "bolt_joint_2_1.vtu"})
+    EXPECT_TRUE(fs::exists(dir / "out" / f)) << f;
+  const std::string dat = slurp(dir / "out" / "bolt_joint.dat");
+  const std::string title = " pretension section (node,tightening,bolt force) for set PRETENSION-CUT and time ";
+  std::vector<std::array<double, 3>> rows;  // time, tightening, force
+  for (std::size_t at = dat.find(title); at != std::string::npos; at = dat.find(title, at + 1)) {
+    double time = 0, tightening = 0, force = 0;
+    int node = 0;
+    const std::string block = dat.substr(at + title.size());
+    ASSERT_EQ(std::sscanf(block.c_str(), "%lf %d %lf %lf", &time, &node, &tightening, &force), 4) << block;
+    EXPECT_EQ(node, 100);
+    rows.push_back({time, tightening, force});
+  }
+  ASSERT_EQ(rows.size(), 2u) << dat;
+  EXPECT_DOUBLE_EQ(rows[0][0], 1.0);
+  EXPECT_NEAR(rows[0][1], 10. / 1500 + 10. / 1000, 1e-6 * 0.0166667);  // the .dat keeps 7 digits
+  EXPECT_NEAR(rows[0][2], 10., 1e-6 * 10);
+  EXPECT_DOUBLE_EQ(rows[1][0], 2.0);
+  EXPECT_NEAR(rows[1][1], rows[0][1], 1e-6 * 0.0166667);
+  EXPECT_NEAR(rows[1][2], 12.4, 1e-6 * 12.4);
+  // The cut shows in the VTU: 15 mesh nodes, the pretension node and the two duplicates.
+  const std::string vtu = slurp(dir / "out" / "bolt_joint_2_1.vtu");
+  EXPECT_NE(vtu.find("NumberOfPoints=\"18\""), std::string::npos) << vtu.substr(0, 400);
 }

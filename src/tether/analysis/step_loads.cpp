@@ -25,7 +25,8 @@ StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::Vec
   std::map<int, RampedValue> prescribed;
   for (const Prescribed& p : step.boundary) {
     const int dof = global_dof(dofs, p.node, p.dof, p.where);
-    prescribed[dof] = RampedValue{u[dof], p.value, p.amplitude};
+    // *BOUNDARY, FIXED: held at the value the step starts from.
+    prescribed[dof] = p.fixed ? RampedValue{u[dof], u[dof], -1} : RampedValue{u[dof], p.value, p.amplitude};
   }
   loads.prescribed.assign(prescribed.begin(), prescribed.end());
 

@@ -21,6 +21,7 @@
 #include "tether/model/contact_data.hpp"
 #include "tether/model/element_type.hpp"
 #include "tether/model/part_instance.hpp"
+#include "tether/model/pretension_section.hpp"
 
 namespace tether {
 
@@ -136,6 +137,9 @@ struct Prescribed {
   double value = 0;           ///< [length] ([rad] for a rotation)
   int amplitude = -1;         ///< index into Model::amplitudes or -1
   SourceLocation where;
+  /// `*BOUNDARY, FIXED`: held at its value at the start of the step (`value`
+  /// and `amplitude` unused).
+  bool fixed = false;
 };
 
 /// `*CLOAD` line: concentrated force on one node component.
@@ -270,6 +274,8 @@ struct Model {
   std::vector<ConstraintData> constraints;  ///< *EQUATION, *MPC, *CONSTRAINT (model data)
   std::vector<SurfaceInteraction> interactions;  ///< *SURFACE INTERACTION
   std::vector<ContactPairData> contact_pairs;    ///< *CONTACT PAIR
+  /// `*PRE-TENSION SECTION`s; their equations are in `constraints` (Kind::Linear).
+  std::vector<PretensionSection> pretension_sections;
 
   std::vector<Step> steps;
   /// `*INITIAL CONDITIONS, TYPE=VELOCITY`: (node index, component 0/1, value [length/time]).
