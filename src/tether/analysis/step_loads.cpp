@@ -11,7 +11,7 @@ int global_dof(const DofMap& dofs, int node, int dof, const SourceLocation& wher
   if (dof < kDofsPerNode) return dofs.displacement(node, dof);
   const int rotation = dofs.rotation(node);
   if (rotation < 0)
-    throw ModelError(where.str() + ": node " + std::to_string(dofs.label(node)) +
+    throw ModelError(where.str() + ": node " + dofs.node_name(node) +
                      " has no rotation (dof 6): only the reference node of an *MPC BEAM has one");
   return rotation;
 }

@@ -80,7 +80,10 @@ std::vector<std::pair<int, int>> cut_mesh_along(Model& model, const std::vector<
       if (local >= 0) originals.push_back(e.nodes[static_cast<std::size_t>(local)]);
   }
   std::map<int, int> duplicate;  // original -> duplicate
+  // Above every node label and every instance's label range, so that a
+  // duplicate never reads as a node of an instance.
   int label = model.node_ids.empty() ? 0 : *std::max_element(model.node_ids.begin(), model.node_ids.end());
+  for (const PartInstance& i : model.instances) label = std::max(label, i.last);
   std::vector<std::pair<int, int>> pairs;
   for (int a : originals)
     if (!duplicate.count(a)) {

@@ -24,7 +24,8 @@ Eigen::Vector2d mean_outward_normal(const Model& model, const std::vector<Elemen
 /// Cuts `model` along `faces` (the faces of the elements on one side of the
 /// cut, all with outward normals along `normal`, a unit vector):
 /// - every node of the faces gets a duplicate at the same place, labelled
-///   above the largest node label (appended to the model's nodes);
+///   above the largest node label and every instance's label range
+///   (appended to the model's nodes);
 /// - the faces' elements, and every other element using a node of the faces
 ///   whose centroid lies behind it (on the faces' side, (x_c - x_node)·n < 0),
 ///   use the duplicate from then on;
