@@ -1,11 +1,13 @@
 // Bolt pretension (*PRE-TENSION SECTION) against the joint diagram: two
 // plates clamped by a bolt between a fixed base and a rigid head, every strip
-// a 1D bar (plane strain, nu = 0, u_x = 0), so the finite-element answer is
-// exact. k_joint = E_p w_p / L = 1000 * 2 / 2, k_bolt = E_b w_b / L = 3000 * 1 / 2.
+// a 1D bar (nu = 0, u_x = 0), so the finite-element answer is exact.
+// Plane strain: k_joint = E_p w_p / L = 1000 * 2 / 2, k_bolt = E_b w_b / L = 3000 * 1 / 2.
+// Axisymmetric: k_joint = 1000 pi (3^2 - 1^2) / 2, k_bolt = 3000 pi 0.5^2 / 2.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <iterator>
 #include <string>
 
@@ -16,12 +18,16 @@ using namespace tether;
 
 namespace {
 
-constexpr double kJoint = 1000, kBolt = 1500;  // [force/length]
 constexpr double kPreload = 10, kSeparating = 4;  // [force]
 constexpr double kRelative = 1e-10;
 
-std::string deck_text() {
-  std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/tests/analysis/decks/bolt_joint.inp");
+/// The joint's stiffnesses [force/length].
+struct Joint {
+  double joint = 1000, bolt = 1500;
+};
+
+std::string deck_text(const std::string& name = "bolt_joint.inp") {
+  std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/tests/analysis/decks/" + name);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
@@ -39,7 +45,8 @@ double reaction_y(const tether::testing::Run& run, const IncrementResults& r, co
 }
 
 /// Checks both steps of the joint: the preload exactly, then the stiffness-ratio share of the separating load.
-void expect_joint_diagram(const tether::testing::Run& run) {
+void expect_joint_diagram(const tether::testing::Run& run, const Joint& k = {}) {
+  const double k_joint = k.joint, k_bolt = k.bolt;
   ASSERT_EQ(run.recorder.results.size(), 2u);
   const PretensionSection& section = run.model.pretension_sections.at(0);
   const IncrementResults& preload = run.recorder.results[0];
@@ -47,19 +54,19 @@ void expect_joint_diagram(const tether::testing::Run& run) {
 
   const BoltState s1 = bolt_state(section, preload);
   EXPECT_NEAR(s1.force, kPreload, kRelative * kPreload);
-  const double tightening = kPreload / kBolt + kPreload / kJoint;  // the bolt stretches, the plates shorten
+  const double tightening = kPreload / k_bolt + kPreload / k_joint;  // the bolt stretches, the plates shorten
   EXPECT_NEAR(s1.tightening, tightening, kRelative * tightening);
   EXPECT_NEAR(reaction_y(run, preload, "PLATE_BOTTOM"), kPreload, kRelative * kPreload);
   EXPECT_NEAR(reaction_y(run, preload, "BOLT_BOTTOM"), -kPreload, kRelative * kPreload);
 
-  const double share = kBolt / (kBolt + kJoint);  // 0.6
+  const double share = k_bolt / (k_bolt + k_joint);  // 0.6 in plane strain
   const double bolt = kPreload + share * kSeparating, joint = kPreload - (1 - share) * kSeparating;
   const BoltState s2 = bolt_state(section, loaded);
   EXPECT_NEAR(s2.force, bolt, kRelative * bolt);
   EXPECT_NEAR(s2.tightening, tightening, kRelative * tightening);  // held by *BOUNDARY, FIXED
   EXPECT_NEAR(reaction_y(run, loaded, "PLATE_BOTTOM"), joint, kRelative * bolt);
   EXPECT_NEAR(reaction_y(run, loaded, "BOLT_BOTTOM"), -bolt, kRelative * bolt);
-  const double head = kSeparating / (kBolt + kJoint);
+  const double head = kSeparating / (k_bolt + k_joint);
   EXPECT_NEAR(loaded.displacement[static_cast<std::size_t>(run.node(9))].y() -
                   preload.displacement[static_cast<std::size_t>(run.node(9))].y(),
               head, kRelative * head);
@@ -67,6 +74,12 @@ void expect_joint_diagram(const tether::testing::Run& run) {
 
 TEST(Pretension, BoltForceIsThePreloadThenGrowsByTheBoltsShareOfTheSeparatingLoad) {
   expect_joint_diagram(tether::testing::run_deck_text(deck_text()));
+}
+
+TEST(Pretension, AxisymmetricBoltCarriesTheSameDiagramWithRingAreas) {
+  constexpr double pi = std::numbers::pi;
+  expect_joint_diagram(tether::testing::run_deck_text(deck_text("bolt_joint_cax.inp")),
+                       {1000 * pi * (9 - 1) / 2, 3000 * pi * 0.25 / 2});
 }
 
 // A bolt of triangles: the near-side triangle 13 touches the cut at one corner
