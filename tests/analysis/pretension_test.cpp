@@ -82,6 +82,25 @@ TEST(Pretension, AxisymmetricBoltCarriesTheSameDiagramWithRingAreas) {
                        {1000 * pi * (9 - 1) / 2, 3000 * pi * 0.25 / 2});
 }
 
+// The plates as two bodies pressed together by the bolt (HARD contact at
+// y = 1, exact): while the joint stays closed they act as the bonded stack.
+TEST(Pretension, PlatesInContactAreClampedLikeTheBondedStack) {
+  std::string deck = replaced(deck_text(), "26, 4., 2.\n", "26, 4., 2.\n14, 0., 1.\n15, 1., 1.\n16, 2., 1.\n");
+  deck = replaced(deck, "3, 4, 5, 8, 7\n4, 5, 6, 9, 8\n", "3, 14, 15, 8, 7\n4, 15, 16, 9, 8\n");
+  deck = replaced(deck, "*MATERIAL, NAME=PLATE_STEEL",
+                  "*SURFACE, NAME=UPPER_BOTTOM\n3, S1\n4, S1\n*SURFACE, NAME=LOWER_TOP\n1, S3\n2, S3\n"
+                  "*SURFACE INTERACTION, NAME=FACES\n*CONTACT PAIR, INTERACTION=FACES\nUPPER_BOTTOM, LOWER_TOP\n"
+                  "*MATERIAL, NAME=PLATE_STEEL");
+  const tether::testing::Run run = tether::testing::run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  ASSERT_EQ(run.model.contact_pairs.size(), 1u);
+  expect_joint_diagram(run);
+  const auto& contact = run.recorder.results[1].contact.at(0).nodes;
+  double pressed = 0;
+  for (const auto& n : contact) pressed += n.normal_force;
+  EXPECT_NEAR(pressed, kPreload - (1 - 0.6) * kSeparating, 1e-9);  // the plates' share of the clamp, 8.4
+}
+
 // A bolt of triangles: the near-side triangle 13 touches the cut at one corner
 // only (node 24); it must take the duplicate node too, or it would keep the
 // halves welded there and carry part of the preload past the cut.
