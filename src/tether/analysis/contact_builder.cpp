@@ -98,10 +98,11 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
   for (const auto& f : setup.master_faces) master_nodes.insert(f.begin(), f.end());
   for (const auto& [node, a] : area) {
     if (master_nodes.count(node))
-      throw ModelError("node " + std::to_string(model.node_ids[static_cast<std::size_t>(node)]) +
+      throw ModelError("node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(node)]) +
                        " belongs to both the slave surface " + data.slave + " and the master surface " + data.master +
                        where + ": contact is between distinct surfaces; split the node or the surfaces");
     setup.slave_nodes.push_back(node);
+    setup.slave_names.push_back(label_text(model.instances, model.node_ids[static_cast<std::size_t>(node)]));
     setup.slave_area.push_back(a);
   }
   setup.search_radius = 2 * longest + data.adjust;

@@ -25,17 +25,18 @@ PressureOverclosure::Law interaction_law(const Model& model, const ContactPairDa
 
 }  // namespace
 
-Discretization::Discretization(const Model& model) : model_(model), dofs_(model.node_ids) {
+Discretization::Discretization(const Model& model) : model_(model), dofs_(model.node_ids, model.instances) {
   materials_.reserve(model.materials.size());
   for (const auto& m : model.materials) materials_.push_back(make_constitutive_model(m));
 
   elements_.reserve(model.elements.size());
   for (const auto& e : model.elements) {
-    if (e.section < 0) throw ModelError("element " + std::to_string(e.id) + " has no section");
+    if (e.section < 0) throw ModelError("element " + label_text(model.instances, e.id) + " has no section");
     const SolidSection& section = model.sections[e.section];
     elements_.push_back(std::make_unique<ContinuumElement>(e.id, e.type, e.nodes, coordinates_of(model, e.nodes),
                                                            *materials_[section.material], section.thickness, dofs_,
                                                            &model.materials[section.material]));
+    elements_.back()->set_name(label_text(model.instances, e.id));
   }
   if (model.has_temperatures()) {
     temperatures_ = std::make_unique<StepTemperatures>(model);

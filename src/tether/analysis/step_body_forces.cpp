@@ -58,7 +58,7 @@ StepBodyForces::StepBodyForces(const Discretization& discretization, int step_in
     const MaterialData& material =
         model_.materials[static_cast<std::size_t>(model_.sections[static_cast<std::size_t>(e.section)].material)];
     if (!material.density)
-      throw ModelError(l.load.where.str() + ": element " + std::to_string(e.id) + " is made of material " +
+      throw ModelError(l.load.where.str() + ": element " + label_text(model_.instances, e.id) + " is made of material " +
                        material.name + ", which has no *DENSITY: a body load needs the density");
     std::vector<Eigen::Vector2d> x;
     for (int n : e.nodes) x.push_back(model_.coords[static_cast<std::size_t>(n)]);

@@ -12,7 +12,7 @@ int global_dof(const DofMap& dofs, int node, int dof, const SourceLocation& wher
   if (dof < kDofsPerNode) return dofs.displacement(node, dof);
   const int rotation = dofs.rotation(node);
   if (rotation < 0)
-    throw ModelError(where.str() + ": node " + std::to_string(dofs.label(node)) +
+    throw ModelError(where.str() + ": node " + dofs.node_name(node) +
                      " has no rotation (dof 6): only the reference node of an *MPC BEAM has one");
   return rotation;
 }
@@ -36,7 +36,9 @@ StepLoads make_step_loads(const Step& step, const DofMap& dofs, const Eigen::Vec
   std::map<int, RampedValue> prescribed;
   for (const Prescribed& p : step.boundary) {
     const int dof = global_dof(dofs, p.node, p.dof, p.where);
-    if (p.velocity)  // applied at once and held without an amplitude (ABAQUS's STEP), in every kind of step
+    if (p.fixed)  // *BOUNDARY, FIXED: held at the value the step starts from
+      prescribed[dof] = RampedValue{u[dof], u[dof], -1};
+    else if (p.velocity)  // applied at once and held without an amplitude (ABAQUS's STEP), in every kind of step
       prescribed[dof] = RampedValue{p.value, p.value, p.amplitude, true, u[dof]};
     else
       prescribed[dof] = RampedValue{u[dof], p.value, p.amplitude};

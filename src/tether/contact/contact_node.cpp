@@ -162,7 +162,10 @@ struct ContactNode::Point {
 std::span<const int> ContactNode::dofs() const { return pair_.slave(slave_).dofs; }
 
 std::string ContactNode::describe() const {
-  return pair_.describe() + ", slave node " + std::to_string(pair_.slave(slave_).node);
+  const auto& names = pair_.setup().slave_names;
+  const auto k = static_cast<std::size_t>(slave_);
+  return pair_.describe() + ", slave node " +
+         (k < names.size() ? names[k] : "index " + std::to_string(pair_.slave(slave_).node));
 }
 
 bool ContactNode::symmetric_tangent(bool /*nlgeom*/) const { return pair_.mu() <= 0; }

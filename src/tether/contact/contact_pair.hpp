@@ -36,6 +36,9 @@ struct ContactPairSetup {
   /// (element id, face number 1..4) of each master segment, for output.
   std::vector<std::pair<int, int>> master_face_labels;
   std::vector<int> slave_nodes;    ///< node indices
+  /// The user's name of each slave node (label_text(): `UPPER-1.3`, `17`),
+  /// parallel to slave_nodes, for messages; empty: messages give the index.
+  std::vector<std::string> slave_names;
   /// Tributary area of each slave node [length × thickness] (1 per node for a
   /// node-based slave surface, as in ABAQUS); pressure = normal force / area.
   std::vector<double> slave_area;

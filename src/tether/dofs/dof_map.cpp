@@ -4,7 +4,8 @@
 
 namespace tether {
 
-DofMap::DofMap(std::vector<int> node_labels) : node_labels_(std::move(node_labels)) {}
+DofMap::DofMap(std::vector<int> node_labels, std::vector<PartInstance> instances)
+    : node_labels_(std::move(node_labels)), instances_(std::move(instances)) {}
 
 int DofMap::add_multipliers(int count, std::string owner) {
   if (count < 0) throw std::invalid_argument("DofMap::add_multipliers: negative count");
@@ -46,7 +47,7 @@ std::string DofMap::describe(int dof) const {
   if (dof < 0 || dof >= n_dofs()) return "unknown " + std::to_string(dof);
   if (!is_multiplier(dof)) {
     const int component = component_of(dof);
-    return "node " + std::to_string(label(node_of(dof))) + " dof " + std::to_string(component + 1) +
+    return "node " + node_name(node_of(dof)) + " dof " + std::to_string(component + 1) +
            (component == kRotationComponent ? " (rotation)" : "");
   }
   for (const auto& b : blocks_)

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "tether/model/part_instance.hpp"
+
 namespace tether {
 
 /// Dimension of the displacement field per node (2D solids).
@@ -26,8 +28,9 @@ inline constexpr int kRotationComponent = 5;
 
 class DofMap {
  public:
-  /// `node_labels[i]` is the user id of node i, used in describe().
-  explicit DofMap(std::vector<int> node_labels);
+  /// `node_labels[i]` is the user id of node i, used in describe();
+  /// `instances` (an ABAQUS/CAE deck's) name it `INSTANCE.label` there.
+  explicit DofMap(std::vector<int> node_labels, std::vector<PartInstance> instances = {});
 
   /// Global index of displacement component `component` (0: x, 1: y) of node
   /// index `node`. The displacement block comes first and has this layout in
@@ -49,6 +52,8 @@ class DofMap {
   [[nodiscard]] int n_nodes() const { return static_cast<int>(node_labels_.size()); }
   /// User label of node index `node`.
   [[nodiscard]] int label(int node) const { return node_labels_[static_cast<std::size_t>(node)]; }
+  /// Node index `node` as the user knows it (label_text(): `UPPER-1.3` or `17`).
+  [[nodiscard]] std::string node_name(int node) const { return label_text(instances_, label(node)); }
   [[nodiscard]] int n_displacement_dofs() const { return kDofsPerNode * n_nodes(); }
   [[nodiscard]] int n_multipliers() const { return n_multiplier_total_; }
   [[nodiscard]] int n_dofs() const { return n_displacement_dofs() + static_cast<int>(extra_node_.size()); }
@@ -91,6 +96,7 @@ class DofMap {
     std::string owner;
   };
   std::vector<int> node_labels_;
+  std::vector<PartInstance> instances_;
   std::vector<Block> blocks_;
   /// Per unknown after the displacements: the node index of a rotation, -1 for a multiplier.
   std::vector<int> extra_node_;

@@ -108,7 +108,8 @@ double ContinuumElement::point_geometry(int q, PointGeometry& g) const {
 }
 
 std::string ContinuumElement::describe() const {
-  return fmt::format("element {} ({})", label_, type_.name);
+  return name_.empty() ? fmt::format("element {} ({})", label_, type_.name)
+                       : fmt::format("element {} ({})", name_, type_.name);
 }
 
 void ContinuumElement::gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const {

@@ -94,6 +94,9 @@ class ContinuumElement final : public Contribution {
   void set_temperatures(const NodalTemperatureField* field) { temperatures_ = field; }
 
   [[nodiscard]] int label() const { return label_; }
+  /// The name describe() gives the element (default: its label); the
+  /// analysis sets `INSTANCE.label` for an element of an ABAQUS/CAE instance.
+  void set_name(std::string name) { name_ = std::move(name); }
   [[nodiscard]] const ElementType& type() const { return type_; }
   [[nodiscard]] int n_points() const { return n_points_; }
   [[nodiscard]] const std::vector<int>& nodes() const { return nodes_; }
@@ -163,6 +166,7 @@ class ContinuumElement final : public Contribution {
                        kRecordState = 14;
 
   int label_;
+  std::string name_;  ///< set_name(); empty: the label
   ElementType type_;
   int n_nodes_;
   std::vector<int> nodes_;

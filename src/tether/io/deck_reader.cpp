@@ -5,6 +5,7 @@
 
 #include "tether/io/assembly_flattening.hpp"
 #include "tether/io/deck_state.hpp"
+#include "tether/io/keyword_handlers.hpp"
 #include "tether/io/keyword_table.hpp"
 #include "tether/io/line_reader.hpp"
 #include "tether/io/model_checks.hpp"
@@ -134,6 +135,7 @@ Model read_blocks(const std::vector<KeywordBlock>& blocks, const std::string& de
     state.warn({deck_path, 0}, "the deck has no *STEP: nothing will be solved");
   deck::check_model(state);
   deck::apply_temperature_table_dialect(state);
+  deck::check_pretension_loads(state);
   deck::apply_contact_adjustments(state);
   deck::warn_about_stiff_slaves(state);
   return std::move(state.model);

@@ -81,7 +81,13 @@ TETHER_DECK_HANDLER(handle_contact_output);
 // tie_keywords.cpp
 TETHER_DECK_HANDLER(handle_tie);
 TETHER_DECK_HANDLER(handle_periodic);
+// pretension_keywords.cpp
+TETHER_DECK_HANDLER(handle_pre_tension_section);
 
 #undef TETHER_DECK_HANDLER
+
+/// After the whole deck: no step prescribes or loads a pretension node's dof
+/// other than 1 (InputError at that line). In pretension_keywords.cpp.
+void check_pretension_loads(const DeckState& state);
 
 }  // namespace tether::deck

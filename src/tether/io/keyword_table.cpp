@@ -219,7 +219,9 @@ std::vector<KeywordSpec> build_table() {
                "DISPLACEMENT: the values are displacements. VELOCITY (in a step; ABAQUS): the values are "
                "velocities [length/time], applied at once and held (or times the AMPLITUDE), and the dof moves by "
                "their time integral from where the step found it; a later step keeps the velocity until the dof "
-               "is given again.")},
+               "is given again."),
+        flag("FIXED", "In a step: hold the listed dofs at their values at the start of the step (no value on the "
+                      "data line); e.g. a bolt's pretension node after its *CLOAD step, to keep the bolt's length.")},
        handle_boundary, ""},
       {"CLOAD", kAnyStep, "Concentrated nodal forces.", "`node_or_nset, dof (1 or 2), magnitude`",
        {amplitude_param(), op_param()}, handle_cload, ""},
@@ -401,6 +403,20 @@ std::vector<KeywordSpec> build_table() {
                                 "Largest distance between X_a + translation and the partner of a (0: 1e-6 times "
                                 "the translation length).")}),
        handle_periodic, ""},
+      {"PRE-TENSION SECTION", kModelData,
+       "Bolt pretension: the surface cuts a continuum bolt in two; tether duplicates the surface's nodes (the "
+       "surface's elements take the copies) and joins each pair again by (u_b - u_a).t = 0 and (u_b - u_a).n = "
+       "u_p, where u_p, dof 1 of the pretension node, is the tightening (positive shortens the bolt). *CLOAD on "
+       "that dof sets the bolt force (positive: tension); *BOUNDARY on it prescribes the tightening, and "
+       "*BOUNDARY, FIXED in a later step holds the bolt's length. The .dat lists each section's tightening and "
+       "bolt force at every written increment. The equations are enforced by multipliers.",
+       "optional: the section's normal `nx, ny[, nz]` (nz = 0), pointing from the surface's elements across the "
+       "cut; default: the length-weighted mean outward normal of the surface's faces",
+       {name("SURFACE", "Element-face surface: the faces of the bolt elements on one side of the cut."),
+        name("NODE", "Pretension node (label or one-node set): a node no element uses; only its dof 1 is active.",
+             true),
+        name("ELEMENT", "Truss or beam bolt element (ABAQUS); refused: tether has 2D continuum elements only.")},
+       handle_pre_tension_section, ""},
       // --- model data: contact ---
       {"SURFACE INTERACTION", kModelData, "Starts a contact property; *SURFACE BEHAVIOR and *FRICTION follow it.", "",
        {name("NAME", "Name of the interaction.", true)}, handle_surface_interaction, ""},

@@ -197,11 +197,21 @@ void handle_boundary(DeckState& state, const KeywordBlock& block, const Paramete
   if (velocity && !state.in_step)
     throw InputError(block.where, "*BOUNDARY, TYPE=VELOCITY is history data: expected it inside a step "
                                   "(*STEP ... *END STEP)");
+  const bool fixed = params.given("FIXED");
+  if (fixed && !state.in_step)
+    throw InputError(block.where, "*BOUNDARY, FIXED in model data: FIXED holds dofs at their values at the start "
+                                  "of a step, so it belongs inside a *STEP");
+  if (fixed && params.given("AMPLITUDE"))
+    throw InputError(block.where, "*BOUNDARY, FIXED with AMPLITUDE=: a fixed dof keeps its value, there is nothing "
+                                  "to scale; remove one of the two");
   std::vector<Prescribed> added;
   bool warned = false;
   for (const DataLine& line : block.data) {
     const SourceLocation at = line.where();
     const auto f = data_fields(line, 2, 4, "`node_or_nset, first_dof[, last_dof[, value]]` or `node_or_nset, TYPE`");
+    if (fixed && f.size() > 3 && !f[3].empty())
+      throw InputError(at, "*BOUNDARY, FIXED takes no value (the dof keeps its value at the start of the step): "
+                           "expected `node_or_nset, first_dof[, last_dof]`");
     std::vector<int> dofs;
     double value = 0;
     if (!is_integer_token(f[1])) {
@@ -219,7 +229,7 @@ void handle_boundary(DeckState& state, const KeywordBlock& block, const Paramete
       dofs = boundary_range_dofs(state, f, value, at, warned);
     }
     for (int n : state.nodes_of(f[0], at))
-      for (int d : dofs) added.push_back({n, d, value, amplitude, at, velocity});
+      for (int d : dofs) added.push_back({n, d, value, amplitude, at, velocity, fixed});
   }
   merge(state, state.boundary, std::move(added), block, params,
         [](const Prescribed& p) { return node_dof_key(p.node, p.dof); });

@@ -22,6 +22,7 @@
 #include "tether/model/element_type.hpp"
 #include "tether/model/part_instance.hpp"
 #include "tether/model/temperature_data.hpp"
+#include "tether/model/pretension_section.hpp"
 
 namespace tether {
 
@@ -154,6 +155,9 @@ struct Prescribed {
   /// *BOUNDARY, TYPE=VELOCITY: `value` (times the amplitude) is the dof's
   /// velocity; its displacement is the time integral from the step's start.
   bool velocity = false;
+  /// `*BOUNDARY, FIXED`: held at its value at the start of the step (`value`
+  /// and `amplitude` unused).
+  bool fixed = false;
 };
 
 /// `*CLOAD` line: concentrated force on one node component.
@@ -295,6 +299,8 @@ struct Model {
   std::vector<ConstraintData> constraints;  ///< *EQUATION, *MPC, *CONSTRAINT (model data)
   std::vector<SurfaceInteraction> interactions;  ///< *SURFACE INTERACTION
   std::vector<ContactPairData> contact_pairs;    ///< *CONTACT PAIR
+  /// `*PRE-TENSION SECTION`s; their equations are in `constraints` (Kind::Linear).
+  std::vector<PretensionSection> pretension_sections;
 
   std::vector<Step> steps;
   /// `*INITIAL CONDITIONS, TYPE=VELOCITY`: (node index, component 0/1, value [length/time]).

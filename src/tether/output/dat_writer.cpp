@@ -1,4 +1,5 @@
 #include "tether/output/dat_writer.hpp"
+#include "tether/output/pretension_report.hpp"
 
 #include <fmt/format.h>
 
@@ -468,6 +469,7 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
   }
   if (contact_due) write_contact_state_blocks(text, model_, results.contact, results.total_time);
   write_multiplier_blocks(text, results.multipliers, results.total_time);
+  write_pretension_blocks(text, model_, results);
   if (results.energy && (any_due || last_in_step)) write_energy_block(text, *results.energy, results.total_time);
   out_ << text;
   out_.flush();

@@ -230,6 +230,32 @@ void write_contact_point_data(Sink& sink, VtuEncoding enc, std::string_view inde
                            tuples(3, [&](std::size_t i, double* t) { put_vector(t, force(i)); }));
 }
 
+/// 1-based position in `instances` of the instance that holds internal
+/// label `label`, 0 for a label of no instance.
+std::int64_t instance_number(const std::vector<PartInstance>& instances, int label) {
+  const PartInstance* i = instance_of(instances, label);
+  return i ? static_cast<std::int64_t>(i - instances.data()) + 1 : 0;
+}
+
+/// The label the user wrote in the part: the internal one less its instance's offset.
+std::int64_t part_label(const std::vector<PartInstance>& instances, int label) {
+  const PartInstance* i = instance_of(instances, label);
+  return i ? label - i->offset : label;
+}
+
+/// FieldData `INSTANCE_NAMES`: a VTK string array (ascii: each name as its
+/// character codes and a 0), entry k - 1 names instance number k.
+void write_instance_names(std::string& buffer, const std::vector<PartInstance>& instances) {
+  const auto out = std::back_inserter(buffer);
+  fmt::format_to(out, "      <DataArray type=\"String\" Name=\"INSTANCE_NAMES\" NumberOfTuples=\"{}\" format=\"ascii\">",
+                 instances.size());
+  for (const PartInstance& i : instances) {
+    for (const char c : i.name) fmt::format_to(out, "{} ", static_cast<int>(static_cast<unsigned char>(c)));
+    fmt::format_to(out, "0 ");
+  }
+  buffer += "</DataArray>\n";
+}
+
 }  // namespace
 
 VtuWriter::VtuWriter(const Model& model, VtuEncoding encoding) : model_(model), encoding_(encoding) {
@@ -289,6 +315,7 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (r.plastic_dissipation)
     fmt::format_to(out_it, "      <DataArray type=\"Float64\" Name=\"ALLPD\" NumberOfTuples=\"1\" format=\"ascii\">{}</DataArray>\n",
                    *r.plastic_dissipation);
+  if (!model.instances.empty()) write_instance_names(sink.buffer(), model.instances);
   fmt::format_to(std::back_inserter(sink.buffer()),
                  "    </FieldData>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n"
@@ -299,6 +326,14 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   write_data_array<std::int64_t>(sink, enc, kIndent, "NodeId", 1, n_nodes, indexed([&](std::size_t i) {
     return i < model.node_ids.size() ? static_cast<std::int64_t>(model.node_ids[i]) : static_cast<std::int64_t>(i + 1);
   }));
+  if (!model.instances.empty()) {  // an ABAQUS/CAE deck: the instance and the part's label of each node
+    write_data_array<std::int64_t>(sink, enc, kIndent, "INSTANCE", 1, n_nodes, indexed([&](std::size_t i) {
+      return instance_number(model.instances, model.node_ids[i]);
+    }));
+    write_data_array<std::int64_t>(sink, enc, kIndent, "PART_NODE_ID", 1, n_nodes, indexed([&](std::size_t i) {
+      return part_label(model.instances, model.node_ids[i]);
+    }));
+  }
   write_vectors3(sink, enc, kIndent, "U", r.displacement);
   if (!r.reaction.empty()) write_vectors3(sink, enc, kIndent, "RF", r.reaction);
   if (!r.velocity.empty()) write_vectors3(sink, enc, kIndent, "V", r.velocity);
@@ -370,6 +405,16 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   write_data_array<std::int64_t>(sink, enc, kIndent, "ElementId", 1, n_cells, indexed([&](std::size_t c) {
     return c < n_elements ? static_cast<std::int64_t>(model.elements[c].id) : std::int64_t{0};
   }));
+  if (!model.instances.empty()) {  // vertex cells: their node's instance, element label 0
+    write_data_array<std::int64_t>(sink, enc, kIndent, "INSTANCE", 1, n_cells, indexed([&](std::size_t c) {
+      return instance_number(model.instances,
+                             c < n_elements ? model.elements[c].id
+                                            : model.node_ids[static_cast<std::size_t>(lonely_nodes_[c - n_elements])]);
+    }));
+    write_data_array<std::int64_t>(sink, enc, kIndent, "PART_ELEMENT_ID", 1, n_cells, indexed([&](std::size_t c) {
+      return c < n_elements ? part_label(model.instances, model.elements[c].id) : std::int64_t{0};
+    }));
+  }
   if (!r.points.empty() || !r.element_stress.empty()) {
     // Arithmetic mean of the integration-point stresses (zero for vertex cells).
     const auto cell_stress = [&](std::size_t c) {

@@ -38,6 +38,13 @@ std::uint8_t vtk_cell_type(Shape shape);
 ///   and the `CONTACT_*` arrays when it has contact pairs (see below);
 /// - CellData `ElementId` (element labels), `S` and `S_Mises`: the arithmetic
 ///   mean of the integration-point stresses and its von Mises value.
+/// - for an ABAQUS/CAE deck (Model::instances not empty): FieldData
+///   `INSTANCE_NAMES` (a string array, the instances in deck order), PointData
+///   and CellData `INSTANCE` (1-based number into INSTANCE_NAMES, 0 for a
+///   node or element of no instance) and `PART_NODE_ID` / `PART_ELEMENT_ID`
+///   (the label in the part, as the user wrote it; NodeId / ElementId keep
+///   tether's internal labels, unique over the model). Threshold on INSTANCE
+///   to show one instance; `Upper-1.7` is INSTANCE 2 with PART_NODE_ID 7.
 /// - after the elements, one VTK_VERTEX cell per node that no element uses
 ///   (nodes held only by constraints, e.g. the ends of a rigid link), with
 ///   ElementId 0 and zero cell stress, so such nodes are drawn and a model
