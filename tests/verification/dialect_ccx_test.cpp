@@ -13,6 +13,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "analysis/run_deck.hpp"
 
@@ -22,10 +26,10 @@ namespace {
 
 constexpr double kCcxSlaveUy = -8.461832e-3;
 
-tether::testing::Run run_in(Dialect dialect) {
+tether::testing::Run run_in(Dialect dialect,
+                            const std::string& deck = "/tests/smoke/decks/contact_exponential.inp") {
   tether::testing::Run run;
-  run.model = read_deck(std::string(TETHER_SOURCE_DIR) + "/tests/smoke/decks/contact_exponential.inp", nullptr,
-                        dialect);
+  run.model = read_deck(std::string(TETHER_SOURCE_DIR) + deck, nullptr, dialect);
   StaticAnalysis analysis(run.model, run.recorder, {});
   run.summary = analysis.run();
   return run;
@@ -49,4 +53,33 @@ TEST(DialectAgainstCcx, ExponentialContactOpensAsInCalculix) {
     ASSERT_GT(n.pressure, 0);
     EXPECT_NEAR(n.gap, 0.001 * std::log(100 / n.pressure) / std::log(100.0), 1e-9);
   }
+}
+
+// CalculiX's LINEAR law `K, sigma_inf, c0` = 1000, 1, 0.001 on the same two
+// blocks with nu = 0 (tests/verification/dialect/contact_linear_calculix.inp).
+// Reference: ccx 2.20 on this deck, *NODE PRINT u_y of the slave nodes 1-4 at
+// t = 1: -2.118510E-02, -2.096578E-02, -2.096627E-02, -2.118652E-02. tether
+// in the calculix dialect: -2.118393E-02, -2.096451E-02, -2.096500E-02,
+// -2.118535E-02 (1.3e-6 apart, 6e-5 of the displacement). With nu = 0.3 the
+// two differ by 3.8e-5 (0.19 %): CalculiX takes each slave node's area on
+// the deformed face, stretched by the lateral strain (0.39 % here), tether on
+// the undeformed one. ABAQUS's p = K h (`1000.` alone, abaqus dialect) on the
+// nu = 0.3 deck: -1.908780E-02 at node 2, against ccx's -2.002369E-02.
+TEST(DialectAgainstCcx, LinearContactLawIsCalculixsSmoothLaw) {
+  const std::string deck = "/tests/verification/dialect/contact_linear_calculix.inp";
+  const auto calculix = run_in(Dialect::Calculix, deck);
+  ASSERT_TRUE(calculix.summary.completed) << calculix.summary.message;
+  const std::vector<std::pair<int, double>> ccx = {
+      {1, -2.118510e-2}, {2, -2.096578e-2}, {3, -2.096627e-2}, {4, -2.118652e-2}};
+  for (const auto& [node, uy] : ccx)
+    EXPECT_NEAR(calculix.last().displacement[static_cast<std::size_t>(calculix.node(node))].y(), uy, 2e-6) << node;
+  // Each slave node's pressure lies on p = K h (1/2 + atan(h/eps)/pi), eps = pi sigma_inf / K.
+  const auto& pair = calculix.last().contact.at(0);
+  ASSERT_FALSE(pair.nodes.empty());
+  for (const auto& n : pair.nodes) {
+    const double h = -n.gap, eps = std::numbers::pi * 1.0 / 1000;
+    EXPECT_NEAR(n.pressure, 1000 * h * (0.5 + std::atan(h / eps) / std::numbers::pi), 1e-9);
+  }
+  // In the abaqus dialect the same data line is refused (sigma_inf and c0 are not ABAQUS's).
+  EXPECT_THROW(run_in(Dialect::Abaqus, deck), InputError);
 }

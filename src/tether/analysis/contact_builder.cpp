@@ -34,6 +34,19 @@ std::vector<int> face_node_indices(const Model& model, const ElementFace& f) {
   return nodes;
 }
 
+/// CalculiX's defaults of its LINEAR law: K = 50 E, sigma_inf = E/70000, E
+/// of the deck's first material (CalculiX's elcon(1,1,1)).
+void resolve_calculix_linear(const Model& model, const SurfaceInteraction& interaction, PressureOverclosure& law) {
+  if (law.stiffness > 0 && law.sigma_inf > 0) return;
+  if (model.materials.empty() || !model.materials.front().elastic)
+    throw ModelError("PRESSURE-OVERCLOSURE=LINEAR (*SURFACE BEHAVIOR at " + interaction.where.str() +
+                     ") leaves K or sigma_inf to CalculiX's defaults (50 E, E/70000), which take E from the first "
+                     "material; the first material has no *ELASTIC: give 'K, sigma_inf'");
+  const double young = model.materials.front().elastic->young;
+  if (!(law.stiffness > 0)) law.stiffness = 50 * young;
+  if (!(law.sigma_inf > 0)) law.sigma_inf = young / 70000;
+}
+
 }  // namespace
 
 std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const ContactPairData& data,
@@ -52,9 +65,8 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
   setup.friction = interaction->friction;
   setup.small_sliding = data.small_sliding;
   setup.smoothing = data.smoothing;
-  if (setup.law.law == PressureOverclosure::Law::Linear && setup.law.sigma_inf > 0)
-    throw ModelError("PRESSURE-OVERCLOSURE=LINEAR with a tension sigma_inf > 0 (*SURFACE BEHAVIOR at " +
-                     interaction->where.str() + ") is CalculiX's law, which tether does not model; ABAQUS's LINEAR is 'K' alone");
+  if (setup.law.law == PressureOverclosure::Law::Linear && setup.law.meaning == Dialect::Calculix)
+    resolve_calculix_linear(model, *interaction, setup.law);
   if (setup.friction && setup.friction->mu > 0 && setup.friction->stick_slope > 0 && setup.friction->elastic_slip > 0)
     throw ModelError("*FRICTION of " + interaction->name + " gives both a stick slope and ELASTIC SLIP; give one");
 
