@@ -138,6 +138,9 @@ U
 S
 *NODE FILE
 U
+*OUTPUT, HISTORY, FREQUENCY=5
+*NODE OUTPUT, NSET=LEFT
+U
 *END STEP
 *STEP
 *STATIC
@@ -155,10 +158,10 @@ RF
     return f;
   };
   const Model abaqus = read(deck, Dialect::Abaqus);
-  EXPECT_EQ(frequencies(abaqus.steps[0]), (std::vector<int>{3, 1, 1}));
+  EXPECT_EQ(frequencies(abaqus.steps[0]), (std::vector<int>{3, 1, 1, 5}));
   EXPECT_EQ(frequencies(abaqus.steps[1]), (std::vector<int>{1, 2, 1}));
   const Model calculix = read(deck, Dialect::Calculix);
-  EXPECT_EQ(frequencies(calculix.steps[0]), (std::vector<int>{3, 3, 1}));  // *NODE FILE keeps its own
+  EXPECT_EQ(frequencies(calculix.steps[0]), (std::vector<int>{3, 3, 1, 5}));  // *NODE FILE, *OUTPUT keep theirs
   EXPECT_EQ(frequencies(calculix.steps[1]), (std::vector<int>{2, 2, 2}));
   // Carried into a step that gives none.
   const std::string carried = deck + "*STEP\n*STATIC\n*NODE PRINT, NSET=RIGHT\nU\n*END STEP\n";

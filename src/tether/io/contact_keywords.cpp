@@ -246,6 +246,8 @@ void handle_contact_output(DeckState& state, const KeywordBlock& block, const Pa
     }
   if (r.variables.empty()) r.variables = {"CSTR", "CDIS"};
   state.step().outputs.push_back(std::move(r));
+  if (state.step().outputs.back().kind == OutputRequest::Kind::ContactPrint)
+    state.print_requests.push_back(state.step().outputs.size() - 1);
 }
 
 void apply_contact_adjustments(DeckState& state) {

@@ -39,6 +39,9 @@ struct DeckState {
   /// (*NODE PRINT, *EL PRINT, *CONTACT PRINT): the last one given on any of
   /// them, carried to later steps (1 until one is given).
   int print_frequency = 1;
+  /// Indices into the current step's outputs of its *NODE PRINT, *EL PRINT
+  /// and *CONTACT PRINT requests (not *OUTPUT, HISTORY ones), cleared at *END STEP.
+  std::vector<std::size_t> print_requests;
   /// Kinds ("BOUNDARY", "CLOAD", ...) already cleared by OP=NEW in the current step.
   std::vector<std::string> cleared_this_step;
 

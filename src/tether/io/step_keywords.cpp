@@ -250,10 +250,8 @@ void handle_end_step(DeckState& state, const KeywordBlock& block, const Paramete
   s.body_loads = state.body_loads;
   s.restart_frequency = state.restart_frequency;
   if (state.model.dialect == Dialect::Calculix)  // CalculiX: one print frequency for the step
-    for (OutputRequest& r : s.outputs)
-      if (r.kind == OutputRequest::Kind::NodePrint || r.kind == OutputRequest::Kind::ElementPrint ||
-          r.kind == OutputRequest::Kind::ContactPrint)
-        r.frequency = state.print_frequency;
+    for (std::size_t i : state.print_requests) s.outputs.at(i).frequency = state.print_frequency;
+  state.print_requests.clear();
   state.in_step = false;
   state.output_active = false;
 }
