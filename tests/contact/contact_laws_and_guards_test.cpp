@@ -50,6 +50,32 @@ TEST(PressureOverclosureLaw, CalculixExponentialIsOnePercentOfP0AtTheClearanceC0
   }
 }
 
+TEST(PressureOverclosureLaw, CalculixLinearIsSmoothWithATensionUpToSigmaInfWithinTheReach) {
+  const PressureOverclosure law = calculix_linear_law();  // K = 40, sigma_inf = 0.5, c0 = 0.2
+  const double K = 40, eps = std::numbers::pi * 0.5 / K, reach = 0.2 * std::sqrt(0.7 / 2);
+  EXPECT_DOUBLE_EQ(calculix_linear_reach(law, 0.7), reach);
+  EXPECT_EQ(contact_pressure(law, 0, reach).p, 0.0);                        // p(0) = 0 ...
+  EXPECT_NEAR(contact_pressure(law, 0, reach).dp_dh, K / 2, 1e-14);         // ... with half the slope
+  EXPECT_NEAR(contact_pressure(law, eps, reach).p, K * eps * 0.75, 1e-14);  // atan(1) = pi/4
+  EXPECT_NEAR(contact_pressure(law, 1e3 * eps, reach).p, K * 1e3 * eps, 0.51);  // -> K h (+ sigma_inf)
+  EXPECT_LT(contact_pressure(law, -reach, reach).p, 0);                     // a tension within the reach ...
+  EXPECT_GT(contact_pressure(law, -reach, reach).p, -0.5);                  // ... below sigma_inf
+  EXPECT_NEAR(calculix_linear_pressure(K, 0.5, -1e4).p, -0.5, 1e-5);         // -> -sigma_inf far open
+  EXPECT_EQ(contact_pressure(law, -reach - 1e-12, reach).p, 0.0);           // nothing beyond the reach
+  EXPECT_EQ(contact_pressure(law, -reach - 1e-12, reach).dp_dh, 0.0);
+  for (double h : {-0.1, -0.03, -0.001, 0.0, 0.002, 0.04, 0.5}) {
+    const double d = 1e-7;
+    const double fd = (contact_pressure(law, h + d, reach).p - contact_pressure(law, h - d, reach).p) / (2 * d);
+    EXPECT_NEAR(contact_pressure(law, h, reach).dp_dh, fd, 1e-6 * std::max(1.0, std::abs(fd))) << h;
+  }
+  // Without a reach (the mortar path) CalculiX's law is not evaluated; other laws ignore the reach.
+  EXPECT_THROW(contact_pressure(law, 0.01), std::invalid_argument);
+  EXPECT_EQ(contact_pressure(linear_law(), 0.01, 1e-9).p, contact_pressure(linear_law(), 0.01).p);
+  // c0 not given: CalculiX's 1e-3.
+  PressureOverclosure plain = law;
+  plain.reach_factor = 0;
+  EXPECT_DOUBLE_EQ(calculix_linear_reach(plain, 2.0), 1e-3);
+}
 
 // Re-pairing guard: over a concave kink (node 2 pulled down to y = -0.2, both
 // faces sloping 0.1 towards it) a slave that goes A -> B -> A -> B within one

@@ -24,11 +24,12 @@ inline int line_of(const std::string& text, const std::string& marker) {
 }
 
 /// Reading `deck` (named bad.inp) must throw an InputError at bad.inp:`line`
-/// whose message contains every one of `words`.
-inline void expect_deck_error(const std::string& deck, int line, const std::vector<std::string>& words) {
+/// whose message contains every one of `words` (read in `dialect`).
+inline void expect_deck_error(const std::string& deck, int line, const std::vector<std::string>& words,
+                              Dialect dialect = Dialect::Abaqus) {
   ASSERT_GT(line, 0) << "marker not found in the test deck";
   try {
-    (void)read_deck_string(deck, "bad.inp");
+    (void)read_deck_string(deck, "bad.inp", nullptr, dialect);
     ADD_FAILURE() << "expected an InputError at bad.inp:" << line << ", deck read fine:\n" << deck;
   } catch (const InputError& e) {
     const std::string msg = e.what();

@@ -76,6 +76,33 @@ TEST(DatWriter, WritesCalculixLayoutWithOriginalLabels) {
   EXPECT_EQ(read_text(file), expected);
 }
 
+TEST(DatWriter, CalculixDialectPrintsAxisymmetricForcesForCalculixsSegment) {
+  // Element 101 made a CAX4: its nodes 11 and 14 print 1/180 of their force
+  // in the calculix dialect (CalculiX's 2-degree segment); node 22 (plane
+  // elements only) and the abaqus dialect print the full values.
+  Model model = tiny_model();
+  model.elements[0].type = *find_element_type("CAX4");
+  auto rf = node_print("LEFT", {"RF"});
+  rf.totals = true;
+  const auto print = [&](Dialect d, const std::string& dir) {
+    model.dialect = d;
+    const auto file = fresh_directory(dir) / "job.dat";
+    {
+      DatWriter dat(model, file);
+      dat.write_increment(synthetic_results(model, 1, 2, 0.5, 1.0), {rf}, false);
+    }
+    return read_text(file);
+  };
+  const std::string calculix = print(Dialect::Calculix, "dat_cax_calculix");
+  EXPECT_NE(calculix.find("        11  6.111111E-02 -3.055556E-02  0.000000E+00\n"), std::string::npos) << calculix;
+  EXPECT_NE(calculix.find("        14  7.777778E-02 -3.888889E-02  0.000000E+00\n"), std::string::npos) << calculix;
+  EXPECT_NE(calculix.find("        22  2.200000E+01 -1.100000E+01  0.000000E+00\n"), std::string::npos) << calculix;
+  EXPECT_NE(calculix.find("        2.213889E+01 -1.106944E+01  0.000000E+00\n"), std::string::npos) << calculix;
+  const std::string abaqus = print(Dialect::Abaqus, "dat_cax_abaqus");
+  EXPECT_NE(abaqus.find("        11  1.100000E+01 -5.500000E+00  0.000000E+00\n"), std::string::npos) << abaqus;
+  EXPECT_NE(abaqus.find("        4.700000E+01 -2.350000E+01  0.000000E+00\n"), std::string::npos) << abaqus;
+}
+
 TEST(DatWriter, TotalsOnlyPrintsJustTheSum) {
   const Model model = tiny_model();
   const auto file = fresh_directory("dat_totals_only") / "job.dat";

@@ -23,6 +23,18 @@ PressureOverclosure::Law interaction_law(const Model& model, const ContactPairDa
   return PressureOverclosure::Law::Hard;
 }
 
+/// CalculiX's LINEAR law on a SURFACE TO SURFACE pair is another law
+/// (p = -K g at either sign, CalculiX's springforc_f2f), not modelled.
+void refuse_calculix_linear_mortar(const Model& model, const ContactPairData& pair) {
+  for (const SurfaceInteraction& i : model.interactions)
+    if (i.name == pair.interaction && i.behavior.law == PressureOverclosure::Law::Linear &&
+        i.behavior.meaning == Dialect::Calculix)
+      throw ModelError("*CONTACT PAIR at " + pair.where.str() + " is surface-to-surface (mortar) with " + i.name +
+                       "'s PRESSURE-OVERCLOSURE=LINEAR read in the calculix dialect (" + i.where.str() +
+                       "): CalculiX's face-to-face LINEAR law (p = -K g, tension at open gaps too) is not modelled "
+                       "for mortar pairs; use TYPE=NODE TO SURFACE, or --dialect abaqus for p = K h");
+}
+
 }  // namespace
 
 Discretization::Discretization(const Model& model) : model_(model), dofs_(model.node_ids, model.instances) {
@@ -69,6 +81,7 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
       contact_order_.emplace_back(false, contact_pairs_.size());
       contact_pairs_.push_back(make_contact_pair(model, pair, model.coords, dofs_));
     } else {
+      refuse_calculix_linear_mortar(model, pair);
       contact_order_.emplace_back(true, mortar_pairs_.size());
       mortar_pairs_.push_back(make_mortar_pair(model, pair, model.coords, dofs_));
     }

@@ -249,7 +249,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     // A force law without multiplier: soft pressure-overclosure, or HARD by
     // penalty N = ρ<-g> / augmented Lagrangian N = <λ̄ - ρ g>.
     if (!hard) {
-      const ContactPressure p = contact_pressure(setup.law, -gap.g);
+      const ContactPressure p = contact_pressure(setup.law, -gap.g, calculix_linear_reach(setup.law, s.area));
       N = s.area * p.p;
       dN.head(nu) = -s.area * p.dp_dh * gap.gradient;
     } else {
@@ -261,7 +261,8 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
         dN.head(nu) = -rho * gap.gradient;
       }
     }
-    closed = N > 0 || dN.head(nu).squaredNorm() > 0;
+    // A tension (CalculiX's LINEAR law at an open gap) is an open node: no friction.
+    closed = N > 0 || (N == 0 && dN.head(nu).squaredNorm() > 0);
     if (out) {
       out->residual.head(nu) -= N * gap.gradient;
       if (need_tangent)

@@ -28,6 +28,31 @@ const Surface& surface_named(const DeckState& state, const std::string& token, c
   return it->second;
 }
 
+/// PRESSURE-OVERCLOSURE=LINEAR in the calculix dialect: CalculiX's data line
+/// `K, sigma_inf, c0`, each optional; a value <= 0 (or missing) takes
+/// CalculiX's default (K = 50 E and sigma_inf = E/70000 with E of the first
+/// material, set by the analysis; c0 = 1e-3), with a warning for K as
+/// CalculiX gives one.
+void read_calculix_linear(DeckState& state, const KeywordBlock& block, PressureOverclosure& b) {
+  b = PressureOverclosure{};
+  b.law = PressureOverclosure::Law::Linear;
+  b.meaning = Dialect::Calculix;
+  const SourceLocation at = block.data.empty() ? block.where : block.data.front().where();
+  if (block.data.size() > 1) throw InputError(block.data[1].where(), "LINEAR takes one data line 'K, sigma_inf, c0'");
+  std::vector<double> r;  // by position: an empty field is 0 (CalculiX's default)
+  if (!block.data.empty())
+    for (const std::string& f : split_data_line(block.data.front().text).fields)
+      r.push_back(f.empty() ? 0.0 : parse_real(f, at, "*SURFACE BEHAVIOR value"));
+  while (!r.empty() && r.back() == 0.0) r.pop_back();
+  if (r.size() > 3) throw InputError(at, "LINEAR: expected 'K, sigma_inf, c0' (three values at most)");
+  const auto field = [&](std::size_t i) { return i < r.size() ? r[i] : 0.0; };
+  b.stiffness = std::max(field(0), 0.0);
+  b.sigma_inf = std::max(field(1), 0.0);
+  b.reach_factor = field(2) > 0 ? field(2) : 1e-3;
+  if (b.stiffness == 0)
+    state.warn(at, "LINEAR: no slope K > 0 given; CalculiX's default K = 50 E (E of the first material) is used");
+}
+
 const std::vector<std::string_view> kContactVariables = {"CSTR", "CDIS", "CSTRESS", "CDISP", "CFN", "CFS", "CELS"};
 
 }  // namespace
@@ -81,20 +106,21 @@ void handle_surface_behavior(DeckState& state, const KeywordBlock& block, const 
   if (enforcement_given)
     throw InputError(block.where, "ENFORCEMENT, EPSILON, PENALTY and TOLERANCE apply to PRESSURE-OVERCLOSURE=HARD "
                                   "only; PRESSURE-OVERCLOSURE=" + law + " is already a penalty law");
+  if (law == "LINEAR" && state.model.dialect == Dialect::Calculix) {
+    read_calculix_linear(state, block, b);
+    return;
+  }
   if (rows.empty()) throw InputError(block.where, "PRESSURE-OVERCLOSURE=" + law + " needs a data line");
   if (law == "LINEAR") {
     b.law = PressureOverclosure::Law::Linear;
-    if (state.model.dialect == Dialect::Calculix)
-      throw InputError(block.where, "PRESSURE-OVERCLOSURE=LINEAR means CalculiX's law in the calculix dialect: "
-                                    "p = K h (1/2 + atan(h/eps)/pi), eps = pi sigma_inf/K, a tension up to sigma_inf "
-                                    "(E/70000 when not given) at open gaps within c0 sqrt(slave area), which tether "
-                                    "does not model yet; read the deck with --dialect abaqus for ABAQUS's p = K h");
+    b.meaning = Dialect::Abaqus;
     const auto& r = rows.front();
     b.stiffness = r.at(0);
     if (r.size() > 1)
-      throw InputError(at, "LINEAR takes the slope K only in the abaqus dialect; sigma_inf and c0 are CalculiX's "
-                           "fields (a smooth law with tension at open gaps, not an offset), which tether does not "
-                           "model: give `K`");
+      throw InputError(at, "LINEAR takes the slope K only in the abaqus dialect (p = K h); a second and third "
+                           "field are CalculiX's sigma_inf and c0 (a smooth law with a small tension at open gaps, "
+                           "c0 not an offset): read the deck with --dialect calculix for CalculiX's law, or give "
+                           "`K` alone");
     if (!(b.stiffness > 0)) throw InputError(at, "LINEAR: the slope K must be > 0 (pressure per unit overclosure)");
   } else if (law == "EXPONENTIAL") {
     b.law = PressureOverclosure::Law::Exponential;
@@ -203,6 +229,7 @@ void handle_contact_output(DeckState& state, const KeywordBlock& block, const Pa
   r.where = block.where;
   r.frequency = params.integer("FREQUENCY");
   if (r.frequency < 0) throw InputError(block.where, "FREQUENCY must be >= 0");
+  if (r.kind == OutputRequest::Kind::ContactPrint && params.given("FREQUENCY")) note_print_frequency(state, r.frequency);
   for (const DataLine& line : block.data)
     for (const std::string& f : split_data_line(line.text).fields) {
       const std::string v = to_upper(f);
@@ -219,6 +246,8 @@ void handle_contact_output(DeckState& state, const KeywordBlock& block, const Pa
     }
   if (r.variables.empty()) r.variables = {"CSTR", "CDIS"};
   state.step().outputs.push_back(std::move(r));
+  if (state.step().outputs.back().kind == OutputRequest::Kind::ContactPrint)
+    state.print_requests.push_back(state.step().outputs.size() - 1);
 }
 
 void apply_contact_adjustments(DeckState& state) {

@@ -35,6 +35,13 @@ struct DeckState {
   std::vector<BodyLoad> body_loads;   ///< from *DLOAD GRAV / CENTRIF
   Controls controls;                  ///< carried from step to step until *CONTROLS, RESET
   int restart_frequency = 0;          ///< *RESTART, WRITE in force (0 = none), carried to later steps
+  /// Dialect calculix: CalculiX's one FREQUENCY of all print requests
+  /// (*NODE PRINT, *EL PRINT, *CONTACT PRINT): the last one given on any of
+  /// them, carried to later steps (1 until one is given).
+  int print_frequency = 1;
+  /// Indices into the current step's outputs of its *NODE PRINT, *EL PRINT
+  /// and *CONTACT PRINT requests (not *OUTPUT, HISTORY ones), cleared at *END STEP.
+  std::vector<std::size_t> print_requests;
   /// Kinds ("BOUNDARY", "CLOAD", ...) already cleared by OP=NEW in the current step.
   std::vector<std::string> cleared_this_step;
 
@@ -99,5 +106,12 @@ int parse_face_id(const std::string& token, const Element& e, const SourceLocati
 
 /// Sorts and removes duplicates.
 void sort_unique(std::vector<int>& v);
+
+/// A FREQUENCY given on a print request (*NODE PRINT, *EL PRINT, *CONTACT
+/// PRINT): in the calculix dialect it becomes the one print frequency of the
+/// step and of later steps (DeckState::print_frequency, applied at *END STEP).
+inline void note_print_frequency(DeckState& state, int frequency) {
+  if (frequency >= 0) state.print_frequency = frequency;
+}
 
 }  // namespace tether::deck

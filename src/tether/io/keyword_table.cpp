@@ -127,7 +127,7 @@ std::vector<KeywordSpec> build_table() {
       {"SURFACE", kModelData, "Defines a surface from element faces or from nodes.",
        "TYPE=ELEMENT: `element_or_elset, S1..S4`, or `element_or_elset` alone: the exposed faces of those solid "
        "elements (faces no other element shares, as in ABAQUS), and for line elements (a Gmsh physical curve) the "
-       "face of the solid element each lies on; TYPE=NODE: `node_or_nset[, area]` (the area of each node, default 1: a node-based contact slave's pressure is its force / area)",
+       "face of the solid element each lies on; TYPE=NODE: `node_or_nset[, area]` (the area of each node, default 1: a node-based contact slave's pressure is its force / area; calculix dialect: CalculiX's areas, no area field, see Dialects)",
        {name("NAME", "Name of the surface.", true),
         choice("TYPE", "ELEMENT", {"ELEMENT", "NODE"}, "Element-face surface or node surface.")},
        handle_surface, ""},
@@ -421,7 +421,8 @@ std::vector<KeywordSpec> build_table() {
       {"SURFACE INTERACTION", kModelData, "Starts a contact property; *SURFACE BEHAVIOR and *FRICTION follow it.", "",
        {name("NAME", "Name of the interaction.", true)}, handle_surface_interaction, ""},
       {"SURFACE BEHAVIOR", kInteraction, "Pressure-overclosure law of the interaction (default HARD).",
-       "HARD: none; LINEAR: `K` (abaqus dialect: p = K h; CalculiX's `K, sigma_inf, c0` law is refused); "
+       "HARD: none; LINEAR: `K` (abaqus dialect: p = K h), `K, sigma_inf, c0` (calculix dialect: CalculiX's law, "
+       "see Dialects); "
        "EXPONENTIAL: `c0, p0` (ABAQUS's or CalculiX's function, by dialect); TABULAR: pairs `pressure, "
        "overclosure` with overclosure increasing",
        {{"PRESSURE-OVERCLOSURE", PT::Choice, "HARD", {"HARD", "LINEAR", "EXPONENTIAL", "TABULAR"}, false, "",

@@ -65,7 +65,11 @@ OutputRequest* add_request(DeckState& state, const KeywordBlock& block, const Pa
 
 OutputRequest* print_or_file(DeckState& state, const KeywordBlock& block, const ParameterValues& params,
                              OutputRequest::Kind kind, std::string_view set_param) {
-  return add_request(state, block, params, kind, set_param, params.integer("FREQUENCY"));
+  const bool print = kind == OutputRequest::Kind::NodePrint || kind == OutputRequest::Kind::ElementPrint;
+  if (print && params.given("FREQUENCY")) note_print_frequency(state, params.integer("FREQUENCY"));
+  OutputRequest* r = add_request(state, block, params, kind, set_param, params.integer("FREQUENCY"));
+  if (print && r) state.print_requests.push_back(state.step().outputs.size() - 1);
+  return r;
 }
 
 }  // namespace

@@ -283,6 +283,9 @@ void handle_end_step(DeckState& state, const KeywordBlock& block, const Paramete
   s.pressures.insert(s.pressures.end(), state.dsloads.begin(), state.dsloads.end());
   s.body_loads = state.body_loads;
   s.restart_frequency = state.restart_frequency;
+  if (state.model.dialect == Dialect::Calculix)  // CalculiX: one print frequency for the step
+    for (std::size_t i : state.print_requests) s.outputs.at(i).frequency = state.print_frequency;
+  state.print_requests.clear();
   state.in_step = false;
   state.output_active = false;
 }

@@ -18,17 +18,27 @@ namespace tether {
 struct PressureOverclosure {
   enum class Law {
     Hard,         ///< gap >= 0, p >= 0, p * gap = 0 (tether: exact, by multipliers)
-    Linear,       ///< p = K h for h > 0 (CalculiX: K, sigma_inf, c0)
+    Linear,       ///< p = K h for h > 0; CalculiX's meaning (dialect calculix): K, sigma_inf, c0 (pressure_overclosure.hpp)
     Exponential,  ///< ABAQUS: p = p0 / (exp(1) - 1) (h/c0 + 1) (exp(h/c0 + 1) - 1) for h > -c0
     Tabular,      ///< piecewise linear p(h) through (pressure, overclosure) pairs
   };
   Law law = Law::Hard;
-  double stiffness = 0;  ///< Linear: K [pressure/length]
-  double sigma_inf = 0;  ///< Linear (CalculiX): tension at large clearance [pressure], 0 = none
-  double c0 = 0;         ///< Linear (CalculiX) / Exponential: clearance at which pressure starts [length]
+  /// Linear: K [pressure/length]; with CalculiX's meaning 0 = CalculiX's
+  /// default 50 E (E of the deck's first material), set by the analysis.
+  double stiffness = 0;
+  /// Linear (CalculiX's meaning): the tension approached at open gaps
+  /// [pressure], > 0; 0 = CalculiX's default E/70000, set by the analysis.
+  double sigma_inf = 0;
+  /// Linear (CalculiX's meaning): c0 [-], an open slave node carries (a small
+  /// tension) only while its clearance is within c0 sqrt(its area); 1e-3 when
+  /// not given (or <= 0), as in CalculiX.
+  double reach_factor = 0;
+  double c0 = 0;         ///< Exponential: clearance at which pressure starts [length] (Linear: an offset, tests only)
   double p0 = 0;         ///< Exponential: pressure at zero clearance [pressure]
   /// Exponential: whose function `c0, p0` define: ABAQUS's (above), or
   /// CalculiX's p = p0 exp(ln(100) h / c0) (1 % of p0 at the clearance c0).
+  /// Linear: ABAQUS's p = K h, or CalculiX's smooth law with tension
+  /// (pressure_overclosure.hpp).
   Dialect meaning = Dialect::Abaqus;
   std::vector<std::pair<double, double>> table;  ///< Tabular: (pressure, overclosure), overclosure increasing
   /// Hard: how the normal constraint g >= 0 is enforced (tether extension):

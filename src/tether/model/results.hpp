@@ -60,7 +60,7 @@ struct ContactNodeValues {
   /// (a corner piece: the face before the corner for ξ < 0, after it for ξ ≥ 0).
   double xi = 0;
   double gap = 0;               ///< normal gap [length], > 0 open
-  double normal_force = 0;      ///< N >= 0 [force]
+  double normal_force = 0;      ///< N [force], >= 0 but for the tension of CalculiX's LINEAR law at open gaps
   double pressure = 0;          ///< N / tributary area [force/area]
   double tangential_force = 0;  ///< T [force], along the master tangent, opposing the slip Δs
   double shear = 0;             ///< T / tributary area [force/area]

@@ -82,6 +82,25 @@ void write_header(Out out, std::string_view what, const std::string& set, double
   fmt::format_to(out, "\n {} for set {}{}\n\n", what, set, time_suffix(time));
 }
 
+/// CalculiX's .dat gives the forces of an axisymmetric model on the 2°
+/// segment it expands the model to (1/180 of the full circle; measured with
+/// ccx 2.20 on a CAX4 ring). In the calculix dialect, the forces `v` of the
+/// nodes of axisymmetric elements are scaled so; in the abaqus dialect (and
+/// for plane elements) `v` is returned as it is: totals over the full circle.
+std::vector<Eigen::Vector2d> printed_forces(const Model& model, const std::vector<Eigen::Vector2d>& v) {
+  if (model.dialect != Dialect::Calculix) return v;
+  std::vector<Eigen::Vector2d> out = v;
+  std::vector<char> scaled(v.size(), 0);
+  for (const Element& e : model.elements)
+    if (e.type.family == Family::Axisymmetric)
+      for (int n : e.nodes)
+        if (static_cast<std::size_t>(n) < out.size() && !scaled[static_cast<std::size_t>(n)]) {
+          out[static_cast<std::size_t>(n)] /= kCalculixAxisymmetricSegments;
+          scaled[static_cast<std::size_t>(n)] = 1;
+        }
+  return out;
+}
+
 void write_nodal(Out out, const Model& model, const Selection& sel, const std::vector<Eigen::Vector2d>& v,
                  std::string_view what, bool rows, bool totals, double time) {
   if (v.size() != static_cast<std::size_t>(model.n_nodes()))
@@ -452,7 +471,7 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
         write_nodal(out, model_, sel, results.displacement, "displacements (vx,vy,vz)", true, false,
                     results.total_time);
       else if (v == "RF")
-        write_nodal(out, model_, sel, results.reaction, "forces (fx,fy,fz)", !r.totals_only,
+        write_nodal(out, model_, sel, printed_forces(model_, results.reaction), "forces (fx,fy,fz)", !r.totals_only,
                     r.totals || r.totals_only, results.total_time);
       else if (v == "V")
         write_nodal(out, model_, sel, results.velocity, "velocities (vx,vy,vz)", true, false, results.total_time);
