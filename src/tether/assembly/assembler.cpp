@@ -129,7 +129,7 @@ void Assembler::build_pattern() {
     throw std::invalid_argument("Assembler: a reserved equation is outside the system");
   ++pattern_builds_;
   held_ = false;
-  ++revision_, ++outer_revision_;
+  ++revision_, ++outer_revision_, ++hold_generation_;
   relocated_slot_.assign(static_cast<std::size_t>(n_contrib), -1);
   relocated_.clear();
   relocated_dofs_.clear();
@@ -338,7 +338,7 @@ void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
   keyed_on_dt_ = keyed_on_dt;
   any_nonlinear_ = std::find(linear_.begin(), linear_.end(), std::uint8_t{0}) != linear_.end();
   held_ = false;
-  ++revision_, ++outer_revision_;
+  ++revision_, ++outer_revision_, ++hold_generation_;
 }
 
 bool Assembler::linear_held(const EvaluationState& state) const {
@@ -374,6 +374,46 @@ void Assembler::hold_linear(const EvaluationState* state) {
         });
   if (state) held_ = true, held_dt_ = state->dt;
   nonlinear_moved_ = false;
+  mark_direct();
+}
+
+void Assembler::mark_direct() {
+  ++hold_generation_;
+  direct_.assign(contributions_.size(), 0);
+  for (std::size_t c = 0; c < contributions_.size(); ++c) {
+    bool direct = !linear_[c] || mixed_[c];
+    for (int d : contributions_[c]->dofs()) direct = direct || equations_.equation(d) < 0;
+    direct_[c] = direct;
+  }
+}
+
+void Assembler::enable_residual_updates(bool on) {
+  updates_enabled_ = on;
+  reference_valid_ = false;
+  if (!on) Eigen::VectorXd().swap(reference_u_), Eigen::VectorXd().swap(reference_residual_);
+}
+
+bool Assembler::reference_serves(const EvaluationState& state) const {
+  if (!reference_valid_ || reference_generation_ != hold_generation_ || !linear_held(state) || nonlinear_moved_ ||
+      state.u.size() != reference_u_.size())
+    return false;
+  for (int d = 0; d < equations_.n_dofs(); ++d)  // the prescribed values of the reference
+    if (equations_.equation(d) < 0 && state.u[d] != reference_u_[d]) return false;
+  return true;
+}
+
+void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd& residual) const {
+  residual += reference_residual_;
+  const int* outer = tangent_.outerIndexPtr();
+  const int* inner = tangent_.innerIndexPtr();
+  const double* value = tangent_.valuePtr();
+  for (int j = 0; j < equations_.n_equations(); ++j) {
+    const int dof_j = equations_.dof(j);
+    const double du = state.u[dof_j] - reference_u_[dof_j];
+    if (du == 0.0) continue;
+    for (int p = outer[j]; p < outer[j + 1]; ++p)
+      if (!nonlinear_entry_[static_cast<std::size_t>(p)]) residual[equations_.dof(inner[p])] += value[p] * du;
+  }
 }
 
 void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent) {
@@ -384,6 +424,15 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   // The values change unless every contribution is held (also when an assembly
   // fails); those outside the reserved block unless the nonlinear ones lie inside it.
   if (held && nonlinear_moved_) hold_linear(nullptr);
+  // Residual updates (enable_residual_updates()): record the reference, or update from it.
+  const bool can_update = updates_enabled_ && held_ && !nonlinear_moved_ && linear_held(state) &&
+                          !equations_.has_dependents();
+  const bool update = can_update && reference_serves(state);
+  const bool record = can_update && !update;
+  if (record) {
+    reference_u_ = state.u;
+    reference_residual_.setZero(equations_.n_dofs());
+  }
   if (with_tangent && (!held || any_nonlinear_)) ++revision_;
   if (with_tangent && (!held || !nonlinear_in_block_)) ++outer_revision_;
   if (with_tangent) {
@@ -405,9 +454,12 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     const bool keep = held && linear_[static_cast<std::size_t>(c)];
     const bool mixed = keep && mixed_[static_cast<std::size_t>(c)];
     const bool tangent = values != nullptr && (!keep || mixed);
+    if (update && !direct_[static_cast<std::size_t>(c)]) return;  // in r_L(u_ref) + K_L (u - u_ref)
+    // An update subtracts the held entries of the other linear contributions: their tangent.
+    const bool subtract = update && linear_[static_cast<std::size_t>(c)];
     try {
       local.reset(m);
-      contribution->evaluate(state, local, tangent);
+      contribution->evaluate(state, local, tangent || subtract);
     } catch (...) {
 #pragma omp critical(tether_assembly_failure)
       if (!failure) failure = std::current_exception();
@@ -415,8 +467,16 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
       return;
     }
     for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
-    if (!tangent) return;
+    if (record && !direct_[static_cast<std::size_t>(c)])
+      for (Eigen::Index a = 0; a < m; ++a) reference_residual_[dofs[a]] += local.residual[a];
     const double* ke = local.tangent.data();  // column-major, like the positions
+    if (subtract)
+      for_each_entry(c, [&](int p, Eigen::Index e, double) {
+        if (nonlinear_entry_[static_cast<std::size_t>(p)]) return;
+        const int d = dofs[static_cast<std::size_t>(e / m)];
+        residual[dofs[static_cast<std::size_t>(e % m)]] -= ke[e] * (state.u[d] - reference_u_[d]);
+      });
+    if (!tangent) return;
     if (mixed)
       for_each_entry(c, [&](int p, Eigen::Index e, double w) {
         if (nonlinear_entry_[static_cast<std::size_t>(p)]) values[p] += w * ke[e];
@@ -443,6 +503,8 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     add(c, local);
     if (failure) std::rethrow_exception(failure);
   }
+  if (update) add_linear_update(state, residual), ++reuse_statistics_.residual_updates;
+  if (record) reference_valid_ = true, reference_generation_ = hold_generation_;
   if (with_tangent && !held && !linear_.empty()) hold_linear(&state), ++reuse_statistics_.full;
   if (held) ++reuse_statistics_.reused;
   timing_.evaluate = seconds_since(t0);
