@@ -512,3 +512,44 @@ TEST(Assembler, ResidualUpdatesFromTheHeldTangentMatchAFullAssembly) {
   expect_match(false, "disabled");
   EXPECT_EQ(held.linear_reuse().residual_updates, 4);
 }
+
+TEST(Assembler, ResidualUpdatesCarryTheReferenceAcrossARelocation) {
+  // A chain of linear springs 0-1-2-3-4-5 (dof 0 prescribed) and a
+  // nonlinear spring 1-2 that re-pairs to 1-3 inside the reserved block
+  // {1, 2, 3}: the spring 3-4 then touches a nonlinear entry and leaves L,
+  // its part of the reference with it; the updates go on without a new
+  // reference and match a fresh assembly.
+  Spring s01(0, 1, 1.0), s12(1, 2, 2.0), s23(2, 3, 3.0), s34(3, 4, 4.0), s45(4, 5, 5.0);
+  Rewiring moving(1, 2, 3), moved(1, 2, 3), unmoved(1, 2, 3);
+  std::vector<bool> prescribed(6, false);
+  prescribed[0] = true;
+  const std::vector<int> block{0, 1, 2};  // equations of dofs 1, 2, 3
+  const std::vector<Contribution*> list{&s01, &s12, &s23, &s34, &s45, &moving};
+  Assembler held(list, EquationMap(prescribed), block);
+  Assembler before({&s01, &s12, &s23, &s34, &s45, &unmoved}, EquationMap(prescribed), block);
+  Assembler after({&s01, &s12, &s23, &s34, &s45, &moved}, EquationMap(prescribed), block);
+  held.set_linear(linear_flags(list), false);
+  held.enable_residual_updates(true);
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(6, 0.5, 2.0), r_held, r_fresh;
+  const auto expect_match = [&](Assembler& fresh, bool with_tangent, const std::string& what) {
+    const EvaluationState state{u, u};
+    held.assemble(state, r_held, with_tangent);
+    fresh.assemble(state, r_fresh, with_tangent);
+    EXPECT_LE((r_held - r_fresh).cwiseAbs().maxCoeff(), 1e-13 * r_fresh.cwiseAbs().maxCoeff()) << what;
+  };
+  expect_match(before, true, "full assembly");
+  u[3] += 0.25;
+  expect_match(before, true, "reference");
+  u[4] -= 0.5;
+  expect_match(before, false, "update before the relocation");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 1);
+  const EvaluationState state{u, u};
+  EXPECT_FALSE(held.update_connectivity(state));  // relocated in the reserved block
+  EXPECT_FALSE(after.update_connectivity(state));
+  EXPECT_EQ(held.relocations(), 1);
+  u[5] += 0.75, u[2] -= 0.125;
+  expect_match(after, true, "update after the relocation");
+  u[3] *= 1.5;
+  expect_match(after, false, "update after the relocation, residual only");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 3);
+}

@@ -402,6 +402,28 @@ bool Assembler::reference_serves(const EvaluationState& state) const {
   return true;
 }
 
+void Assembler::carry_reference(const EvaluationState& state, const std::vector<std::uint8_t>& before) {
+  // The contributions that left L (now touching an entry a relocated
+  // contribution scatters into) take their part of r_L(u_ref) with them.
+  const EvaluationState at_reference{reference_u_, state.u_start, state.step_time, state.total_time, state.dt,
+                                     state.nlgeom};
+  LocalSystem local;
+  try {
+    for (std::size_t c = 0; c < contributions_.size(); ++c) {
+      if (before[c] || !direct_[c]) continue;
+      const auto dofs = contributions_[c]->dofs();
+      local.reset(static_cast<Eigen::Index>(dofs.size()));
+      contributions_[c]->evaluate(at_reference, local, false);
+      for (std::size_t a = 0; a < dofs.size(); ++a)
+        reference_residual_[dofs[a]] -= local.residual[static_cast<Eigen::Index>(a)];
+    }
+  } catch (...) {
+    reference_valid_ = false;  // the next assembly records a new reference
+    return;
+  }
+  reference_generation_ = hold_generation_;
+}
+
 void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd& residual) const {
   residual += reference_residual_;
   const int* outer = tangent_.outerIndexPtr();
@@ -423,7 +445,13 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   const bool held = with_tangent && linear_held(state);
   // The values change unless every contribution is held (also when an assembly
   // fails); those outside the reserved block unless the nonlinear ones lie inside it.
-  if (held && nonlinear_moved_) hold_linear(nullptr);
+  if (held && nonlinear_moved_) {
+    const bool carried = reference_valid_ && reference_generation_ == hold_generation_;
+    std::vector<std::uint8_t> before;
+    if (carried) before = direct_;
+    hold_linear(nullptr);
+    if (carried) carry_reference(state, before);
+  }
   // Residual updates (enable_residual_updates()): record the reference, or update from it.
   const bool can_update = updates_enabled_ && held_ && !nonlinear_moved_ && linear_held(state) &&
                           !equations_.has_dependents();

@@ -112,8 +112,10 @@ class Assembler {
   /// enable it anew (dropping the reference) whenever anything but u
   /// changes the linear contributions' residuals: loads, time, their
   /// internal state (Contribution::on_converged). A reference at other
-  /// prescribed values, after a pattern change or a relocation is dropped
-  /// by the assembler. Off: every assembly evaluates every contribution.
+  /// prescribed values or after a pattern change is dropped by the
+  /// assembler; a relocation (re-pairing inside the reserved block) moves the
+  /// linear contributions that touch its new entries out of L and their part
+  /// out of the reference. Off: every assembly evaluates every contribution.
   void enable_residual_updates(bool on);
 
   /// The tangent over the free equations, owned by the assembler: its
@@ -164,6 +166,10 @@ class Assembler {
   void hold_linear(const EvaluationState* state);
   /// direct_ after hold_linear(): the contributions evaluated at every residual update.
   void mark_direct();
+  /// After a relocation (hold_linear(nullptr)) that kept a valid reference:
+  /// removes from r_L(u_ref) the contributions that left L (`before`: direct_
+  /// before the relocation), evaluated at u_ref, so that the reference serves on.
+  void carry_reference(const EvaluationState& state, const std::vector<std::uint8_t>& before);
   /// True when the reference of enable_residual_updates() serves `state`.
   [[nodiscard]] bool reference_serves(const EvaluationState& state) const;
   /// Adds r_L(u_ref) + K_L (u - u_ref) with K_L from the held values (all of
