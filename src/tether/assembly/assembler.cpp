@@ -379,6 +379,11 @@ void Assembler::hold_linear(const EvaluationState* state) {
 
 void Assembler::mark_direct() {
   ++hold_generation_;
+  nonlinear_column_.assign(static_cast<std::size_t>(equations_.n_equations()), 0);
+  for (int p : nonlinear_entries_)
+    nonlinear_column_[static_cast<std::size_t>(
+        std::upper_bound(tangent_.outerIndexPtr(), tangent_.outerIndexPtr() + tangent_.cols() + 1, p) -
+        tangent_.outerIndexPtr() - 1)] = 1;
   direct_.assign(contributions_.size(), 0);
   for (std::size_t c = 0; c < contributions_.size(); ++c) {
     bool direct = !linear_[c] || mixed_[c];
@@ -429,13 +434,20 @@ void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd&
   const int* outer = tangent_.outerIndexPtr();
   const int* inner = tangent_.innerIndexPtr();
   const double* value = tangent_.valuePtr();
-  for (int j = 0; j < equations_.n_equations(); ++j) {
+  const int n = equations_.n_equations();
+  Eigen::VectorXd product = Eigen::VectorXd::Zero(n);  // K_L (u - u_ref) by equations
+  for (int j = 0; j < n; ++j) {
     const int dof_j = equations_.dof(j);
     const double du = state.u[dof_j] - reference_u_[dof_j];
     if (du == 0.0) continue;
+    if (!nonlinear_column_[static_cast<std::size_t>(j)]) {
+      for (int p = outer[j]; p < outer[j + 1]; ++p) product[inner[p]] += value[p] * du;
+      continue;
+    }
     for (int p = outer[j]; p < outer[j + 1]; ++p)
-      if (!nonlinear_entry_[static_cast<std::size_t>(p)]) residual[equations_.dof(inner[p])] += value[p] * du;
+      if (!nonlinear_entry_[static_cast<std::size_t>(p)]) product[inner[p]] += value[p] * du;
   }
+  for (int i = 0; i < n; ++i) residual[equations_.dof(i)] += product[i];
 }
 
 void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent) {
@@ -475,6 +487,7 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
 
   // Evaluates contribution c and scatters it.
   const auto add = [&](int c, LocalSystem& local) {
+    if (update && !direct_[static_cast<std::size_t>(c)]) return;  // in r_L(u_ref) + K_L (u - u_ref)
     const Contribution* contribution = contributions_[c];
     const auto dofs = contribution->dofs();
     const auto m = static_cast<Eigen::Index>(dofs.size());
@@ -482,7 +495,6 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     const bool keep = held && linear_[static_cast<std::size_t>(c)];
     const bool mixed = keep && mixed_[static_cast<std::size_t>(c)];
     const bool tangent = values != nullptr && (!keep || mixed);
-    if (update && !direct_[static_cast<std::size_t>(c)]) return;  // in r_L(u_ref) + K_L (u - u_ref)
     // An update subtracts the held entries of the other linear contributions: their tangent.
     const bool subtract = update && linear_[static_cast<std::size_t>(c)];
     try {

@@ -235,6 +235,7 @@ class Assembler {
   std::uint64_t hold_generation_ = 0;       ///< changes at every hold_linear(), pattern build, set_linear()
   std::uint64_t reference_generation_ = 0;  ///< hold_generation_ when the reference was recorded
   std::vector<std::uint8_t> direct_;        ///< per contribution: not in L (evaluated at every update)
+  std::vector<std::uint8_t> nonlinear_column_;  ///< per equation: its column holds a nonlinear entry
   Eigen::VectorXd reference_u_;             ///< u_ref over all dofs
   Eigen::VectorXd reference_residual_;      ///< r_L(u_ref) over all dofs
 };
