@@ -371,8 +371,11 @@ def main():
             n_near += near
             n_files += n
             done.append(label + suffix)
-    tolerated = f", {n_near} of them within {args.tolerance:g}" if args.tolerance is not None else ""
-    print(f"{n_same} of {len(done)} cases identical{tolerated} ({n_files} output files compared)")
+    if args.tolerance is not None:
+        print(f"{n_same} of {len(done)} cases agree: {n_same - n_near} byte for byte, {n_near} within "
+              f"{args.tolerance:g} ({n_files} output files compared)")
+    else:
+        print(f"{n_same} of {len(done)} cases identical ({n_files} output files compared)")
     return 0 if n_same == len(done) else 1
 
 
