@@ -503,6 +503,11 @@ TEST(Assembler, ResidualUpdatesFromTheHeldTangentMatchAFullAssembly) {
   u[5] -= 0.3;
   expect_match(true, "update from the new reference");
   EXPECT_EQ(held.linear_reuse().residual_updates, 4);
+  // Another time (loads may differ there): evaluated in full, not updated.
+  held.assemble(EvaluationState{u, u, 0.5, 0.5}, r_held, false);
+  fresh.assemble(EvaluationState{u, u, 0.5, 0.5}, r_fresh, false);
+  EXPECT_EQ(r_held, r_fresh);
+  EXPECT_EQ(held.linear_reuse().residual_updates, 4);
   // Enabled anew (new loads): the next assembly is a reference again.
   held.enable_residual_updates(true);
   expect_match(false, "reference after enabling");

@@ -400,7 +400,8 @@ void Assembler::enable_residual_updates(bool on) {
 
 bool Assembler::reference_serves(const EvaluationState& state) const {
   if (!reference_valid_ || reference_generation_ != hold_generation_ || !linear_held(state) || nonlinear_moved_ ||
-      state.u.size() != reference_u_.size())
+      state.u.size() != reference_u_.size() || state.step_time != reference_time_[0] ||
+      state.total_time != reference_time_[1] || state.dt != reference_time_[2])
     return false;
   for (int d = 0; d < equations_.n_dofs(); ++d)  // the prescribed values of the reference
     if (equations_.equation(d) < 0 && state.u[d] != reference_u_[d]) return false;
@@ -470,6 +471,7 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   const bool update = can_update && reference_serves(state);
   const bool record = can_update && !update;
   if (record) {
+    reference_time_ = {state.step_time, state.total_time, state.dt};
     reference_u_ = state.u;
     reference_residual_.setZero(equations_.n_dofs());
   }

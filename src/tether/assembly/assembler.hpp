@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -112,10 +113,12 @@ class Assembler {
   /// enable it anew (dropping the reference) whenever anything but u
   /// changes the linear contributions' residuals: loads, time, their
   /// internal state (Contribution::on_converged). A reference at other
-  /// prescribed values or after a pattern change is dropped by the
-  /// assembler; a relocation (re-pairing inside the reserved block) moves the
-  /// linear contributions that touch its new entries out of L and their part
-  /// out of the reference. Off: every assembly evaluates every contribution.
+  /// prescribed values, another time or dt (an evaluation in the middle of
+  /// the increment) or after a pattern change does not serve: the assembly
+  /// evaluates everything and records a new one; a relocation (re-pairing
+  /// inside the reserved block) moves the linear contributions that touch
+  /// its new entries out of L and their part out of the reference. Off:
+  /// every assembly evaluates every contribution.
   void enable_residual_updates(bool on);
 
   /// The tangent over the free equations, owned by the assembler: its
@@ -237,6 +240,7 @@ class Assembler {
   std::vector<std::uint8_t> direct_;        ///< per contribution: not in L (evaluated at every update)
   std::vector<std::uint8_t> nonlinear_column_;  ///< per equation: its column holds a nonlinear entry
   Eigen::VectorXd reference_u_;             ///< u_ref over all dofs
+  std::array<double, 3> reference_time_{};  ///< step time, total time and dt of the reference state
   Eigen::VectorXd reference_residual_;      ///< r_L(u_ref) over all dofs
 };
 
