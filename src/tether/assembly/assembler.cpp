@@ -451,13 +451,7 @@ void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd&
   for (int i = 0; i < n; ++i) residual[equations_.dof(i)] += product[i];
 }
 
-void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent) {
-  const auto t0 = std::chrono::steady_clock::now();
-  residual.setZero(equations_.n_dofs());
-  // Held: only the entries of nonlinear contributions are assembled anew.
-  const bool held = with_tangent && linear_held(state);
-  // The values change unless every contribution is held (also when an assembly
-  // fails); those outside the reserved block unless the nonlinear ones lie inside it.
+bool Assembler::prepare_updates(const EvaluationState& state, bool held, bool& record) {
   if (held && nonlinear_moved_) {
     const bool carried = reference_valid_ && reference_generation_ == hold_generation_;
     std::vector<std::uint8_t> before;
@@ -465,16 +459,27 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     hold_linear(nullptr);
     if (carried) carry_reference(state, before);
   }
-  // Residual updates (enable_residual_updates()): record the reference, or update from it.
   const bool can_update = updates_enabled_ && held_ && !nonlinear_moved_ && linear_held(state) &&
                           !equations_.has_dependents();
   const bool update = can_update && reference_serves(state);
-  const bool record = can_update && !update;
+  record = can_update && !update;
   if (record) {
     reference_time_ = {state.step_time, state.total_time, state.dt};
     reference_u_ = state.u;
     reference_residual_.setZero(equations_.n_dofs());
   }
+  return update;
+}
+
+void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent) {
+  const auto t0 = std::chrono::steady_clock::now();
+  residual.setZero(equations_.n_dofs());
+  // Held: only the entries of nonlinear contributions are assembled anew.
+  const bool held = with_tangent && linear_held(state);
+  // The values change unless every contribution is held (also when an assembly
+  // fails); those outside the reserved block unless the nonlinear ones lie inside it.
+  bool record = false;
+  const bool update = prepare_updates(state, held, record);
   if (with_tangent && (!held || any_nonlinear_)) ++revision_;
   if (with_tangent && (!held || !nonlinear_in_block_)) ++outer_revision_;
   if (with_tangent) {

@@ -173,6 +173,11 @@ class Assembler {
   /// removes from r_L(u_ref) the contributions that left L (`before`: direct_
   /// before the relocation), evaluated at u_ref, so that the reference serves on.
   void carry_reference(const EvaluationState& state, const std::vector<std::uint8_t>& before);
+  /// Before an assembly at `state` (`held`: with the tangent, the linear
+  /// tangents held): places the entries of a relocation (hold_linear(nullptr),
+  /// carrying the reference), and returns true when the assembly updates the
+  /// residual from the reference; `record`: it records a new one instead.
+  bool prepare_updates(const EvaluationState& state, bool held, bool& record);
   /// True when the reference of enable_residual_updates() serves `state`.
   [[nodiscard]] bool reference_serves(const EvaluationState& state) const;
   /// Adds r_L(u_ref) + K_L (u - u_ref) with K_L from the held values (all of
