@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cstring>
+#include <string>
 
 #include "tether/assembly/assembler.hpp"
 
@@ -74,6 +75,7 @@ class DenseBlock final : public Contribution {
   }
   std::span<const int> dofs() const override { return dofs_; }
   void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override {
+    ++evaluations;
     Eigen::VectorXd ue(k_.rows());
     for (Eigen::Index a = 0; a < ue.size(); ++a) ue[a] = s.u[dofs_[static_cast<std::size_t>(a)]];
     out.residual = k_ * ue;
@@ -83,6 +85,7 @@ class DenseBlock final : public Contribution {
   bool symmetric_tangent(bool) const override { return false; }  // k_ is not symmetric
   bool linear_in_u(bool) const override { return true; }
   const Eigen::MatrixXd& matrix() const { return k_; }
+  mutable int evaluations = 0;  ///< evaluate() calls
 
  private:
   std::vector<int> dofs_;
@@ -455,4 +458,103 @@ TEST(Assembler, OuterRevisionStaysWhileOnlyTheReservedBlockChanges) {
   const std::uint64_t before = spread.outer_revision();
   spread.assemble(EvaluationState{u, u}, r, true);
   EXPECT_NE(spread.outer_revision(), before);
+}
+
+TEST(Assembler, ResidualUpdatesFromTheHeldTangentMatchAFullAssembly) {
+  // Linear quads (unsymmetric), two nonlinear blocks sharing entries with
+  // some of them, node 0 prescribed. With residual updates the quads that
+  // touch neither a nonlinear entry nor a prescribed dof are evaluated once
+  // (the reference), then their residual comes from the held tangent; it
+  // must match a fresh assembly to round-off, the reactions bit for bit.
+  Grid grid;
+  CubicBlock across({2 * 8, 2 * 8 + 1, 2 * 15, 2 * 15 + 1}, 0.7), corner({2 * 23, 2 * 5 + 1}, 1.3);
+  std::vector<Contribution*> list;
+  for (auto& q : grid.quads) list.push_back(&q);
+  list.push_back(&across);
+  list.push_back(&corner);
+  Assembler held(list, Grid::equations()), fresh(list, Grid::equations());
+  held.set_linear(linear_flags(list), false);
+  held.enable_residual_updates(true);
+  const DenseBlock& far = grid.quads[3];  // nodes 3, 4, 10, 9: away from node 0 and the blocks
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(Grid::n, 0.1, 1.3), r_held, r_fresh;
+  u[0] = 0.2, u[1] = -0.1;  // the prescribed values
+  const auto expect_match = [&](bool with_tangent, const std::string& what) {
+    const EvaluationState state{u, u};
+    held.assemble(state, r_held, with_tangent);
+    fresh.assemble(state, r_fresh, with_tangent);
+    EXPECT_LE((r_held - r_fresh).cwiseAbs().maxCoeff(), 1e-13 * r_fresh.cwiseAbs().maxCoeff()) << what;
+    EXPECT_EQ(r_held[0], r_fresh[0]) << what;  // reactions: evaluated, not updated
+    EXPECT_EQ(r_held[1], r_fresh[1]) << what;
+    if (with_tangent) EXPECT_TRUE(same_bits(held.tangent(), fresh.tangent())) << what;
+  };
+  expect_match(true, "full assembly");
+  expect_match(false, "reference");
+  const int evaluations = far.evaluations;
+  for (int k = 1; k <= 3; ++k) {
+    u.tail(Grid::n - 2) += Eigen::VectorXd::LinSpaced(Grid::n - 2, 0.05 * k, -0.2);
+    expect_match(k % 2 == 1, "update " + std::to_string(k));
+  }
+  EXPECT_EQ(held.linear_reuse().residual_updates, 3);
+  EXPECT_EQ(far.evaluations - evaluations, 3) << "the fresh assembler's only";
+  // Other prescribed values: a new reference, not an update from the old one.
+  u[1] = 0.4;
+  expect_match(false, "moved support");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 3);
+  u[5] -= 0.3;
+  expect_match(true, "update from the new reference");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 4);
+  // Another time (loads may differ there): evaluated in full, not updated.
+  held.assemble(EvaluationState{u, u, 0.5, 0.5}, r_held, false);
+  fresh.assemble(EvaluationState{u, u, 0.5, 0.5}, r_fresh, false);
+  EXPECT_EQ(r_held, r_fresh);
+  EXPECT_EQ(held.linear_reuse().residual_updates, 4);
+  // Enabled anew (new loads): the next assembly is a reference again.
+  held.enable_residual_updates(true);
+  expect_match(false, "reference after enabling");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 4);
+  held.enable_residual_updates(false);
+  u[7] += 0.1;
+  expect_match(false, "disabled");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 4);
+}
+
+TEST(Assembler, ResidualUpdatesCarryTheReferenceAcrossARelocation) {
+  // A chain of linear springs 0-1-2-3-4-5 (dof 0 prescribed) and a
+  // nonlinear spring 1-2 that re-pairs to 1-3 inside the reserved block
+  // {1, 2, 3}: the spring 3-4 then touches a nonlinear entry and leaves L,
+  // its part of the reference with it; the updates go on without a new
+  // reference and match a fresh assembly.
+  Spring s01(0, 1, 1.0), s12(1, 2, 2.0), s23(2, 3, 3.0), s34(3, 4, 4.0), s45(4, 5, 5.0);
+  Rewiring moving(1, 2, 3), moved(1, 2, 3), unmoved(1, 2, 3);
+  std::vector<bool> prescribed(6, false);
+  prescribed[0] = true;
+  const std::vector<int> block{0, 1, 2};  // equations of dofs 1, 2, 3
+  const std::vector<Contribution*> list{&s01, &s12, &s23, &s34, &s45, &moving};
+  Assembler held(list, EquationMap(prescribed), block);
+  Assembler before({&s01, &s12, &s23, &s34, &s45, &unmoved}, EquationMap(prescribed), block);
+  Assembler after({&s01, &s12, &s23, &s34, &s45, &moved}, EquationMap(prescribed), block);
+  held.set_linear(linear_flags(list), false);
+  held.enable_residual_updates(true);
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(6, 0.5, 2.0), r_held, r_fresh;
+  const auto expect_match = [&](Assembler& fresh, bool with_tangent, const std::string& what) {
+    const EvaluationState state{u, u};
+    held.assemble(state, r_held, with_tangent);
+    fresh.assemble(state, r_fresh, with_tangent);
+    EXPECT_LE((r_held - r_fresh).cwiseAbs().maxCoeff(), 1e-13 * r_fresh.cwiseAbs().maxCoeff()) << what;
+  };
+  expect_match(before, true, "full assembly");
+  u[3] += 0.25;
+  expect_match(before, true, "reference");
+  u[4] -= 0.5;
+  expect_match(before, false, "update before the relocation");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 1);
+  const EvaluationState state{u, u};
+  EXPECT_FALSE(held.update_connectivity(state));  // relocated in the reserved block
+  EXPECT_FALSE(after.update_connectivity(state));
+  EXPECT_EQ(held.relocations(), 1);
+  u[5] += 0.75, u[2] -= 0.125;
+  expect_match(after, true, "update after the relocation");
+  u[3] *= 1.5;
+  expect_match(after, false, "update after the relocation, residual only");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 3);
 }

@@ -24,6 +24,26 @@ Compared, per case: the exit code, stderr (output paths replaced), and every
 file of the output directory byte for byte, except lines of timing in the
 .msg and .sta ("time 0.12 s: ...") and the output directory's own path. Prints one line per differing case and a
 summary; exit status 0 when all cases agree, 1 otherwise.
+
+With --tolerance REL (for a change that alters results in the last bits, e.g.
+sums taken in another order), a file that differs byte for byte still agrees
+when
+  * it is a result file, .dat, .pvd or .csv, whose words are the same and
+    whose numbers differ by at most REL times the scale of their column (the
+    same position in the rows under the same heading line), or by one unit in
+    their last printed digit (values on either side of a rounding boundary,
+    1.879408E+00 and 1.879407E+00);
+  * or a .vtu whose data arrays differ by at most REL times the scale of each
+    array (integer arrays exactly);
+  * or a log, .sta or .msg, whose words and integers (increments, iterations,
+    attempts, contact status counts: the path of the solution) are the same;
+    its real numbers (the residual norms, round-off at convergence) are not
+    compared.
+The scale of a column or array is its largest magnitude, but at least 1e-6
+times the largest magnitude in the file (a column of round-off zeros, such as
+the gaps of closed contact nodes, is compared against the file's values).
+Such cases are counted as "within tolerance"; binary files (restart files)
+must still be identical.
 """
 import argparse
 import glob
@@ -122,6 +142,107 @@ def normalised(path, data, out):
     return data
 
 
+NUMBER = re.compile(r"^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
+TEXT_SUFFIXES = (".dat", ".sta", ".msg", ".pvd", ".csv", ".txt")
+LOG_SUFFIXES = (".sta", ".msg")
+INTEGER = re.compile(r"^[-+]?\d+$")
+# A column's scale is at least this fraction of the largest magnitude in its file.
+SCALE_FLOOR = 1e-6
+
+
+def _last_digit(token):
+    """The value of one unit in the last printed digit of a number token (1.879408E+00: 1e-6)."""
+    mantissa, _, exponent = token.lower().partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 10.0 ** ((int(exponent) if exponent else 0) - decimals)
+
+
+def _columns(text):
+    """[(key, tokens)] per line: key = the last line with a word (the heading), tokens split at blanks/commas."""
+    heading = ""
+    out = []
+    for line in text.splitlines():
+        tokens = [t for t in re.split(r"[\s,;]+", line) if t]
+        if any(not NUMBER.match(t) for t in tokens):
+            heading = line
+        out.append((heading, tokens))
+    return out
+
+
+def text_within(a, b, tol, log=False):
+    """None when the texts agree within `tol` (see the module docstring; `log`:
+    a .sta/.msg, whose real numbers are not compared), else the first difference."""
+    ra, rb = _columns(a), _columns(b)
+    if len(ra) != len(rb):
+        return f"{len(ra)} vs {len(rb)} lines"
+    scale = {}
+    for heading, tokens in rb:
+        for k, t in enumerate(tokens):
+            if NUMBER.match(t):
+                scale[(heading, k)] = max(scale.get((heading, k), 0.0), abs(float(t)))
+    floor = SCALE_FLOOR * max(scale.values(), default=0.0)
+    scale = {key: max(value, floor) for key, value in scale.items()}
+    for n, ((ha, ta), (hb, tb)) in enumerate(zip(ra, rb)):
+        if len(ta) != len(tb):
+            return f"line {n + 1}: {len(ta)} vs {len(tb)} fields"
+        for k, (x, y) in enumerate(zip(ta, tb)):
+            if x == y:
+                continue
+            if not (NUMBER.match(x) and NUMBER.match(y)):
+                return f"line {n + 1}: {x!r} vs {y!r}"
+            if log and not (INTEGER.match(x) or INTEGER.match(y)):
+                continue
+            if log:
+                return f"line {n + 1}: {x} vs {y}"
+            difference = abs(float(x) - float(y))
+            if difference > tol * scale[(hb, k)] and difference > 1.000001 * max(_last_digit(x), _last_digit(y)):
+                return f"line {n + 1} field {k + 1}: {x} vs {y} (column scale {scale[(hb, k)]:.3e})"
+    return None
+
+
+def vtu_within(a, b, tol):
+    """None when two .vtu files' data arrays agree within `tol` (per array), else the first difference."""
+    import numpy as np
+    from tethertools import vtu
+    try:
+        va, vb = vtu.check_vtu(a), vtu.check_vtu(b)
+    except vtu.VtuError as e:
+        return str(e)
+    if (va["points"], va["cells"], va["time"]) != (vb["points"], vb["cells"], vb["time"]):
+        return "sizes or time differ"
+    floor = SCALE_FLOOR * max((float(np.max(np.abs(y))) for kind in ("point_data", "cell_data")
+                               for y in vb[kind].values() if y.dtype.kind == "f" and y.size), default=0.0)
+    for kind in ("point_data", "cell_data"):
+        if sorted(va[kind]) != sorted(vb[kind]):
+            return f"{kind} arrays differ"
+        for name, x in va[kind].items():
+            y = vb[kind][name]
+            if x.dtype != y.dtype or x.shape != y.shape:
+                return f"{name}: type or size differs"
+            if x.dtype.kind != "f":
+                if not np.array_equal(x, y):
+                    return f"{name} differs"
+                continue
+            largest = max(float(np.max(np.abs(y))) if y.size else 0.0, floor)
+            worst = float(np.max(np.abs(x - y))) if y.size else 0.0
+            if worst > tol * largest:
+                return f"{name}: differs by {worst:.3e} (largest {largest:.3e})"
+    return None
+
+
+def within_tolerance(before, after, name, tol):
+    """None when file `name` of the two output directories agrees within `tol`, else why not."""
+    a, b = os.path.join(before, name), os.path.join(after, name)
+    if name.endswith(".vtu"):
+        return vtu_within(a, b, tol)
+    if not name.endswith(TEXT_SUFFIXES):
+        return "binary file differs"
+    with open(a, "rb") as fa, open(b, "rb") as fb:
+        ta = normalised(name, fa.read(), before).decode("utf-8", errors="replace")
+        tb = normalised(name, fb.read(), after).decode("utf-8", errors="replace")
+    return text_within(ta, tb, tol, log=name.endswith(LOG_SUFFIXES))
+
+
 def run(program, deck, out, options, timeout):
     shutil.rmtree(out, ignore_errors=True)
     try:
@@ -150,7 +271,7 @@ def differences(before, after):
 
 
 def compare_case(args, label, deck, options, restart_of=None):
-    """Runs one case through both programs; returns (equal, files compared)."""
+    """Runs one case through both programs; returns (equal, files compared, within tolerance)."""
     base = os.path.join(args.work, "runs", label)
     results = {}
     for which, program in (("before", args.before), ("after", args.after)):
@@ -164,10 +285,19 @@ def compare_case(args, label, deck, options, restart_of=None):
     if results["before"][1] != results["after"][1]:
         problems.append("stderr differs")
     files, n = differences(os.path.join(base, "before"), os.path.join(base, "after"))
-    problems += files
-    status = "same" if not problems else "DIFFERS: " + ", ".join(problems)
+    near = []
+    for name in files:
+        why = None
+        if args.tolerance is not None and not name.endswith("(only in one)"):
+            why = within_tolerance(os.path.join(base, "before"), os.path.join(base, "after"), name, args.tolerance)
+            if why is None:
+                near.append(name)
+                continue
+        problems.append(name + (f" ({why})" if why else ""))
+    status = "same" if not problems and not near else (
+        f"within {args.tolerance:g}: " + ", ".join(near) if not problems else "DIFFERS: " + ", ".join(problems))
     print(f"{label}: exit {results['before'][0]}, {n} files: {status}", flush=True)
-    return not problems, n
+    return not problems, n, bool(near) and not problems
 
 
 def restart_files(args, label, deck):
@@ -207,6 +337,7 @@ def main():
     p.add_argument("--extra", action="append", default=[], help="a directory of more decks")
     p.add_argument("--only", help="run only cases whose label contains this")
     p.add_argument("--timeout", type=float, default=900)
+    p.add_argument("--tolerance", type=float, help="accept numbers within this relative difference (see above)")
     args = p.parse_args()
     args.work = os.path.abspath(args.work)
 
@@ -222,23 +353,29 @@ def main():
         cases.append((stem, deck, [], None))
         for options in VARIANTS.get(os.path.basename(deck), []):
             cases.append((stem + "_" + "_".join(o.strip("-") for o in options), deck, options, None))
-    n_same = n_files = 0
+    n_same = n_files = n_near = 0
     done = []
     for label, deck, options, _ in cases:
         if args.only and args.only not in label:
             continue
-        same, n = compare_case(args, label, deck, options)
+        same, n, near = compare_case(args, label, deck, options)
         n_same += same
+        n_near += near
         n_files += n
         done.append(label)
         if options:
             continue
         for suffix, rst in restart_files(args, label, deck):
-            same, n = compare_case(args, label + suffix, deck, [], restart_of=rst)
+            same, n, near = compare_case(args, label + suffix, deck, [], restart_of=rst)
             n_same += same
+            n_near += near
             n_files += n
             done.append(label + suffix)
-    print(f"{n_same} of {len(done)} cases identical ({n_files} output files compared)")
+    if args.tolerance is not None:
+        print(f"{n_same} of {len(done)} cases agree: {n_same - n_near} byte for byte, {n_near} within "
+              f"{args.tolerance:g} ({n_files} output files compared)")
+    else:
+        print(f"{n_same} of {len(done)} cases identical ({n_files} output files compared)")
     return 0 if n_same == len(done) else 1
 
 

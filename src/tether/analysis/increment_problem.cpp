@@ -24,6 +24,8 @@ IncrementProblem::IncrementProblem(Assembler& assembler, const DofMap& dofs, Eig
       contact_(contact && !contact->empty() ? contact : nullptr),
       mortar_(mortar && !mortar->empty() ? mortar : nullptr) {}
 
+IncrementProblem::~IncrementProblem() { assembler_.enable_residual_updates(false); }
+
 EvaluationState IncrementProblem::state() const {
   return EvaluationState{u_, u_start_, time_.step_time, time_.total_time, time_.dt, time_.nlgeom};
 }

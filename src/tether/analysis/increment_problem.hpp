@@ -34,6 +34,19 @@ class IncrementProblem final : public NewtonProblem {
                    const Eigen::VectorXd& external, std::vector<const Contribution*> loads, IncrementTime time,
                    bool symmetric, const std::vector<std::unique_ptr<ContactPair>>* contact = nullptr,
                    const std::vector<std::unique_ptr<MortarPair>>* mortar = nullptr);
+  /// Turns the assembler's residual updates off again.
+  ~IncrementProblem() override;
+  IncrementProblem(const IncrementProblem&) = delete;
+  IncrementProblem& operator=(const IncrementProblem&) = delete;
+
+  /// Enables the assembler's residual updates with a new reference
+  /// (Assembler::enable_residual_updates): within one Newton solve the loads
+  /// and the contributions' state change with u only. Not with an
+  /// unsymmetric tangent (friction): whether a node that slipped still
+  /// slips is decided on the cone's edge, |t| = mu p, by round-off, so the
+  /// updates' other round-off would change the iterations, not only the
+  /// last bits of the answer.
+  void begin_solve() override { assembler_.enable_residual_updates(symmetric_); }
 
   bool evaluate(Eigen::VectorXd& residual, bool with_tangent, IterationNorms& norms, double& force_scale) override;
   [[nodiscard]] const SparseMatrix& tangent() const override { return assembler_.tangent(); }

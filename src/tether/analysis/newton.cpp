@@ -27,6 +27,7 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
   double previous = 0;
   int growths = 0;       // consecutive growths of the force residual that count (below)
   double reference = 0;  // the larger force residual of iterations 0 and 1
+  problem.begin_solve();
 
   for (int iteration = 0;; ++iteration) {
     double q = 0;

@@ -31,6 +31,9 @@ struct SolveTiming {
   /// Tangent assemblies that held the linear bulk's tangent, and those that
   /// assembled it in full, in steps that hold it (Assembler::linear_reuse).
   int held_tangents = 0, full_tangents = 0;
+  /// Evaluations whose linear bulk's residual came from the held tangent
+  /// (Assembler::enable_residual_updates) instead of the elements.
+  int residual_updates = 0;
   /// Of those, sparse factorizations of the bulk by the condensed solver (the
   /// rest reused it); 0 when the solver did not condense.
   int sparse_factorizations = 0;
@@ -40,6 +43,11 @@ struct SolveTiming {
 class NewtonProblem {
  public:
   virtual ~NewtonProblem() = default;
+  /// Called at the start of every NewtonSolver::solve(): the loads and the
+  /// contributions' internal state may have changed since the last
+  /// evaluate() (a new increment, a contribution that asked for another
+  /// pass), so nothing evaluated before may be reused.
+  virtual void begin_solve() {}
   /// Residual over the free equations and, when `with_tangent`, the tangent
   /// (tangent(); unchanged otherwise). Returns true when the matrix pattern
   /// changed since the last call. Fills `norms` (all but correction /

@@ -87,6 +87,7 @@ class StepEndReport {
     s.reused_factorizations += t.reused_factorizations;
     s.held_tangents += system_.assembler().linear_reuse().reused;
     s.full_tangents += system_.assembler().linear_reuse().full;
+    s.residual_updates += system_.assembler().linear_reuse().residual_updates;
     s.output += t.output;
     const CondensedSolver* condensed = system_.condensed();
     const LinearSolver& solver = system_.solver();

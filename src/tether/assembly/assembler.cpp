@@ -129,7 +129,7 @@ void Assembler::build_pattern() {
     throw std::invalid_argument("Assembler: a reserved equation is outside the system");
   ++pattern_builds_;
   held_ = false;
-  ++revision_, ++outer_revision_;
+  ++revision_, ++outer_revision_, ++hold_generation_;
   relocated_slot_.assign(static_cast<std::size_t>(n_contrib), -1);
   relocated_.clear();
   relocated_dofs_.clear();
@@ -338,7 +338,7 @@ void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
   keyed_on_dt_ = keyed_on_dt;
   any_nonlinear_ = std::find(linear_.begin(), linear_.end(), std::uint8_t{0}) != linear_.end();
   held_ = false;
-  ++revision_, ++outer_revision_;
+  ++revision_, ++outer_revision_, ++hold_generation_;
 }
 
 bool Assembler::linear_held(const EvaluationState& state) const {
@@ -374,6 +374,101 @@ void Assembler::hold_linear(const EvaluationState* state) {
         });
   if (state) held_ = true, held_dt_ = state->dt;
   nonlinear_moved_ = false;
+  mark_direct();
+}
+
+void Assembler::mark_direct() {
+  ++hold_generation_;
+  nonlinear_column_.assign(static_cast<std::size_t>(equations_.n_equations()), 0);
+  for (int p : nonlinear_entries_)
+    nonlinear_column_[static_cast<std::size_t>(
+        std::upper_bound(tangent_.outerIndexPtr(), tangent_.outerIndexPtr() + tangent_.cols() + 1, p) -
+        tangent_.outerIndexPtr() - 1)] = 1;
+  direct_.assign(contributions_.size(), 0);
+  for (std::size_t c = 0; c < contributions_.size(); ++c) {
+    bool direct = !linear_[c] || mixed_[c];
+    for (int d : contributions_[c]->dofs()) direct = direct || equations_.equation(d) < 0;
+    direct_[c] = direct;
+  }
+}
+
+void Assembler::enable_residual_updates(bool on) {
+  updates_enabled_ = on;
+  reference_valid_ = false;
+  if (!on) Eigen::VectorXd().swap(reference_u_), Eigen::VectorXd().swap(reference_residual_);
+}
+
+bool Assembler::reference_serves(const EvaluationState& state) const {
+  if (!reference_valid_ || reference_generation_ != hold_generation_ || !linear_held(state) || nonlinear_moved_ ||
+      state.u.size() != reference_u_.size() || state.step_time != reference_time_[0] ||
+      state.total_time != reference_time_[1] || state.dt != reference_time_[2])
+    return false;
+  for (int d = 0; d < equations_.n_dofs(); ++d)  // the prescribed values of the reference
+    if (equations_.equation(d) < 0 && state.u[d] != reference_u_[d]) return false;
+  return true;
+}
+
+void Assembler::carry_reference(const EvaluationState& state, const std::vector<std::uint8_t>& before) {
+  // The contributions that left L (now touching an entry a relocated
+  // contribution scatters into) take their part of r_L(u_ref) with them.
+  const EvaluationState at_reference{reference_u_, state.u_start, state.step_time, state.total_time, state.dt,
+                                     state.nlgeom};
+  LocalSystem local;
+  try {
+    for (std::size_t c = 0; c < contributions_.size(); ++c) {
+      if (before[c] || !direct_[c]) continue;
+      const auto dofs = contributions_[c]->dofs();
+      local.reset(static_cast<Eigen::Index>(dofs.size()));
+      contributions_[c]->evaluate(at_reference, local, false);
+      for (std::size_t a = 0; a < dofs.size(); ++a)
+        reference_residual_[dofs[a]] -= local.residual[static_cast<Eigen::Index>(a)];
+    }
+  } catch (...) {
+    reference_valid_ = false;  // the next assembly records a new reference
+    return;
+  }
+  reference_generation_ = hold_generation_;
+}
+
+void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd& residual) const {
+  residual += reference_residual_;
+  const int* outer = tangent_.outerIndexPtr();
+  const int* inner = tangent_.innerIndexPtr();
+  const double* value = tangent_.valuePtr();
+  const int n = equations_.n_equations();
+  Eigen::VectorXd product = Eigen::VectorXd::Zero(n);  // K_L (u - u_ref) by equations
+  for (int j = 0; j < n; ++j) {
+    const int dof_j = equations_.dof(j);
+    const double du = state.u[dof_j] - reference_u_[dof_j];
+    if (du == 0.0) continue;
+    if (!nonlinear_column_[static_cast<std::size_t>(j)]) {
+      for (int p = outer[j]; p < outer[j + 1]; ++p) product[inner[p]] += value[p] * du;
+      continue;
+    }
+    for (int p = outer[j]; p < outer[j + 1]; ++p)
+      if (!nonlinear_entry_[static_cast<std::size_t>(p)]) product[inner[p]] += value[p] * du;
+  }
+  for (int i = 0; i < n; ++i) residual[equations_.dof(i)] += product[i];
+}
+
+bool Assembler::prepare_updates(const EvaluationState& state, bool held, bool& record) {
+  if (held && nonlinear_moved_) {
+    const bool carried = reference_valid_ && reference_generation_ == hold_generation_;
+    std::vector<std::uint8_t> before;
+    if (carried) before = direct_;
+    hold_linear(nullptr);
+    if (carried) carry_reference(state, before);
+  }
+  const bool can_update = updates_enabled_ && held_ && !nonlinear_moved_ && linear_held(state) &&
+                          !equations_.has_dependents();
+  const bool update = can_update && reference_serves(state);
+  record = can_update && !update;
+  if (record) {
+    reference_time_ = {state.step_time, state.total_time, state.dt};
+    reference_u_ = state.u;
+    reference_residual_.setZero(equations_.n_dofs());
+  }
+  return update;
 }
 
 void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual, bool with_tangent) {
@@ -383,7 +478,8 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
   const bool held = with_tangent && linear_held(state);
   // The values change unless every contribution is held (also when an assembly
   // fails); those outside the reserved block unless the nonlinear ones lie inside it.
-  if (held && nonlinear_moved_) hold_linear(nullptr);
+  bool record = false;
+  const bool update = prepare_updates(state, held, record);
   if (with_tangent && (!held || any_nonlinear_)) ++revision_;
   if (with_tangent && (!held || !nonlinear_in_block_)) ++outer_revision_;
   if (with_tangent) {
@@ -398,6 +494,7 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
 
   // Evaluates contribution c and scatters it.
   const auto add = [&](int c, LocalSystem& local) {
+    if (update && !direct_[static_cast<std::size_t>(c)]) return;  // in r_L(u_ref) + K_L (u - u_ref)
     const Contribution* contribution = contributions_[c];
     const auto dofs = contribution->dofs();
     const auto m = static_cast<Eigen::Index>(dofs.size());
@@ -405,9 +502,11 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     const bool keep = held && linear_[static_cast<std::size_t>(c)];
     const bool mixed = keep && mixed_[static_cast<std::size_t>(c)];
     const bool tangent = values != nullptr && (!keep || mixed);
+    // An update subtracts the held entries of the other linear contributions: their tangent.
+    const bool subtract = update && linear_[static_cast<std::size_t>(c)];
     try {
       local.reset(m);
-      contribution->evaluate(state, local, tangent);
+      contribution->evaluate(state, local, tangent || subtract);
     } catch (...) {
 #pragma omp critical(tether_assembly_failure)
       if (!failure) failure = std::current_exception();
@@ -415,8 +514,16 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
       return;
     }
     for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
-    if (!tangent) return;
+    if (record && !direct_[static_cast<std::size_t>(c)])
+      for (Eigen::Index a = 0; a < m; ++a) reference_residual_[dofs[a]] += local.residual[a];
     const double* ke = local.tangent.data();  // column-major, like the positions
+    if (subtract)
+      for_each_entry(c, [&](int p, Eigen::Index e, double) {
+        if (nonlinear_entry_[static_cast<std::size_t>(p)]) return;
+        const int d = dofs[static_cast<std::size_t>(e / m)];
+        residual[dofs[static_cast<std::size_t>(e % m)]] -= ke[e] * (state.u[d] - reference_u_[d]);
+      });
+    if (!tangent) return;
     if (mixed)
       for_each_entry(c, [&](int p, Eigen::Index e, double w) {
         if (nonlinear_entry_[static_cast<std::size_t>(p)]) values[p] += w * ke[e];
@@ -443,6 +550,8 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
     add(c, local);
     if (failure) std::rethrow_exception(failure);
   }
+  if (update) add_linear_update(state, residual), ++reuse_statistics_.residual_updates;
+  if (record) reference_valid_ = true, reference_generation_ = hold_generation_;
   if (with_tangent && !held && !linear_.empty()) hold_linear(&state), ++reuse_statistics_.full;
   if (held) ++reuse_statistics_.reused;
   timing_.evaluate = seconds_since(t0);

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -40,6 +41,9 @@ struct AssemblyTiming {
 struct LinearReuseStatistics {
   int full = 0;    ///< every contribution's tangent evaluated (the linear ones' kept from then on)
   int reused = 0;  ///< the linear contributions' tangents kept; only nonlinear entries assembled
+  /// Assemblies whose residual took the held linear contributions' part from
+  /// the reference and the held tangent (enable_residual_updates()).
+  int residual_updates = 0;
 };
 
 class Assembler {
@@ -95,6 +99,28 @@ class Assembler {
   [[nodiscard]] std::uint64_t outer_revision() const { return outer_revision_; }
   [[nodiscard]] const LinearReuseStatistics& linear_reuse() const { return reuse_statistics_; }
 
+  /// Residual updates from the held tangent. While enabled (and the linear
+  /// tangents are held, at the same dt when keyed, with no dependent dofs),
+  /// the first assembly evaluates everything and records the residual of
+  /// the held linear contributions that touch neither a nonlinear entry nor
+  /// a prescribed dof (set L) at its u, u_ref; each later one evaluates only
+  /// the other contributions and adds r_L(u_ref) + K_L (u - u_ref), K_L from
+  /// the held tangent's values (the held entries minus the local tangents of
+  /// the other linear contributions): a sparse product instead of element
+  /// loops. Exact for affine contributions up to round-off (not bit for bit:
+  /// the sums are taken in another order); the rows of prescribed dofs
+  /// (reactions) are bit for bit those of a full assembly. The caller must
+  /// enable it anew (dropping the reference) whenever anything but u
+  /// changes the linear contributions' residuals: loads, time, their
+  /// internal state (Contribution::on_converged). A reference at other
+  /// prescribed values, another time or dt (an evaluation in the middle of
+  /// the increment) or after a pattern change does not serve: the assembly
+  /// evaluates everything and records a new one; a relocation (re-pairing
+  /// inside the reserved block) moves the linear contributions that touch
+  /// its new entries out of L and their part out of the reference. Off:
+  /// every assembly evaluates every contribution.
+  void enable_residual_updates(bool on);
+
   /// The tangent over the free equations, owned by the assembler: its
   /// structure is the pattern (built by the constructor, set_equations() and
   /// update_connectivity() on a rebuild), its values those of the last
@@ -141,6 +167,23 @@ class Assembler {
   /// scatter into now (those they left keep being assembled anew) and finds
   /// the linear contributions touching them again.
   void hold_linear(const EvaluationState* state);
+  /// direct_ after hold_linear(): the contributions evaluated at every residual update.
+  void mark_direct();
+  /// After a relocation (hold_linear(nullptr)) that kept a valid reference:
+  /// removes from r_L(u_ref) the contributions that left L (`before`: direct_
+  /// before the relocation), evaluated at u_ref, so that the reference serves on.
+  void carry_reference(const EvaluationState& state, const std::vector<std::uint8_t>& before);
+  /// Before an assembly at `state` (`held`: with the tangent, the linear
+  /// tangents held): places the entries of a relocation (hold_linear(nullptr),
+  /// carrying the reference), and returns true when the assembly updates the
+  /// residual from the reference; `record`: it records a new one instead.
+  bool prepare_updates(const EvaluationState& state, bool held, bool& record);
+  /// True when the reference of enable_residual_updates() serves `state`.
+  [[nodiscard]] bool reference_serves(const EvaluationState& state) const;
+  /// Adds r_L(u_ref) + K_L (u - u_ref) with K_L from the held values (all of
+  /// it but the nonlinear entries; the other linear contributions are
+  /// subtracted as they are evaluated) to `residual`.
+  void add_linear_update(const EvaluationState& state, Eigen::VectorXd& residual) const;
 
   std::vector<Contribution*> contributions_;
   EquationMap equations_;
@@ -194,6 +237,16 @@ class Assembler {
   bool nonlinear_in_block_ = false;     ///< every nonlinear contribution's equations are reserved ones
   std::uint64_t revision_ = 0, outer_revision_ = 0;
   LinearReuseStatistics reuse_statistics_;
+  // Residual updates (enable_residual_updates()).
+  bool updates_enabled_ = false;
+  bool reference_valid_ = false;
+  std::uint64_t hold_generation_ = 0;       ///< changes at every hold_linear(), pattern build, set_linear()
+  std::uint64_t reference_generation_ = 0;  ///< hold_generation_ when the reference was recorded
+  std::vector<std::uint8_t> direct_;        ///< per contribution: not in L (evaluated at every update)
+  std::vector<std::uint8_t> nonlinear_column_;  ///< per equation: its column holds a nonlinear entry
+  Eigen::VectorXd reference_u_;             ///< u_ref over all dofs
+  std::array<double, 3> reference_time_{};  ///< step time, total time and dt of the reference state
+  Eigen::VectorXd reference_residual_;      ///< r_L(u_ref) over all dofs
 };
 
 }  // namespace tether

@@ -12,8 +12,11 @@ std::string timing_line(double seconds, const SolveTiming& t) {
   return fmt::format("time {:.2f} s: contact search {:.2f}, assembly {:.2f}{}, analyse {:.2f}, factorize {:.2f} ({} "
                      "factorizations{}{}), solve {:.2f}, output {:.2f}",
                      seconds, t.contact_search, t.assembly,
-                     t.held_tangents > 0 ? fmt::format(" (linear bulk's tangent held in {} of {})", t.held_tangents,
-                                                       t.held_tangents + t.full_tangents)
+                     t.held_tangents > 0 ? fmt::format(" (linear bulk's tangent held in {} of {}{})", t.held_tangents,
+                                                       t.held_tangents + t.full_tangents,
+                                                       t.residual_updates > 0
+                                                           ? fmt::format(", its residual from it in {}", t.residual_updates)
+                                                           : std::string())
                                          : std::string(),
                      t.analyse, t.factorize, t.factorizations,
                      t.sparse_factorizations > 0
