@@ -63,7 +63,7 @@ class ThermalModel final : public ConstitutiveModel {
   [[nodiscard]] bool linear_small_strain() const override {
     return inner_->linear_small_strain() && young_.value.empty();
   }
-  [[nodiscard]] bool symmetric_tangent() const override { return inner_->symmetric_tangent(); }
+  [[nodiscard]] bool symmetric_tangent(bool nlgeom) const override { return inner_->symmetric_tangent(nlgeom); }
   [[nodiscard]] double equivalent_plastic_strain(std::span<const double> state) const override {
     return inner_->equivalent_plastic_strain(state);
   }
