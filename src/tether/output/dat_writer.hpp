@@ -53,7 +53,7 @@ inline constexpr double kCalculixAxisymmetricSegments = 180;
 /// - the "set" is the constraint's name (MultiplierValues::owner) with every
 ///   blank replaced by `_` ("MPC-2 LINK" -> `MPC-2_LINK`; an empty name ->
 ///   `C<number>`), so a reader selects a constraint by name exactly as it
-///   selects a node set (tools/datfile.py `last_block(blocks,
+///   selects a node set (tools/tethertools/dat.py `last_block(blocks,
 ///   "constraint multipliers", "LINK-A")`);
 /// - rows: constraint number (I10: 1-based position in the increment's list
 ///   of multiplier owners — built-in constraints in deck order, then user
@@ -143,7 +143,7 @@ inline constexpr double kCalculixAxisymmetricSegments = 180;
 ///   *SURFACE, TYPE=NODE (default 1, as in ABAQUS: then the forces).
 ///   The pair's name (contact_pair_set_name()) is `SLAVE-MASTER` from the
 ///   k-th *CONTACT PAIR of the model (its slave and master surface names), so
-///   tools/datfile.py's `last_block(blocks, "contact state", "SLAVE-MASTER")`
+///   tools/tethertools/dat.py's `last_block(blocks, "contact state", "SLAVE-MASTER")`
 ///   selects it. One block per variable and pair (several *CONTACT PRINT due
 ///   at one increment: still one state block per pair).
 /// Blocks follow the order of the requests and of their variables; the
