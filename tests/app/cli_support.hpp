@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <sys/wait.h>
@@ -42,5 +43,11 @@ inline fs::path scratch(const std::string& name) {
 }
 
 inline void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+/// The whole file at `p`.
+inline std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
 
 }  // namespace cli_test
