@@ -24,6 +24,17 @@ void scatter(const Contribution& c, const Eigen::VectorXd& local, Eigen::VectorX
   for (std::size_t i = 0; i < dofs.size(); ++i) out[dofs[i]] += local[static_cast<Eigen::Index>(i)];
 }
 
+/// The diagonal of the assembled mass matrix, over all dofs [mass].
+Eigen::VectorXd mass_diagonal(const StepSystem& system) {
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(system.discretization().dofs().n_dofs());
+  for (const auto& m : system.inertia()) {
+    const auto d = m->dofs();
+    for (std::size_t i = 0; i < d.size(); ++i)
+      diagonal[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+  }
+  return diagonal;
+}
+
 /// Solves M a = f over the free displacement equations of `system` that
 /// carry mass (a = 0 at prescribed, dependent and multiplier dofs, and at
 /// massless contact-surface nodes). Constraints do not enter: the
@@ -31,12 +42,7 @@ void scatter(const Contribution& c, const Eigen::VectorXd& local, Eigen::VectorX
 Eigen::VectorXd solve_mass(const StepSystem& system, const Eigen::VectorXd& f) {
   const EquationMap& eqs = system.equations();
   const DofMap& dofs = system.discretization().dofs();
-  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(f.size());
-  for (const auto& m : system.inertia()) {
-    const auto d = m->dofs();
-    for (std::size_t i = 0; i < d.size(); ++i)
-      diagonal[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
-  }
+  const Eigen::VectorXd diagonal = mass_diagonal(system);
   std::unordered_map<int, int> index;
   std::vector<int> free;
   for (int e = 0; e < eqs.n_equations(); ++e)
@@ -80,12 +86,7 @@ ImplicitDynamicProcedure::ImplicitDynamicProcedure(StepSystem& system, AnalysisO
   if (!system.step().dynamic.redistribute_contact_mass) return;
   contact_mass_ = redistribute_contact_mass(system.discretization(), system.inertia());
   if (contact_mass_.nodes == 0) return;
-  Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(system.discretization().dofs().n_dofs());
-  for (const auto& m : system.inertia()) {
-    const auto d = m->dofs();
-    for (std::size_t i = 0; i < d.size(); ++i)
-      diagonal[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
-  }
+  const Eigen::VectorXd diagonal = mass_diagonal(system);
   for (int d = 0; d < system.discretization().dofs().n_displacement_dofs(); ++d)
     if (diagonal[d] == 0) massless_.push_back(d);  // M is positive semi-definite: its row is zero
 }
