@@ -247,3 +247,47 @@ TEST(IncrementController, ImplicitDynamicsGrowsOnlyWithHaftol) {
   s.dynamic.half_increment_tolerance = 100;
   EXPECT_DOUBLE_EQ(IncrementController(s, 0.0).max_dt(), 1.0);
 }
+
+TEST(IncrementController, IncrementsEndOnTimePointsWithoutShrinkingTheSize) {
+  Step s = step_with(0.3);
+  s.direct = true;  // no growth
+  s.time_points = {0.25, 0.5};
+  IncrementController c(s, 0.0);
+  EXPECT_DOUBLE_EQ(converge(c, 1).step_time, 0.25);  // 0.3 would pass the point
+  EXPECT_DOUBLE_EQ(c.dt(), 0.3);                     // the size growth and cut-back start from is kept
+  EXPECT_DOUBLE_EQ(converge(c, 1).step_time, 0.5);
+  EXPECT_DOUBLE_EQ(converge(c, 1).step_time, 0.8);
+  const IncrementTimes last = converge(c, 1);
+  EXPECT_DOUBLE_EQ(last.step_time, 1.0);
+  EXPECT_TRUE(last.ends_step);
+}
+
+TEST(IncrementController, AnIncrementEndingJustShortOfATimePointLandsOnIt) {
+  Step s = step_with(0.25 - 1e-12);
+  s.time_points = {0.25};
+  IncrementController c(s, 0.0);
+  EXPECT_DOUBLE_EQ(converge(c, 1).step_time, 0.25);
+}
+
+TEST(IncrementController, ACutBackStartsFromAShortenedAttempt) {
+  Step s = step_with(0.4);
+  s.time_points = {0.1};
+  IncrementController c(s, 0.0);
+  EXPECT_DOUBLE_EQ(c.next_attempt().dt, 0.1);
+  ASSERT_EQ(c.cut_back(), IncrementController::CutBack::Retry);
+  EXPECT_DOUBLE_EQ(c.dt(), 0.1 * s.controls.cutback_factor);  // not 0.4 times the factor: that would retry 0.1
+}
+
+TEST(IncrementController, TimeMarksOfOutputRequestsArePointsOfStaticSteps) {
+  Step s = step_with(0.3);
+  OutputRequest r;
+  r.kind = OutputRequest::Kind::NodePrint;
+  r.number_interval = 4;
+  r.time_marks = true;
+  s.outputs.push_back(r);
+  IncrementController c(s, 0.0);
+  EXPECT_DOUBLE_EQ(converge(c, 1).step_time, 0.25);
+  EXPECT_DOUBLE_EQ(converge(c, 1).step_time, 0.5);
+  EXPECT_DOUBLE_EQ(converge(c, 1).step_time, 0.75);
+  EXPECT_DOUBLE_EQ(converge(c, 1).step_time, 1.0);
+}

@@ -1,7 +1,10 @@
 #include "tether/analysis/increment_controller.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
+
+#include "tether/output/output_schedule.hpp"
 
 namespace tether {
 
@@ -25,6 +28,12 @@ IncrementController::IncrementController(const Step& step, double step_start_tim
   // without an error estimate (HAFTOL) it never grows past the initial one.
   if (step.procedure == StepProcedure::ImplicitDynamic && step.dynamic.half_increment_tolerance == 0)
     max_dt_ = std::min(max_dt_, dt_);
+  time_points_ = step.time_points;
+  if (step.procedure != StepProcedure::ExplicitDynamic) {  // explicit steps put their marks in time_points
+    const std::vector<double> marks = time_mark_points(step);
+    time_points_.insert(time_points_.end(), marks.begin(), marks.end());
+  }
+  std::sort(time_points_.begin(), time_points_.end());
 }
 
 bool IncrementController::finished() const { return step_time_ >= period_ * (1 - 1e-12); }
@@ -32,11 +41,17 @@ bool IncrementController::finished() const { return step_time_ >= period_ * (1 -
 IncrementTimes IncrementController::next_attempt() {
   dt_ = std::min(dt_, period_ - step_time_);
   if (period_ - step_time_ - dt_ < 1e-9 * period_) dt_ = period_ - step_time_;
-  const double t_new = step_time_ + dt_;
-  return IncrementTimes{t_new, step_start_time_ + t_new, dt_, period_, t_new >= period_ * (1 - 1e-12)};
+  double dt = dt_;
+  // An increment reaching past the next time point (or within 1e-9 of the period short of it) ends on it.
+  const auto next = std::upper_bound(time_points_.begin(), time_points_.end(), step_time_ + 1e-9 * period_);
+  if (next != time_points_.end() && step_time_ + dt > *next - 1e-9 * period_) dt = *next - step_time_;
+  attempt_dt_ = dt;
+  const double t_new = step_time_ + dt;
+  return IncrementTimes{t_new, step_start_time_ + t_new, dt, period_, t_new >= period_ * (1 - 1e-12)};
 }
 
 void IncrementController::accept(const IncrementTimes& t, int iterations, double scale) {
+  attempt_dt_ = std::numeric_limits<double>::infinity();
   step_time_ = t.step_time;
   ++increment_;
   attempt_ = 1;
@@ -56,7 +71,7 @@ void IncrementController::accept(const IncrementTimes& t, int iterations, double
 IncrementController::CutBack IncrementController::cut_back(double scale) {
   if (direct_) return CutBack::FixedIncrements;
   if (attempt_ > controls_.max_cutbacks) return CutBack::TooManyCutBacks;
-  dt_ *= scale > 0 && scale < 1 ? scale : controls_.cutback_factor;
+  dt_ = std::min(dt_, attempt_dt_) * (scale > 0 && scale < 1 ? scale : controls_.cutback_factor);
   easy_in_row_ = 0;
   ++attempt_;
   if (dt_ < min_dt_ * (1 - 1e-12)) return CutBack::BelowMinimum;

@@ -10,7 +10,9 @@
 /// in a row, or below the minimum size). Shared by every procedure; its state
 /// between increments is part of the restart state. See docs/theory/procedures.md.
 
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "tether/model/model.hpp"
 #include "tether/model/restart_state.hpp"
@@ -47,7 +49,10 @@ class IncrementController {
   [[nodiscard]] bool out_of_increments() const { return increment_ >= max_increments_; }
 
   /// The next attempt: the increment is clamped to the end of the step, and
-  /// taken to the end when less than 1e-9 of the period would be left after it.
+  /// taken to the end when less than 1e-9 of the period would be left after
+  /// it; likewise it ends on the next time point (the step's time_points,
+  /// and the marks of its TIME MARKS=YES output requests) without changing
+  /// the increment size that growth and cut-back start from.
   [[nodiscard]] IncrementTimes next_attempt();
   /// The attempt `t` (from next_attempt()) converged in `iterations` Newton
   /// iterations: the step time moves to its end. With `scale` > 0 (the
@@ -93,6 +98,9 @@ class IncrementController {
   bool direct_;
   Controls controls_;
   double step_start_time_;
+  std::vector<double> time_points_;  ///< step times increments end on (sorted)
+  /// The size of the attempt under way (dt_, or shortened to a time point); infinite before one.
+  double attempt_dt_ = std::numeric_limits<double>::infinity();
   double step_time_ = 0;
   int increment_ = 0, attempt_ = 1, easy_in_row_ = 0;
 };
