@@ -8,6 +8,7 @@
 #include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/core/error.hpp"
+#include "tether/output/output_schedule.hpp"
 
 namespace tether {
 
@@ -36,6 +37,38 @@ ExplicitDynamicProcedure::ExplicitDynamicProcedure(StepSystem& system, AnalysisO
   if (!system.discretization().constraints().empty() || !system.discretization().user_constraints().empty())
     constraints_ = std::make_unique<ExplicitConstraints>(system.discretization(), u);
   update_limit(u, 0, true);
+  plan_reports();
+}
+
+void ExplicitDynamicProcedure::plan_reports() {
+  const Step& step = system_.step();
+  const double period = step.period > 0 ? step.period : 1;
+  // Above kReportIntervals, a multiple of it: the energy reports fall on hundredths of the period.
+  nominal_total_ = static_cast<long>(std::max(1.0, std::ceil(period / limit_ - 1e-9)));
+  if (nominal_total_ > kReportIntervals)
+    nominal_total_ = kReportIntervals * static_cast<long>(std::ceil(period / (kReportIntervals * limit_) - 1e-9));
+  nominal_ = period / static_cast<double>(nominal_total_);
+  OutputRequest energies;
+  energies.number_interval = static_cast<int>(std::min<long>(kReportIntervals, nominal_total_));
+  report_marks_ = explicit_marks(energies, nominal_total_, period);
+  const auto add = [&](const OutputRequest& r) {
+    const std::vector<long> marks = explicit_marks(r, nominal_total_, period);
+    report_marks_.insert(report_marks_.end(), marks.begin(), marks.end());
+  };
+  for (const OutputRequest& r : step.outputs) add(r);
+  if (std::none_of(step.outputs.begin(), step.outputs.end(), is_file_request)) add(default_file_request(true));
+  std::sort(report_marks_.begin(), report_marks_.end());
+  report_marks_.erase(std::unique(report_marks_.begin(), report_marks_.end()), report_marks_.end());
+}
+
+bool ExplicitDynamicProcedure::output_due(const IncrementResults::ExplicitSpan& span, bool last_in_step) const {
+  IncrementResults probe;
+  probe.explicit_span = span;
+  probe.period = system_.step().period > 0 ? system_.step().period : 1;
+  const auto& outputs = system_.step().outputs;
+  const auto due = [&](const OutputRequest& r) { return is_due(r, probe, last_in_step); };
+  return last_in_step || std::any_of(outputs.begin(), outputs.end(), due) ||
+         (std::none_of(outputs.begin(), outputs.end(), is_file_request) && due(default_file_request(true)));
 }
 
 void ExplicitDynamicProcedure::check_supported() const {
@@ -77,14 +110,15 @@ void ExplicitDynamicProcedure::update_limit(const Eigen::VectorXd& u, double tot
 Step ExplicitDynamicProcedure::time_stepping(const Step& step) const {
   Step s = step;
   const double period = step.period > 0 ? step.period : 1;
-  const double n_explicit = std::max(1.0, std::ceil(period / limit_ - 1e-9));
-  const int n_reports = static_cast<int>(std::min<double>(kReportIntervals, n_explicit));
   s.direct = true;
   s.period = period;
-  s.initial_increment = period / n_reports;
+  s.initial_increment = period;  // every increment ends on the next report mark
   s.min_increment = 0;
   s.max_increment = 0;
-  s.max_increments = n_reports + 2;  // the controller snaps a last sliver onto the end
+  s.time_points.clear();
+  for (long k : report_marks_)
+    if (k < nominal_total_) s.time_points.push_back(static_cast<double>(k) * nominal_);
+  s.max_increments = static_cast<int>(report_marks_.size()) + 2;
   return s;
 }
 
@@ -326,7 +360,13 @@ IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttemp
     update_limit(u, t.total_time - t.dt, false);
     if (!stiffness_damping_.empty()) setup_damping(EvaluationState{u, u, t_start, t.total_time - t.dt, 0, true});
   }
-  const int k = static_cast<int>(std::max(1.0, std::ceil(t.dt / limit_ - 1e-9)));
+  // The report's span in nominal increments; NLGEOM may have lowered the limit below h0.
+  const IncrementResults::ExplicitSpan span{std::lround(t_start / nominal_), std::lround(t.step_time / nominal_),
+                                            nominal_total_};
+  const long nominal_count = std::max(1L, span.end - span.start);
+  const double lowered = std::ceil(t.dt / limit_ - 1e-9);
+  const auto k = static_cast<int>(limit_ < nominal_ * (1 - 1e-12) ? std::max<double>(lowered, nominal_count)
+                                                                  : static_cast<double>(nominal_count));
   const double h = t.dt / k;
   const Eigen::VectorXd u_start = u;
   const auto evaluation_start = Clock::now();
@@ -345,7 +385,8 @@ IncrementOutcome ExplicitDynamicProcedure::solve_increment(const IncrementAttemp
   // The results may stream element values from `points` until on_results returns.
   const EvaluationState s{u, u_previous_, t.step_time, t.total_time, h_previous_, system_.step().nlgeom};
   const DiscretizationPoints points(system_.discretization(), s);
-  if (u.allFinite() && accel_.allFinite()) results = interval_results(attempt, s, stream_results_ ? &points : nullptr);
+  if (u.allFinite() && accel_.allFinite())
+    results = interval_results(attempt, s, stream_results_ ? &points : nullptr, span, output_due(span, t.ends_step));
   out.converged = results && !diverged(*results->energy);
   if (!out.converged)
     out.message = std::string("the central differences diverged (") +
@@ -377,7 +418,9 @@ bool ExplicitDynamicProcedure::diverged(const EnergyTotals& e) const {
 }
 
 IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttempt& attempt, const EvaluationState& s,
-                                                            const ElementPointSource* points) {
+                                                            const ElementPointSource* points,
+                                                            const IncrementResults::ExplicitSpan& span,
+                                                            bool output_due) {
   const Eigen::VectorXd& u = s.u;
   const Discretization& disc = system_.discretization();
   const DofMap& dofs = disc.dofs();
@@ -404,7 +447,12 @@ IncrementResults ExplicitDynamicProcedure::interval_results(const IncrementAttem
   Eigen::VectorXd reaction = residual;
   reaction.head(n_disp) += mass_.head(n_disp).cwiseProduct(accel.head(n_disp));
 
-  IncrementResults results = build_results(disc, s, reaction, system_.equations(), points);
+  IncrementResults results = output_due ? build_results(disc, s, reaction, system_.equations(), points)
+                                        : build_node_results(disc, s, reaction, system_.equations());
+  results.energies_only = !output_due;
+  results.explicit_span = span;
+  results.increment_size = t.dt;
+  results.period = t.period;
   if (contact_) results.contact = contact_->values();
   results.velocity.resize(static_cast<std::size_t>(dofs.n_nodes()));
   results.acceleration.resize(results.velocity.size());

@@ -28,11 +28,17 @@
 /// Time stepping: the explicit increment is the data line's increment with
 /// DIRECT (used as given, with a warning above the stable estimate) and
 /// otherwise kSafetyFactor times the element-by-element stable increment
-/// (stable_increment.hpp), recomputed at every report under NLGEOM. The step
-/// is reported (status line, results, energies) at kReportIntervals equal
-/// intervals of its period, or at every explicit increment when there are
-/// fewer: each increment of the step loop is one report interval holding
-/// ceil(interval / limit) equal explicit increments. See
+/// (stable_increment.hpp), recomputed at every report under NLGEOM. The
+/// step's period is divided into N = ceil(period / limit) nominal explicit
+/// increments h0 = period / N. Reports (status line, energies, and results
+/// when an output request is due) end on nominal increments: the union of
+/// kReportIntervals equal intervals (the energy history; every increment when
+/// there are fewer) and the marks of the step's output requests
+/// (output_schedule.hpp: FREQUENCY counts explicit increments, NUMBER and
+/// TIME INTERVAL marks are rounded to h0). Each increment of the step loop is
+/// one report interval of k = (its nominal increments) equal explicit
+/// increments, more when NLGEOM has lowered the limit below h0. At a report
+/// where no request is due only the nodal values and energies are built. See
 /// docs/theory/explicit_dynamics.md.
 
 #include <Eigen/Core>
@@ -54,7 +60,8 @@ class ExplicitDynamicProcedure final : public Procedure {
  public:
   /// Fraction of the stable increment used without DIRECT.
   static constexpr double kSafetyFactor = 0.9;
-  /// Reports per step (fewer when the step has fewer explicit increments).
+  /// Energy reports per step (fewer when the step has fewer explicit
+  /// increments); output requests add their own marks.
   static constexpr int kReportIntervals = 100;
   /// A report whose ALLKE + ALLSE exceeds this multiple of the energy put in
   /// stops the step as diverged (an increment above the stable one). Below
@@ -70,8 +77,8 @@ class ExplicitDynamicProcedure final : public Procedure {
                            const Eigen::VectorXd& u);
 
   [[nodiscard]] std::string keyword() const override { return "*DYNAMIC, EXPLICIT"; }
-  /// The step as the step loop's IncrementController should step it: fixed
-  /// increments of one report interval.
+  /// The step as the step loop's IncrementController should step it: one
+  /// increment per report interval, ending on the report marks (time points).
   [[nodiscard]] Step time_stepping(const Step& step) const override;
   IncrementOutcome solve_increment(const IncrementAttempt& attempt, Eigen::VectorXd& u) override;
   [[nodiscard]] SolveTiming timing() const override;
@@ -86,6 +93,10 @@ class ExplicitDynamicProcedure final : public Procedure {
  private:
   /// Refuses the contributions the scheme does not support.
   void check_supported() const;
+  /// The nominal explicit increment and the report marks of the step (from limit_).
+  void plan_reports();
+  /// Some output request of the step (or the result files' default) writes the report ending at `span`.
+  [[nodiscard]] bool output_due(const IncrementResults::ExplicitSpan& span, bool last_in_step) const;
   /// Sets limit_ from DIRECT or the stable increment at `u` and time
   /// `total_time`; `report`: tells the observer (and warns when DIRECT exceeds it).
   void update_limit(const Eigen::VectorXd& u, double total_time, bool report);
@@ -116,11 +127,13 @@ class ExplicitDynamicProcedure final : public Procedure {
   void correction_force(Eigen::VectorXd& u, double h, Eigen::VectorXd& force);
   /// One explicit increment h from step time t to t + h.
   void advance(Eigen::VectorXd& u, double t, double h);
-  /// Results and energies at the end of an interval, state `s` (also sets the
-  /// motion state); `points` (may be null) streams element values and must
-  /// outlive the results.
+  /// Results and energies at the end of an interval, state `s`, spanning
+  /// `span` (also sets the motion state); `points` (may be null) streams
+  /// element values and must outlive the results. Without `output_due` only
+  /// the nodal values, contact values and energies (energies_only).
   IncrementResults interval_results(const IncrementAttempt& attempt, const EvaluationState& s,
-                                    const ElementPointSource* points);
+                                    const ElementPointSource* points, const IncrementResults::ExplicitSpan& span,
+                                    bool output_due);
   /// The energy in the model (ALLKE + ALLSE) is not finite or more than
   /// kEnergyGrowthLimit times what was put in (the balance's start plus |ALLWK|
   /// plus h |F_n . v_n|, the work of the next increment).
@@ -136,6 +149,9 @@ class ExplicitDynamicProcedure final : public Procedure {
   Eigen::VectorXd contact_force_;  ///< constraint and contact forces at t_n
   Eigen::VectorXd predicted_, constraint_force_, contact_only_;  ///< scratch
   double limit_ = 0;
+  long nominal_total_ = 1;          ///< N: nominal explicit increments in the step
+  double nominal_ = 0;              ///< h0 = period / N [time]
+  std::vector<long> report_marks_;  ///< reports end after these nominal increments (sorted, last = N)
   bool started_ = false;
   std::vector<int> free_, prescribed_;   ///< displacement dofs that move by the scheme / by their values
   Eigen::VectorXd mass_, inverse_mass_;  ///< lumped mass per dof (inverse 0 at prescribed dofs)

@@ -74,6 +74,8 @@ void stamp(IncrementResults& results, const IncrementAttempt& attempt, int itera
   results.increment = attempt.increment;
   results.step_time = attempt.time.step_time;
   results.total_time = attempt.time.total_time;
+  results.increment_size = attempt.time.dt;
+  results.period = attempt.time.period;
   results.iterations = iterations;
 }
 

@@ -33,15 +33,20 @@ Eigen::VectorXd eliminated_multipliers(const EquationMap& equations, const Eigen
   return lambda;
 }
 
+/// ALLPD: the elements' plastic dissipation summed.
+double total_plastic_dissipation(const Discretization& discretization, const EvaluationState& state) {
+  double dissipation = 0;
+  for (const auto& e : discretization.elements()) dissipation += e->plastic_dissipation(state);
+  return dissipation;
+}
+
 /// Sizes the plastic arrays of `r` (zeroed) and sums ALLPD over the elements.
 void start_plastic_results(const Discretization& discretization, const EvaluationState& state, IncrementResults& r) {
   const auto n_nodes = static_cast<std::size_t>(discretization.dofs().n_nodes());
   r.nodal_peeq.assign(n_nodes, 0.0);
   r.nodal_plastic_strain.assign(n_nodes, Tensor4{});
   r.element_peeq.assign(discretization.elements().size(), 0.0);
-  double dissipation = 0;
-  for (const auto& e : discretization.elements()) dissipation += e->plastic_dissipation(state);
-  r.plastic_dissipation = dissipation;
+  r.plastic_dissipation = total_plastic_dissipation(discretization, state);
 }
 
 /// Adds element e's PEEQ and PE extrapolations to the nodal sums and sets its mean PEEQ.
@@ -58,6 +63,33 @@ void add_plastic_results(const ContinuumElement& element, int e, const std::vect
   }
 }
 
+/// `full_residual` plus the forces of the eliminated constraints `lambda`
+/// (so reactions at prescribed dofs they involve are complete).
+Eigen::VectorXd with_eliminated_forces(const EquationMap& equations, const Eigen::VectorXd& full_residual,
+                                       const Eigen::VectorXd& lambda) {
+  Eigen::VectorXd residual = full_residual;
+  for (std::size_t k = 0; k < equations.rows().size(); ++k)
+    for (const auto& [dof, c] : equations.rows()[k].terms) residual[dof] += c * lambda[static_cast<Eigen::Index>(k)];
+  return residual;
+}
+
+/// Displacements, reactions (read from `residual` at prescribed dofs) and temperatures per node.
+void add_node_values(const Discretization& discretization, const EvaluationState& state,
+                     const Eigen::VectorXd& residual, const EquationMap& equations, IncrementResults& r) {
+  const DofMap& dofs = discretization.dofs();
+  const int n_nodes = dofs.n_nodes();
+  r.displacement.resize(n_nodes);
+  r.reaction.assign(n_nodes, Eigen::Vector2d::Zero());
+  for (int i = 0; i < n_nodes; ++i) {
+    for (int c = 0; c < kDofsPerNode; ++c) {
+      const int d = dofs.displacement(i, c);
+      r.displacement[i][c] = state.u[d];
+      if (equations.is_prescribed(d)) r.reaction[i][c] = residual[d];
+    }
+  }
+  if (const StepTemperatures* t = discretization.temperatures()) r.temperature = t->all(state.step_time, state.total_time);
+}
+
 /// Elements whose points are alive at once when the results are streamed.
 constexpr int kPointBlock = 8192;
 
@@ -70,27 +102,11 @@ void DiscretizationPoints::points(int element, std::vector<PointValues>& out) co
 IncrementResults build_results(const Discretization& discretization, const EvaluationState& state,
                                const Eigen::VectorXd& full_residual, const EquationMap& equations,
                                const ElementPointSource* stream) {
-  // Residual including the forces of eliminated constraints (so reactions at
-  // prescribed dofs they involve are complete).
   const Eigen::VectorXd lambda = eliminated_multipliers(equations, full_residual);
-  Eigen::VectorXd residual = full_residual;
-  for (std::size_t k = 0; k < equations.rows().size(); ++k)
-    for (const auto& [dof, c] : equations.rows()[k].terms) residual[dof] += c * lambda[static_cast<Eigen::Index>(k)];
-
   const DofMap& dofs = discretization.dofs();
   const int n_nodes = dofs.n_nodes();
   IncrementResults r;
-  r.displacement.resize(n_nodes);
-  r.reaction.assign(n_nodes, Eigen::Vector2d::Zero());
-  for (int i = 0; i < n_nodes; ++i) {
-    for (int c = 0; c < kDofsPerNode; ++c) {
-      const int d = dofs.displacement(i, c);
-      r.displacement[i][c] = state.u[d];
-      if (equations.is_prescribed(d)) r.reaction[i][c] = residual[d];
-    }
-  }
-
-  if (const StepTemperatures* t = discretization.temperatures()) r.temperature = t->all(state.step_time, state.total_time);
+  add_node_values(discretization, state, with_eliminated_forces(equations, full_residual, lambda), equations, r);
 
   const auto& elements = discretization.elements();
   const int n_elements = static_cast<int>(elements.size());
@@ -172,6 +188,18 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
     }
     r.multipliers.push_back(std::move(v));
   }
+  return r;
+}
+
+IncrementResults build_node_results(const Discretization& discretization, const EvaluationState& state,
+                                    const Eigen::VectorXd& full_residual, const EquationMap& equations) {
+  const Eigen::VectorXd lambda = eliminated_multipliers(equations, full_residual);
+  IncrementResults r;
+  add_node_values(discretization, state, with_eliminated_forces(equations, full_residual, lambda), equations, r);
+  const auto& elements = discretization.elements();
+  if (std::any_of(elements.begin(), elements.end(), [](const auto& e) { return e->has_history(); }))
+    r.plastic_dissipation = total_plastic_dissipation(discretization, state);
+  r.contact = discretization.contact_values(state);
   return r;
 }
 

@@ -35,4 +35,11 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
                                const Eigen::VectorXd& residual, const EquationMap& equations,
                                const ElementPointSource* stream = nullptr);
 
+/// The nodal part of build_results() alone: displacements, reactions and
+/// temperatures per node, ALLPD (when an element keeps a material history)
+/// and the contact values; no element values (for reports where no output
+/// request is due).
+IncrementResults build_node_results(const Discretization& discretization, const EvaluationState& state,
+                                    const Eigen::VectorXd& residual, const EquationMap& equations);
+
 }  // namespace tether

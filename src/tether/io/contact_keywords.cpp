@@ -224,10 +224,12 @@ void handle_contact_pair(DeckState& state, const KeywordBlock& block, const Para
 }
 
 void handle_contact_output(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
-  OutputRequest r;
+  // *CONTACT OUTPUT inside an *OUTPUT block writes on the block's schedule unless it gives FREQUENCY.
+  const bool in_block = block.keyword == "CONTACT OUTPUT" && state.output_active && !params.given("FREQUENCY");
+  OutputRequest r = in_block ? state.output_schedule : OutputRequest{};
   r.kind = block.keyword == "CONTACT PRINT" ? OutputRequest::Kind::ContactPrint : OutputRequest::Kind::ContactFile;
   r.where = block.where;
-  r.frequency = params.integer("FREQUENCY");
+  if (!in_block) r.frequency = params.integer("FREQUENCY"), r.schedule_given = params.given("FREQUENCY");
   if (r.frequency < 0) throw InputError(block.where, "FREQUENCY must be >= 0");
   if (r.kind == OutputRequest::Kind::ContactPrint && params.given("FREQUENCY")) note_print_frequency(state, r.frequency);
   for (const DataLine& line : block.data)

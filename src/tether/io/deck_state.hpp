@@ -39,6 +39,7 @@ struct DeckState {
   /// (*NODE PRINT, *EL PRINT, *CONTACT PRINT): the last one given on any of
   /// them, carried to later steps (1 until one is given).
   int print_frequency = 1;
+  bool print_frequency_given = false;  ///< some print request gave FREQUENCY (this step or an earlier one)
   /// Indices into the current step's outputs of its *NODE PRINT, *EL PRINT
   /// and *CONTACT PRINT requests (not *OUTPUT, HISTORY ones), cleared at *END STEP.
   std::vector<std::size_t> print_requests;
@@ -48,7 +49,9 @@ struct DeckState {
   // --- *OUTPUT block (for *NODE OUTPUT / *ELEMENT OUTPUT) ---
   bool output_active = false;
   bool output_field = true;  ///< FIELD (file) or HISTORY (print)
-  int output_frequency = 1;
+  /// The block's FREQUENCY / NUMBER INTERVAL / TIME INTERVAL / TIME MARKS
+  /// (kind, set and variables unused), copied into its requests.
+  OutputRequest output_schedule;
 
   // --- line elements (T2D2/T2D3/T3D2/T3D3, as Gmsh writes physical curves) ---
   /// A line element: no stiffness and not part of the model; it only names the
@@ -111,7 +114,7 @@ void sort_unique(std::vector<int>& v);
 /// PRINT): in the calculix dialect it becomes the one print frequency of the
 /// step and of later steps (DeckState::print_frequency, applied at *END STEP).
 inline void note_print_frequency(DeckState& state, int frequency) {
-  if (frequency >= 0) state.print_frequency = frequency;
+  if (frequency >= 0) state.print_frequency = frequency, state.print_frequency_given = true;
 }
 
 }  // namespace tether::deck

@@ -59,7 +59,10 @@ ParameterSpec op_param() {
 }
 ParameterSpec frequency_param() {
   return integer("FREQUENCY", "1", "Write every n-th increment (0: never); the last increment of the step "
-                                   "is always written.");
+                                   "is always written. In *DYNAMIC, EXPLICIT steps n counts explicit increments "
+                                   "(as in ABAQUS/Explicit and CalculiX); without FREQUENCY an explicit step "
+                                   "writes at 20 equal intervals (abaqus dialect) or at every explicit increment "
+                                   "(calculix dialect).");
 }
 
 std::vector<KeywordSpec> build_table() {
@@ -323,6 +326,16 @@ std::vector<KeywordSpec> build_table() {
       {"OUTPUT", kAnyStep, "Starts an ABAQUS output block: FIELD (result files) or HISTORY (text report).", "",
        {flag("FIELD", "Field output: *NODE OUTPUT / *ELEMENT OUTPUT go to the result files."),
         flag("HISTORY", "History output: they go to the text report."), frequency_param(),
+        integer("NUMBER INTERVAL", "", "Write at the ends of n equal intervals of the step (instead of "
+                                       "FREQUENCY). Static and implicit steps: the first increment ending at or "
+                                       "after each mark; explicit steps: the marks rounded to the step's nominal "
+                                       "explicit increment, where a report ends."),
+        real("TIME INTERVAL", "", "Write at every multiple of this step time (instead of FREQUENCY), as "
+                                  "NUMBER INTERVAL does its marks; the end of the step is always written."),
+        choice("TIME MARKS", "NO", {"YES", "NO"},
+               "YES: static and implicit increments are shortened to end on the marks of NUMBER or TIME "
+               "INTERVAL; NO (ABAQUS's default): the first increment ending at or after a mark writes. "
+               "Explicit reports end on the marks either way."),
         choice("VARIABLE", "", {"PRESELECT", "ALL"},
                "ABAQUS's default variables for the whole model: FIELD requests U, RF, S and E (and CSTR, CDIS "
                "when the model has contact pairs) in the result files; HISTORY means the whole-model energies, "

@@ -37,11 +37,22 @@ std::vector<std::string> read_variables(DeckState& state, const KeywordBlock& bl
   return vars;
 }
 
-/// Adds one request to the current step (`set_param` is NSET or ELSET); returns
-/// it, or nullptr when no usable variable was requested.
-OutputRequest* add_request(DeckState& state, const KeywordBlock& block, const ParameterValues& params,
-                 OutputRequest::Kind kind, std::string_view set_param, int frequency) {
+/// The request's FREQUENCY of a keyword with only that parameter (*NODE PRINT, *EL FILE, ...).
+OutputRequest frequency_schedule(const KeywordBlock& block, const ParameterValues& params) {
   OutputRequest r;
+  r.frequency = params.integer("FREQUENCY");
+  r.schedule_given = params.given("FREQUENCY");
+  if (r.frequency < 0)
+    throw InputError(block.where, "FREQUENCY=" + params.text("FREQUENCY") + ": expected a value >= 0");
+  return r;
+}
+
+/// Adds one request to the current step (`set_param` is NSET or ELSET) with
+/// the schedule (FREQUENCY, intervals, TIME MARKS) of `schedule`; returns it,
+/// or nullptr when no usable variable was requested.
+OutputRequest* add_request(DeckState& state, const KeywordBlock& block, const ParameterValues& params,
+                           OutputRequest::Kind kind, std::string_view set_param, const OutputRequest& schedule) {
+  OutputRequest r = schedule;
   r.kind = kind;
   r.where = block.where;
   r.set = params.name(set_param);
@@ -51,9 +62,6 @@ OutputRequest* add_request(DeckState& state, const KeywordBlock& block, const Pa
     else
       (void)state.element_set(r.set, block.where);
   }
-  if (frequency < 0)
-    throw InputError(block.where, "FREQUENCY=" + std::to_string(frequency) + ": expected a value >= 0");
-  r.frequency = frequency;
   r.variables = read_variables(state, block, kind);
   if (r.variables.empty()) {
     state.warn(block.where, "output request without any available variable ignored");
@@ -67,8 +75,33 @@ OutputRequest* print_or_file(DeckState& state, const KeywordBlock& block, const 
                              OutputRequest::Kind kind, std::string_view set_param) {
   const bool print = kind == OutputRequest::Kind::NodePrint || kind == OutputRequest::Kind::ElementPrint;
   if (print && params.given("FREQUENCY")) note_print_frequency(state, params.integer("FREQUENCY"));
-  OutputRequest* r = add_request(state, block, params, kind, set_param, params.integer("FREQUENCY"));
+  OutputRequest* r = add_request(state, block, params, kind, set_param, frequency_schedule(block, params));
   if (print && r) state.print_requests.push_back(state.step().outputs.size() - 1);
+  return r;
+}
+
+/// FREQUENCY, NUMBER INTERVAL, TIME INTERVAL (at most one: ABAQUS's rule)
+/// and TIME MARKS of an *OUTPUT block.
+OutputRequest output_block_schedule(const KeywordBlock& block, const ParameterValues& params) {
+  OutputRequest r = frequency_schedule(block, params);
+  const int given = int{params.given("FREQUENCY")} + int{params.given("NUMBER INTERVAL")} + int{params.given("TIME INTERVAL")};
+  if (given > 1)
+    throw InputError(block.where, "*OUTPUT takes at most one of FREQUENCY, NUMBER INTERVAL and TIME INTERVAL");
+  if (params.given("NUMBER INTERVAL")) {
+    r.number_interval = params.integer("NUMBER INTERVAL");
+    if (r.number_interval < 1)
+      throw InputError(block.where, "NUMBER INTERVAL=" + params.text("NUMBER INTERVAL") +
+                                        ": expected a number of intervals >= 1");
+  }
+  if (params.given("TIME INTERVAL")) {
+    r.time_interval = params.real("TIME INTERVAL");
+    if (!(r.time_interval > 0))
+      throw InputError(block.where, "TIME INTERVAL=" + params.text("TIME INTERVAL") + ": expected a time > 0");
+  }
+  r.schedule_given = given > 0;
+  r.time_marks = params.name("TIME MARKS") == "YES";
+  if (params.given("TIME MARKS") && given == int{params.given("FREQUENCY")})
+    throw InputError(block.where, "TIME MARKS applies to NUMBER INTERVAL or TIME INTERVAL: give one of them");
   return r;
 }
 
@@ -102,20 +135,20 @@ void handle_output(DeckState& state, const KeywordBlock& block, const ParameterV
                                                                    "*NODE OUTPUT or *ELEMENT OUTPUT");
   state.output_active = true;
   state.output_field = field;
-  state.output_frequency = params.integer("FREQUENCY");
-  if (state.output_frequency < 0)
-    throw InputError(block.where, "FREQUENCY=" + params.text("FREQUENCY") + ": expected a value >= 0");
+  state.output_schedule = output_block_schedule(block, params);
   // VARIABLE=PRESELECT / ALL, as ABAQUS means them: FIELD, the default field variables (tether's: U, RF, S, E,
   // and the contact stress and opening when the model has contact); HISTORY, the whole-model energies, which
   // tether writes to the .dat of every dynamic step anyway, so it adds no request.
   if (params.given("VARIABLE") && field) {
     using K = OutputRequest::Kind;
-    state.step().outputs.push_back({K::NodeFile, "", {"U", "RF"}, state.output_frequency, false, false, block.where});
-    state.step().outputs.push_back({K::ElementFile, "", {"S", "E"}, state.output_frequency, false, false,
-                                    block.where});
-    if (!state.model.contact_pairs.empty())
-      state.step().outputs.push_back({K::ContactFile, "", {"CSTR", "CDIS"}, state.output_frequency, false, false,
-                                      block.where});
+    const auto preselect = [&](K kind, std::vector<std::string> variables) {
+      OutputRequest r = state.output_schedule;
+      r.kind = kind, r.variables = std::move(variables), r.where = block.where;
+      state.step().outputs.push_back(std::move(r));
+    };
+    preselect(K::NodeFile, {"U", "RF"});
+    preselect(K::ElementFile, {"S", "E"});
+    if (!state.model.contact_pairs.empty()) preselect(K::ContactFile, {"CSTR", "CDIS"});
   }
 }
 
@@ -124,7 +157,7 @@ void handle_node_output(DeckState& state, const KeywordBlock& block, const Param
     throw InputError(block.where, "*NODE OUTPUT must follow *OUTPUT, FIELD or *OUTPUT, HISTORY in the same step");
   add_request(state, block, params,
               state.output_field ? OutputRequest::Kind::NodeFile : OutputRequest::Kind::NodePrint, "NSET",
-              state.output_frequency);
+              state.output_schedule);
 }
 
 void handle_element_output(DeckState& state, const KeywordBlock& block, const ParameterValues& params) {
@@ -132,7 +165,7 @@ void handle_element_output(DeckState& state, const KeywordBlock& block, const Pa
     throw InputError(block.where, "*ELEMENT OUTPUT must follow *OUTPUT, FIELD or *OUTPUT, HISTORY in the same step");
   add_request(state, block, params,
               state.output_field ? OutputRequest::Kind::ElementFile : OutputRequest::Kind::ElementPrint, "ELSET",
-              state.output_frequency);
+              state.output_schedule);
 }
 
 }  // namespace tether::deck

@@ -5,6 +5,7 @@
 #include "tether/io/deck_state.hpp"
 #include "tether/io/keyword_handlers.hpp"
 #include "tether/io/numbers.hpp"
+#include "tether/output/output_schedule.hpp"
 
 namespace tether::deck {
 
@@ -257,6 +258,24 @@ void carry_output_requests(DeckState& state, Step& s) {
   s.outputs.insert(s.outputs.end(), carried.begin(), carried.end());
 }
 
+/// Explicit steps: requests written without FREQUENCY, NUMBER INTERVAL or
+/// TIME INTERVAL (carried ones included) write at 20 equal intervals in the
+/// abaqus dialect (ABAQUS/Explicit's default) and at every explicit increment
+/// in the calculix dialect (CalculiX's FREQUENCY=1), which is said.
+void default_explicit_schedules(DeckState& state, Step& s) {
+  const bool calculix = state.model.dialect == Dialect::Calculix;
+  for (OutputRequest& r : s.outputs) {
+    if (r.schedule_given || r.frequency == 0) continue;
+    if (!calculix) {
+      r.number_interval = kExplicitDefaultIntervals;
+      continue;
+    }
+    state.warn(r.where, "this output request of explicit step " + s.name + " has no FREQUENCY: it writes at every "
+                        "explicit increment, as CalculiX does (calculix dialect); give FREQUENCY=n to write every "
+                        "n-th increment");
+  }
+}
+
 void handle_end_step(DeckState& state, const KeywordBlock& block, const ParameterValues&) {
   if (!state.step_has_procedure)
     throw InputError(state.step().where, "step " + state.step().name +
@@ -284,7 +303,11 @@ void handle_end_step(DeckState& state, const KeywordBlock& block, const Paramete
   s.body_loads = state.body_loads;
   s.restart_frequency = state.restart_frequency;
   if (state.model.dialect == Dialect::Calculix)  // CalculiX: one print frequency for the step
-    for (std::size_t i : state.print_requests) s.outputs.at(i).frequency = state.print_frequency;
+    for (std::size_t i : state.print_requests) {
+      s.outputs.at(i).frequency = state.print_frequency;
+      s.outputs.at(i).schedule_given = s.outputs.at(i).schedule_given || state.print_frequency_given;
+    }
+  if (s.procedure == StepProcedure::ExplicitDynamic) default_explicit_schedules(state, s);
   state.print_requests.clear();
   state.in_step = false;
   state.output_active = false;

@@ -53,7 +53,7 @@ class Job::Recorder final : public AnalysisObserver {
       files->on_results(r, s, last);
       written_step = r.step, written_increment = r.increment, written_time = r.total_time;
     }
-    if (keep != JobOptions::Keep::None) {
+    if (keep != JobOptions::Keep::None && !r.energies_only) {  // explicit reports with nothing due: not kept
       if (keep == JobOptions::Keep::Last) kept->clear();
       kept->push_back({model, r});
       kept->back().results.point_source = nullptr;  // stored results: the points are all there

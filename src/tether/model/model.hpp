@@ -199,6 +199,18 @@ struct OutputRequest {
   std::string set;                    ///< NSET/ELSET name (upper case); empty = all
   std::vector<std::string> variables; ///< U, RF, S, E, ... (upper case)
   int frequency = 1;                  ///< every n-th increment (0 = none); last always written
+  /// NUMBER INTERVAL= (`*OUTPUT`): write at the ends of this many equal
+  /// intervals of the step; 0 = not given (FREQUENCY or TIME INTERVAL rules).
+  int number_interval = 0;
+  /// TIME INTERVAL= (`*OUTPUT`) [time]: write at every multiple of it; 0 = not given.
+  double time_interval = 0;
+  /// TIME MARKS=YES: static and implicit increments are shortened to end on
+  /// the interval marks (NO, the default: the first increment ending at or
+  /// after a mark writes). Explicit steps always end a report on the marks.
+  bool time_marks = false;
+  /// FREQUENCY, NUMBER INTERVAL or TIME INTERVAL was written (else the
+  /// procedure's default applies: see explicit steps in docs/keywords.md).
+  bool schedule_given = false;
   bool totals = false;                ///< TOTALS=YES/ONLY
   bool totals_only = false;           ///< TOTALS=ONLY
   SourceLocation where;
@@ -250,6 +262,9 @@ struct Step {
   double min_increment = 0;           ///< 0 = default (1e-5 * period)
   double max_increment = 0;           ///< 0 = no limit (period)
   bool direct = false;                ///< fixed increments, no cut-back
+  /// Step times increments must end on (sorted, within (0, period]): the
+  /// output marks of TIME MARKS=YES requests, or an explicit step's reports.
+  std::vector<double> time_points;
   Controls controls;
   /// Complete lists in force during this step (OP=MOD/NEW already resolved by
   /// the reader; model-level *BOUNDARY included).

@@ -129,6 +129,17 @@ struct IncrementResults {
   double step_time = 0;
   double total_time = 0;
   int iterations = 0;
+  double increment_size = 0;  ///< step time at the increment's start is step_time - increment_size
+  double period = 1;          ///< the step's time period
+  /// Explicit steps: the report's span in explicit increments of the step's
+  /// nominal size (period / total), (start, end]; when output is due there.
+  struct ExplicitSpan {
+    long start = 0, end = 0, total = 0;
+  };
+  std::optional<ExplicitSpan> explicit_span;
+  /// Only the nodal values, the contact values and the energies: an explicit
+  /// report at which no output request is due (no element values at all).
+  bool energies_only = false;
   std::vector<Eigen::Vector2d> displacement;  ///< per node
   std::vector<Eigen::Vector2d> reaction;      ///< per node: internal minus applied force at constrained dofs
                                               ///< (plus inertia and damping forces in a dynamic step)

@@ -449,7 +449,7 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
   const auto out = std::back_inserter(text);
   bool contact_due = false, any_due = false;
   for (const auto& r : requests) {
-    if (!is_due(r, results.increment, last_in_step)) continue;
+    if (!is_due(r, results, last_in_step)) continue;
     any_due = any_due || is_print(r) || is_contact_print(r);
     if (is_contact_print(r)) {
       contact_due = true;

@@ -41,14 +41,11 @@ std::filesystem::path prepared(const std::filesystem::path& directory, const std
   return directory;
 }
 
-bool vtu_due(const std::vector<OutputRequest>& requests, int increment, bool last_in_step) {
-  const auto is_file = [](const OutputRequest& r) {
-    return r.kind == OutputRequest::Kind::NodeFile || r.kind == OutputRequest::Kind::ElementFile ||
-           r.kind == OutputRequest::Kind::ContactFile;
-  };
-  if (std::none_of(requests.begin(), requests.end(), is_file)) return true;
+bool vtu_due(const std::vector<OutputRequest>& requests, const IncrementResults& results, bool last_in_step) {
+  if (std::none_of(requests.begin(), requests.end(), is_file_request))
+    return is_due(default_file_request(results.explicit_span.has_value()), results, last_in_step);
   return std::any_of(requests.begin(), requests.end(), [&](const OutputRequest& r) {
-    return is_file(r) && is_due(r, increment, last_in_step);
+    return is_file_request(r) && is_due(r, results, last_in_step);
   });
 }
 
@@ -72,7 +69,7 @@ void ResultWriter::write_increment(const IncrementResults& results, const std::v
                                    bool last_in_step) {
   dat_.write_increment(results, requests, last_in_step);
   if (results.energy) write_energy_row(results);
-  if (!options_.write_vtu || !vtu_due(requests, results.increment, last_in_step)) return;
+  if (!options_.write_vtu || !vtu_due(requests, results, last_in_step)) return;
   const auto file = vtu_path(results.step, results.increment);
   vtu_.write(results, file);
   pvd_.add(results.total_time, file.filename().string());
