@@ -100,7 +100,11 @@ def deck_lines(args):
     else:
         dt = args.courant * h / cp
         out += [f"*STEP, INC={int(period / dt) + 10}", "*DYNAMIC, DIRECT", f"{dt:.6g}, {period:.6g}"]
-    out += ["*NODE PRINT, NSET=WALLN", "RF", "*NODE PRINT, NSET=IMPACT", "U, V", "*END STEP"]
+    if args.procedure == "explicit" and not args.solid:  # 100 points of history (an explicit step's default: 20)
+        out += ["*OUTPUT, HISTORY, NUMBER INTERVAL=100", "*NODE OUTPUT, NSET=WALLN", "RF", "*NODE OUTPUT, NSET=IMPACT",
+                "U, V", "*END STEP"]
+    else:  # implicit: every increment; CalculiX (--solid): every explicit increment
+        out += ["*NODE PRINT, NSET=WALLN", "RF", "*NODE PRINT, NSET=IMPACT", "U, V", "*END STEP"]
     return out
 
 

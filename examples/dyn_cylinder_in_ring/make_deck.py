@@ -148,8 +148,11 @@ def main():
         out += ["*DYNAMIC, EXPLICIT", f", {args.period:g}"]
     else:
         out += ["*DYNAMIC, DIRECT", f"{args.increment:g}, {args.period:g}"]
-    out += ["*DLOAD", f"CYLINDER, GRAV, {G}, 0., -1.", "*NODE PRINT, NSET=CENTRE", "U, V",
-            "*END STEP"]
+    out += ["*DLOAD", f"CYLINDER, GRAV, {G}, 0., -1."]
+    if args.procedure == "explicit":  # 100 points of history (an explicit step's default: 20)
+        out += ["*OUTPUT, HISTORY, NUMBER INTERVAL=100", "*NODE OUTPUT, NSET=CENTRE", "U, V", "*END STEP"]
+    else:
+        out += ["*NODE PRINT, NSET=CENTRE", "U, V", "*END STEP"]
     print("\n".join(out))
 
 
