@@ -108,4 +108,7 @@ TEST(CaeDeck, MessagesNameNodesAndElementsByInstance) {
                        {"*EQUATION inside a *PART instanced more than once", "UPPER-1"});
   expect_deck_error_at(replaced(deck, "1, 1, 2, 5, 4", "1, 1, 4, 5, 2"), "1, 1, 4, 5, 2",
                        {"element LOWER-1.1 (CPE4) is inverted", "corner node LOWER-1."});
+  // A bad face of an instance's element (inside tether the upper copy's element 4 is 14).
+  expect_deck_error_at(replaced(deck, "*Restart, write", "*Dload\nUpper-1.4, P7, 5.\n*Restart, write"),
+                       "Upper-1.4, P7", {"bad face 'P7' for element UPPER-1.4 (CPE4)"});
 }

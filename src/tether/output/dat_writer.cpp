@@ -298,7 +298,8 @@ void write_contact_forces(Out out, const Model& model, const IncrementResults& r
         throw std::invalid_argument(fmt::format(
             "DatWriter: contact pair '{}': slave node {} carries a force but its master face (element {}, face {}) "
             "cannot be evaluated",
-            pair.name, model.node_ids[static_cast<std::size_t>(v.node)], v.master_element, v.master_face));
+            pair.name, label_text(model.instances, model.node_ids[static_cast<std::size_t>(v.node)]),
+            label_text(model.instances, v.master_element), v.master_face));
       sum += normal ? Eigen::Vector2d(v.normal_force * frame->n) : Eigen::Vector2d(-v.tangential_force * frame->t);
     }
     fmt::format_to(out, "\n {} for pair {}{}\n\n",
