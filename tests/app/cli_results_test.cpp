@@ -303,3 +303,65 @@ TEST(Cli, ThermalStrainTheIsPrintedAndWrittenAsAlphaDeltaT) {
     }
   }
 }
+
+namespace {
+
+/// (time, tightening, bolt force) of each pretension block of a .dat.
+std::vector<std::array<double, 3>> bolt_rows(const std::string& dat) {
+  const std::string title = " pretension section (node,tightening,bolt force) for set PRETENSION-CUT and time ";
+  std::vector<std::array<double, 3>> rows;
+  for (std::size_t at = dat.find(title); at != std::string::npos; at = dat.find(title, at + 1)) {
+    double time = 0, tightening = 0, force = 0;
+    int node = 0;
+    if (std::sscanf(dat.c_str() + at + title.size(), "%lf %d %lf %lf", &time, &node, &tightening, &force) == 4)
+      rows.push_back({time, tightening, force});
+  }
+  return rows;
+}
+
+}  // namespace
+
+// A restart of the bolt deck after the step that holds the bolt length
+// (*BOUNDARY, FIXED): the continued run carries the held length into a third
+// step (head load 6: bolt force 10 + 0.6 x 6 = 13.6), as the uninterrupted run
+// does, and leaves the first run's files alone. A deck whose step 2 holds the
+// pretension node at 0 instead of FIXED has another load history and is
+// refused (the restart check used to ignore FIXED).
+TEST(Cli, PretensionRestartCarriesTheHeldBoltLengthAndRefusesAnotherHistory) {
+  const fs::path dir = scratch("pretension_restart");
+  const auto path = [&](const std::string& name) { return (dir / name).string(); };
+  std::string two = slurp(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/bolt_joint.inp");
+  const std::string fixed = "*BOUNDARY, FIXED\n100, 1\n";
+  ASSERT_NE(two.find(fixed), std::string::npos);
+  two.insert(two.find(fixed), "*RESTART, WRITE, FREQUENCY=1\n");
+  const std::string three =
+      two + "*STEP\n*STATIC\n1., 1.\n*CLOAD\n9, 2, 6.\n*NODE PRINT, NSET=PRET\nU, RF\n*END STEP\n";
+  write(dir / "first.inp", two);
+  write(dir / "job.inp", three);
+  ASSERT_EQ(tether("run " + path("first.inp") + " -o " + path("first")).code, 0);
+  ASSERT_EQ(tether("run " + path("job.inp") + " -o " + path("full")).code, 0);
+  ASSERT_TRUE(fs::exists(dir / "first" / "first.rst"));
+  const std::string first_dat = slurp(dir / "first" / "first.dat");
+
+  const auto r = tether("run " + path("job.inp") + " --restart " + path("first/first.rst") + " -o " + path("resumed"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string resumed = slurp(dir / "resumed" / "job.dat"), full = slurp(dir / "full" / "job.dat");
+  const auto rows = bolt_rows(resumed);
+  ASSERT_EQ(rows.size(), 1u) << resumed;  // step 3 only
+  EXPECT_DOUBLE_EQ(rows[0][0], 3.0);
+  EXPECT_NEAR(rows[0][1], 10. / 1500 + 10. / 1000, 1e-6 * 0.0166667);  // the length held since step 1
+  EXPECT_NEAR(rows[0][2], 13.6, 1e-6 * 13.6);
+  ASSERT_LT(resumed.size(), full.size());
+  EXPECT_EQ(full.substr(full.size() - resumed.size()), resumed);
+  EXPECT_EQ(slurp(dir / "first" / "first.dat"), first_dat);
+
+  std::string held_at_zero = three;
+  held_at_zero.replace(held_at_zero.find(fixed), fixed.size(), "*BOUNDARY\n100, 1\n");
+  write(dir / "zero.inp", held_at_zero);
+  const auto refused = tether("run " + path("zero.inp") + " --restart " + path("first/first.rst") + " -o " + path("zero"));
+  EXPECT_EQ(refused.code, 1) << refused.out;
+  EXPECT_NE(refused.out.find("cannot continue this deck from the restart file"), std::string::npos) << refused.out;
+  EXPECT_NE(refused.out.find("the load history of steps 1..2 differs"), std::string::npos) << refused.out;
+  EXPECT_FALSE(fs::exists(dir / "zero"));
+  EXPECT_EQ(slurp(dir / "first" / "first.dat"), first_dat);
+}
