@@ -1,6 +1,8 @@
 // `tether run` on decks of the newer features, read back from its files:
-// temperature loads (.dat NT), bolt pretension (bolt force block, the cut in
-// the VTU) and ABAQUS/CAE instances (VTU arrays, analysis messages).
+// temperature loads (.dat NT, thermal strains THE in the .dat and the VTU),
+// bolt pretension (bolt force block, the cut in the VTU, a restart after the
+// step that holds the bolt length) and ABAQUS/CAE instances (VTU arrays,
+// analysis messages).
 
 #include <gtest/gtest.h>
 
