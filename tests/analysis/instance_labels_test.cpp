@@ -3,9 +3,12 @@
 // contact nodes alike.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "tether/analysis/discretization.hpp"
+#include "tether/analysis/step_body_forces.hpp"
 #include "tether/contact/contact_pair.hpp"
 #include "tether/io/deck_reader.hpp"
 
@@ -35,6 +38,61 @@ TEST(InstanceLabels, ContactNodesAreNamedByTheirLabelNotTheirIndex) {
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     const std::string text = nodes[k]->describe();
     EXPECT_NE(text.find(", slave node UPPER-1." + std::to_string(k + 1)), std::string::npos) << text;
+  }
+}
+
+// Pressure and body-force loads on an instance's elements are described
+// with the instance's label (inside tether the upper copy's element 4 is 14),
+// as analysis messages that come from them show them.
+TEST(InstanceLabels, PressureAndBodyForceLoadsNameTheirElementByInstance) {
+  std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/tests/io/decks/cae/one_part_twice.inp");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  const auto add_before = [&](const std::string& anchor, const std::string& lines) {
+    const auto at = deck.find(anchor);
+    ASSERT_NE(at, std::string::npos) << anchor;
+    deck.insert(at, lines);
+  };
+  add_before("*Surface Interaction", "*Density\n7.8e-9\n");
+  add_before("*Restart, write", "*Dload\nUpper-1.4, P3, 5.\nUpper-1.Set-1, GRAV, 9810., 0., -1.\n");
+  const Model model = read_deck_string(deck, "loads.inp");
+  const Discretization disc(model);
+  const auto pressures = disc.make_pressures(model.steps.at(0).pressures);
+  ASSERT_EQ(pressures.size(), 1u);
+  EXPECT_EQ(pressures[0]->describe(), "pressure on element UPPER-1.4 (CPE4) face S3");
+  const StepBodyForces body(disc, 0);
+  ASSERT_EQ(body.forces().size(), 4u);
+  for (const auto& f : body.forces()) {
+    const std::string d = f->describe();
+    EXPECT_EQ(d.rfind("gravity on element UPPER-1.", 0), 0u) << d;
+    EXPECT_EQ(d.find("element 1"), std::string::npos) << d;  // no internal label 11-14
+  }
+}
+
+// The calculix dialect's node areas of a node-based slave surface name a node
+// that belongs to no element as the user knows it (inside tether: 30).
+TEST(InstanceLabels, NodeBasedSlaveAreaErrorNamesTheNodeByInstance) {
+  std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/tests/io/decks/cae/one_part_twice.inp");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const auto at = deck.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    deck.replace(at, from.size(), to);
+  };
+  replace("      9,           1.,           1.\n", "      9,           1.,           1.\n     20,           2.,           2.\n");
+  replace("*End Assembly", "*Nset, nset=Loose, instance=Upper-1\n 1, 20\n*Surface, type=NODE, name=LooseSurface\n"
+                           "Loose\n*End Assembly");
+  replace("Slave, Master", "LooseSurface, Master");
+  const Model model = read_deck_string(deck, "loose.inp", nullptr, Dialect::Calculix);
+  try {
+    const Discretization disc(model);
+    FAIL() << "expected a ModelError";
+  } catch (const ModelError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("node UPPER-1.20 of node-based slave surface"), std::string::npos) << what;
   }
 }
 

@@ -283,6 +283,16 @@ TEST(Restart, AnotherModelIsRefusedNamingTheFileAndTheDifference) {
       {"another step-2 target", replaced(base, "PUSHED, 1, 1, 0.05", "PUSHED, 1, 1, 0.06"),
        "load history of steps 1..2 differs"},
       {"one step only", base.substr(0, base.find("*STEP, NLGEOM, INC=100")), "has only 1 step(s)"},
+      {"a body load in step 1",
+       replaced(replaced(base, "*ELASTIC\n", "*DENSITY\n1e-6\n*ELASTIC\n"), "*CLOAD\n8, 2, -0.5",
+                "*DLOAD\nTOP, GRAV, 1., 0., -1.\n*CLOAD\n8, 2, -0.5"),
+       "load history of steps 1..2 differs"},
+      {"initial temperatures", replaced(base, "*STEP, NLGEOM\n", "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nBASE, 20.\n*STEP, NLGEOM\n"),
+       "load history of steps 1..2 differs"},
+      {"temperatures in step 1", replaced(base, "*CLOAD\n8, 2, -0.5", "*TEMPERATURE\nBASE, 50.\n*CLOAD\n8, 2, -0.5"),
+       "load history of steps 1..2 differs"},
+      {"step 1's loads applied at once", replaced(base, "*STEP, NLGEOM\n*STATIC", "*STEP, NLGEOM, AMPLITUDE=STEP\n*STATIC"),
+       "load history of steps 1..2 differs"},
   };
   for (const Case& c : cases) {
     const std::string message = refusal(c.deck);

@@ -1,10 +1,14 @@
 // `tether run` on decks of the newer features, read back from its files:
-// temperature loads (.dat NT), bolt pretension (bolt force block, the cut in
-// the VTU) and ABAQUS/CAE instances (VTU arrays, analysis messages).
+// temperature loads (.dat NT, thermal strains THE in the .dat and the VTU),
+// bolt pretension (bolt force block, the cut in the VTU, a restart after the
+// step that holds the bolt length) and ABAQUS/CAE instances (VTU arrays,
+// analysis messages).
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -186,4 +190,180 @@ TEST(Cli, AnalysisMessagesNameInstanceNodesAsTheDeckDoes) {
   EXPECT_EQ(run.code, 2) << run.out;
   EXPECT_NE(run.out.find("node UPPER-1."), std::string::npos) << run.out;
   EXPECT_EQ(run.out.find("node 1"), std::string::npos) << run.out;  // no internal label 11-19
+}
+
+namespace {
+
+/// The values of the ascii Float64 DataArray `name` in the PointData of a .vtu.
+std::vector<double> ascii_point_doubles(const std::string& vtu, const std::string& name) {
+  const auto begin = vtu.find("<PointData");
+  const auto at = vtu.find("Name=\"" + name + "\"", begin);
+  if (begin == std::string::npos || at == std::string::npos || at > vtu.find("</PointData", begin)) return {};
+  const auto from = vtu.find('>', at) + 1;
+  std::istringstream in(vtu.substr(from, vtu.find("</DataArray>", from) - from));
+  std::vector<double> values;
+  for (double v = 0; in >> v;) values.push_back(v);
+  return values;
+}
+
+/// Rows (label, point, six components) of the .dat blocks whose title starts with `title`.
+std::vector<std::vector<double>> dat_rows(const std::string& dat, const std::string& title) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(dat);
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find(" for set ") != std::string::npos) {
+      inside = line.find(title) == 1;  // headers start with one blank
+      continue;
+    }
+    std::istringstream fields(line);
+    std::vector<double> row;
+    for (double v = 0; fields >> v;) row.push_back(v);
+    if (inside && row.size() == 8) rows.push_back(row);
+  }
+  return rows;
+}
+
+/// A free CPS8 plate 2 x 1 (two elements, quadratic: the exact displacement
+/// of a linear temperature field is quadratic) held against rigid motion only.
+/// Small strain: heated from 20 to T = 20 + 100 x (stress free). NLGEOM:
+/// heated uniformly to 1020 (stress free; a non-uniform field is not under
+/// finite strain). THE is requested in the .dat and the result files.
+std::string heated_plate_deck(bool nlgeom) {
+  std::string nodes, temperatures;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 5; ++i) {
+      if (j == 1 && (i == 1 || i == 3)) continue;  // element centres: no node
+      const int id = 1 + i + 5 * j;
+      const double x = 0.5 * i;
+      nodes += std::to_string(id) + ", " + std::to_string(x) + ", " + std::to_string(0.5 * j) + "\n";
+      temperatures += std::to_string(id) + ", " + std::to_string(nlgeom ? 1020.0 : 20 + 100 * x) + "\n";
+    }
+  return "*HEADING\nfree plate\n*NODE, NSET=ALL\n" + nodes +
+         "*ELEMENT, TYPE=CPS8, ELSET=E\n1, 1, 3, 13, 11, 2, 8, 12, 6\n2, 3, 5, 15, 13, 4, 10, 14, 8\n"
+         "*MATERIAL, NAME=M\n*ELASTIC\n2e5, 0.3\n*EXPANSION, ZERO=20\n1.2e-5\n"
+         "*SOLID SECTION, ELSET=E, MATERIAL=M\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\nALL, 20\n"
+         "*BOUNDARY\n1, 1, 2\n5, 2\n*STEP" + std::string(nlgeom ? ", NLGEOM" : "") +
+         "\n*STATIC\n*TEMPERATURE\n" + temperatures +
+         "*EL PRINT, ELSET=E\nE, THE\n*OUTPUT, FIELD\n*ELEMENT OUTPUT\nS, THE\n*END STEP\n";
+}
+
+}  // namespace
+
+// THE through `tether run`, read back from the .dat and the VTU, against the
+// closed form alpha (T - T0) of a free heated plate (stress free): at every
+// integration point THE is alpha (T(x) - T0) on xx, yy and zz and zero on
+// shear, and E equals it (small strain) or THE + THE^2 / 2 (Green-Lagrange,
+// NLGEOM); the VTU's nodal THE, the extrapolation, is alpha (T_node - T0).
+TEST(Cli, ThermalStrainTheIsPrintedAndWrittenAsAlphaDeltaT) {
+  const double alpha = 1.2e-5;
+  for (const bool nlgeom : {false, true}) {
+    SCOPED_TRACE(nlgeom ? "NLGEOM" : "small strain");
+    const auto closed_form = [&](double x) { return alpha * (nlgeom ? 1000.0 : 100 * x); };
+    const fs::path dir = scratch(nlgeom ? "the_nlgeom" : "the_small");
+    write(dir / "the.inp", heated_plate_deck(nlgeom));
+    const Result r = tether("run --ascii " + (dir / "the.inp").string() + " -o " + (dir / "out").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(r.out.find("not available"), std::string::npos) << r.out;
+    const std::string dat = slurp(dir / "out" / "the.dat");
+    const auto the = dat_rows(dat, "thermal strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)");
+    const auto e = dat_rows(dat, "strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)");
+    ASSERT_EQ(the.size(), 18u) << dat;
+    ASSERT_EQ(e.size(), 18u) << dat;
+    // 3 x 3 Gauss points: x = centre + 0.5 (-sqrt 0.6, 0, sqrt 0.6), three points each.
+    std::vector<double> expected, printed;
+    for (const double centre : {0.5, 1.5})
+      for (const double s : {-1.0, 0.0, 1.0})
+        for (int k = 0; k < 3; ++k) expected.push_back(closed_form(centre + 0.5 * s * std::sqrt(0.6)));
+    for (std::size_t k = 0; k < the.size(); ++k) {
+      const auto& t = the[k];
+      EXPECT_EQ(t[0], e[k][0]);
+      EXPECT_EQ(t[1], e[k][1]);
+      EXPECT_GT(t[2], 0.0);
+      EXPECT_EQ(t[3], t[2]) << "yy";
+      EXPECT_EQ(t[4], t[2]) << "zz";
+      EXPECT_EQ(t[5], 0.0);
+      for (int c = 6; c < 8; ++c) EXPECT_EQ(t[c], 0.0);
+      const double total = nlgeom ? t[2] + 0.5 * t[2] * t[2] : t[2];
+      for (int c = 2; c < 5; ++c) EXPECT_NEAR(e[k][c], total, 2e-6 * total) << "E against THE, column " << c;
+      EXPECT_NEAR(e[k][5], 0.0, 1e-6 * total);
+      printed.push_back(t[2]);
+    }
+    std::sort(expected.begin(), expected.end());
+    std::sort(printed.begin(), printed.end());
+    for (std::size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(printed[k], expected[k], 1e-6 * expected[k]) << k;
+    // VTU: THE at the nodes, six components (XX, YY, ZZ, XY, YZ, XZ).
+    const std::string vtu = slurp(dir / "out" / "the_1_1.vtu");
+    const auto ids = ascii_ints(vtu, "PointData", "NodeId");
+    const auto nodal = ascii_point_doubles(vtu, "THE");
+    ASSERT_EQ(ids.size(), 13u);
+    ASSERT_EQ(nodal.size(), 6u * ids.size()) << vtu.substr(0, 600);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const double eth = closed_form(0.5 * static_cast<double>((ids[i] - 1) % 5));
+      for (std::size_t c = 0; c < 3; ++c) EXPECT_NEAR(nodal[6 * i + c], eth, 1e-12) << ids[i] << "," << c;
+      for (std::size_t c = 3; c < 6; ++c) EXPECT_NEAR(nodal[6 * i + c], 0.0, 1e-15) << ids[i] << "," << c;
+    }
+  }
+}
+
+namespace {
+
+/// (time, tightening, bolt force) of each pretension block of a .dat.
+std::vector<std::array<double, 3>> bolt_rows(const std::string& dat) {
+  const std::string title = " pretension section (node,tightening,bolt force) for set PRETENSION-CUT and time ";
+  std::vector<std::array<double, 3>> rows;
+  for (std::size_t at = dat.find(title); at != std::string::npos; at = dat.find(title, at + 1)) {
+    double time = 0, tightening = 0, force = 0;
+    int node = 0;
+    if (std::sscanf(dat.c_str() + at + title.size(), "%lf %d %lf %lf", &time, &node, &tightening, &force) == 4)
+      rows.push_back({time, tightening, force});
+  }
+  return rows;
+}
+
+}  // namespace
+
+// A restart of the bolt deck after the step that holds the bolt length
+// (*BOUNDARY, FIXED): the continued run carries the held length into a third
+// step (head load 6: bolt force 10 + 0.6 x 6 = 13.6), as the uninterrupted run
+// does, and leaves the first run's files alone. A deck whose step 2 holds the
+// pretension node at 0 instead of FIXED has another load history and is
+// refused (the restart check used to ignore FIXED).
+TEST(Cli, PretensionRestartCarriesTheHeldBoltLengthAndRefusesAnotherHistory) {
+  const fs::path dir = scratch("pretension_restart");
+  const auto path = [&](const std::string& name) { return (dir / name).string(); };
+  std::string two = slurp(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/bolt_joint.inp");
+  const std::string fixed = "*BOUNDARY, FIXED\n100, 1\n";
+  ASSERT_NE(two.find(fixed), std::string::npos);
+  two.insert(two.find(fixed), "*RESTART, WRITE, FREQUENCY=1\n");
+  const std::string three =
+      two + "*STEP\n*STATIC\n1., 1.\n*CLOAD\n9, 2, 6.\n*NODE PRINT, NSET=PRET\nU, RF\n*END STEP\n";
+  write(dir / "first.inp", two);
+  write(dir / "job.inp", three);
+  ASSERT_EQ(tether("run " + path("first.inp") + " -o " + path("first")).code, 0);
+  ASSERT_EQ(tether("run " + path("job.inp") + " -o " + path("full")).code, 0);
+  ASSERT_TRUE(fs::exists(dir / "first" / "first.rst"));
+  const std::string first_dat = slurp(dir / "first" / "first.dat");
+
+  const auto r = tether("run " + path("job.inp") + " --restart " + path("first/first.rst") + " -o " + path("resumed"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::string resumed = slurp(dir / "resumed" / "job.dat"), full = slurp(dir / "full" / "job.dat");
+  const auto rows = bolt_rows(resumed);
+  ASSERT_EQ(rows.size(), 1u) << resumed;  // step 3 only
+  EXPECT_DOUBLE_EQ(rows[0][0], 3.0);
+  EXPECT_NEAR(rows[0][1], 10. / 1500 + 10. / 1000, 1e-6 * 0.0166667);  // the length held since step 1
+  EXPECT_NEAR(rows[0][2], 13.6, 1e-6 * 13.6);
+  ASSERT_LT(resumed.size(), full.size());
+  EXPECT_EQ(full.substr(full.size() - resumed.size()), resumed);
+  EXPECT_EQ(slurp(dir / "first" / "first.dat"), first_dat);
+
+  std::string held_at_zero = three;
+  held_at_zero.replace(held_at_zero.find(fixed), fixed.size(), "*BOUNDARY\n100, 1\n");
+  write(dir / "zero.inp", held_at_zero);
+  const auto refused = tether("run " + path("zero.inp") + " --restart " + path("first/first.rst") + " -o " + path("zero"));
+  EXPECT_EQ(refused.code, 1) << refused.out;
+  EXPECT_NE(refused.out.find("cannot continue this deck from the restart file"), std::string::npos) << refused.out;
+  EXPECT_NE(refused.out.find("the load history of steps 1..2 differs"), std::string::npos) << refused.out;
+  EXPECT_FALSE(fs::exists(dir / "zero"));
+  EXPECT_EQ(slurp(dir / "first" / "first.dat"), first_dat);
 }

@@ -108,4 +108,18 @@ TEST(CaeDeck, MessagesNameNodesAndElementsByInstance) {
                        {"*EQUATION inside a *PART instanced more than once", "UPPER-1"});
   expect_deck_error_at(replaced(deck, "1, 1, 2, 5, 4", "1, 1, 4, 5, 2"), "1, 1, 4, 5, 2",
                        {"element LOWER-1.1 (CPE4) is inverted", "corner node LOWER-1."});
+  // A *TIE warning lists the untied slave nodes by instance (inside tether the upper copy's 7-9 are 17-19).
+  std::string tie = replaced(deck, "*Elset, elset=_Slave_S1, internal, instance=Upper-1\n 1, 2\n*Surface, type=ELEMENT, name=Slave\n_Slave_S1, S1\n",
+                             "*Elset, elset=_Slave_S1, internal, instance=Upper-1\n 1, 2\n*Elset, elset=_Slave_S3, internal, "
+                             "instance=Upper-1\n 3, 4\n*Surface, type=ELEMENT, name=Slave\n_Slave_S1, S1\n_Slave_S3, S3\n");
+  tie = replaced(tie, "*Surface Interaction, name=IntProp-1\n*Contact Pair, interaction=IntProp-1\nSlave, Master\n",
+                 "*Tie, name=Glue\nSlave, Master\n");
+  std::vector<DeckWarning> warnings;
+  (void)read_deck_string(tie, "tie.inp", &warnings);
+  std::string text;
+  for (const DeckWarning& w : warnings) text += w.message + "\n";
+  EXPECT_NE(text.find("are not tied: UPPER-1.7, UPPER-1.8, UPPER-1.9"), std::string::npos) << text;
+  // A bad face of an instance's element (inside tether the upper copy's element 4 is 14).
+  expect_deck_error_at(replaced(deck, "*Restart, write", "*Dload\nUpper-1.4, P7, 5.\n*Restart, write"),
+                       "Upper-1.4, P7", {"bad face 'P7' for element UPPER-1.4 (CPE4)"});
 }

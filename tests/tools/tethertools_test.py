@@ -125,6 +125,15 @@ def test_deck(tmp_path):
     assert deck.face_local_nodes("CPE6", 3) == [2, 5, 0]
 
 
+def test_deck_node_lines_with_missing_coordinates(tmp_path):
+    """A *NODE line may omit coordinates (CalculiX's test decks write `1` for the origin): they are 0."""
+    path = tmp_path / "nodes.inp"
+    path.write_text("*NODE, NSET=N\n1\n2 ,10,0.\n3, ,4.\n4, 5\n")
+    d = deck.Deck(path)
+    assert d.xy == {1: (0.0, 0.0), 2: (10.0, 0.0), 3: (0.0, 4.0), 4: (5.0, 0.0)}
+    assert d.nsets["N"] == [1, 2, 3, 4]
+
+
 def test_deck_counts_agree_with_tether(tmp_path):
     """On the repository's decks the reader finds the nodes and elements tether's own reader finds."""
     cli = os.environ.get("TETHER_CLI")

@@ -144,7 +144,8 @@ class Deck:
         for line in data:
             t = line.split(",")
             ids.append(int(t[0]))
-            self.xy[ids[-1]] = (float(t[1]), float(t[2]) if len(t) > 2 and t[2].strip() else 0.0)
+            # Empty or missing coordinates are 0, as CalculiX and tether read them (`7` alone is (0, 0)).
+            self.xy[ids[-1]] = tuple(float(t[k]) if len(t) > k and t[k].strip() else 0.0 for k in (1, 2))
         if "NSET" in params:
             self.nsets.setdefault(params["NSET"].upper(), []).extend(ids)
 

@@ -65,7 +65,7 @@ std::map<int, double> calculix_node_areas(const Model& model, const Surface& sla
     const int corners = n_corners(e.type.shape);
     const bool uses_slave = std::any_of(e.nodes.begin(), e.nodes.end(), [&](int n) { return area.count(n) > 0; });
     if (uses_slave && (e.type.family == Family::Axisymmetric || e.type.shape == Shape::Tri6 || e.type.shape == Shape::Quad8))
-      throw ModelError("node-based slave surface " + slave.name + " touches element " + std::to_string(e.id) + " (" +
+      throw ModelError("node-based slave surface " + slave.name + " touches element " + label_text(model.instances, e.id) + " (" +
                        std::string(e.type.name) + "): in the calculix dialect its nodes take CalculiX's areas, which "
                        "tether models for linear plane elements only (CPE3/CPE4/CPS3/CPS4); use an element-face "
                        "surface, or --dialect abaqus (area 1 or as given)" + where);
@@ -89,7 +89,7 @@ std::map<int, double> calculix_node_areas(const Model& model, const Surface& sla
         if (auto it = area.find(n); it != area.end()) it->second += edge.second;
   for (const auto& [n, a] : area)
     if (!(a > 0))
-      throw ModelError("node " + std::to_string(model.node_ids[static_cast<std::size_t>(n)]) + " of node-based slave "
+      throw ModelError("node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(n)]) + " of node-based slave "
                        "surface " + slave.name + " belongs to no element, so it has no area in the calculix dialect" +
                        where);
   return area;

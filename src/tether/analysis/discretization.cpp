@@ -147,7 +147,8 @@ std::vector<std::unique_ptr<FacePressure>> Discretization::make_pressures(const 
     const Element& e = model_.elements[load.face.element];
     out.push_back(std::make_unique<FacePressure>(e.id, e.type, e.nodes, coordinates_of(model_, e.nodes), load.face.face,
                                                  thickness(load.face.element),
-                                                 *materials_[model_.sections[e.section].material], dofs_));
+                                                 *materials_[model_.sections[e.section].material], dofs_,
+                                                 label_text(model_.instances, e.id)));
   }
   return out;
 }

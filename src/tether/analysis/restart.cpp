@@ -25,6 +25,24 @@ class Hash {
   std::uint64_t h_ = 14695981039346656037ull;
 };
 
+/// The step's body loads (GRAV, CENTRIF) and *TEMPERATURE data, and the
+/// amplitudes they use into `amplitudes`.
+void add_body_loads_and_temperatures(Hash& history, const Step& s, std::set<int>& amplitudes) {
+  history.add(s.body_loads.size());
+  for (const BodyLoad& b : s.body_loads) {
+    history.add_int(static_cast<int>(b.kind)), history.add_int(b.element), history.add_double(b.magnitude);
+    for (int i = 0; i < 3; ++i) history.add_double(b.direction[i]), history.add_double(b.point[i]);
+    history.add_int(b.amplitude);
+    amplitudes.insert(b.amplitude);
+  }
+  history.add(s.temperatures.values.size());
+  history.add_int(s.temperatures.reset ? 1 : 0);
+  for (const NodeTemperature& t : s.temperatures.values) {
+    history.add_int(t.node), history.add_double(t.value), history.add_int(t.amplitude);
+    amplitudes.insert(t.amplitude);
+  }
+}
+
 }  // namespace
 
 RestartFingerprint restart_fingerprint(const Model& model, const Discretization& discretization, int contributions,
@@ -55,14 +73,20 @@ RestartFingerprint restart_fingerprint(const Model& model, const Discretization&
 
   Hash history;
   std::set<int> amplitudes;
+  history.add(model.initial_temperatures.size());
+  for (const NodeTemperature& t : model.initial_temperatures) history.add_int(t.node), history.add_double(t.value);
   const int n_steps = std::min(history_steps, static_cast<int>(model.steps.size()));
   for (int k = 0; k < n_steps; ++k) {
     const Step& s = model.steps[static_cast<std::size_t>(k)];
     history.add_int(s.nlgeom ? 1 : 0);
     history.add_double(s.period);
+    history.add_int((s.ramp_loads ? 1 : 0) + (s.ramp_prescribed ? 2 : 0));
     history.add(s.boundary.size());
-    for (const Prescribed& p : s.boundary)
+    for (const Prescribed& p : s.boundary) {
       history.add_int(p.node), history.add_int(p.dof), history.add_double(p.value), history.add_int(p.amplitude);
+      history.add_int((p.fixed ? 1 : 0) + (p.velocity ? 2 : 0));  // FIXED, TYPE=VELOCITY
+    }
+    add_body_loads_and_temperatures(history, s, amplitudes);
     history.add(s.cloads.size());
     for (const ConcentratedLoad& c : s.cloads)
       history.add_int(c.node), history.add_int(c.dof), history.add_double(c.magnitude), history.add_int(c.amplitude);
@@ -108,7 +132,8 @@ std::string fingerprint_differences(const RestartFingerprint& deck, const Restar
         std::to_string(deck.history_steps) + " step(s)");
   else if (deck.history_hash != file.history_hash)
     add("the load history of steps 1.." + std::to_string(deck.history_steps) +
-        " differs (NLGEOM, step period, boundary conditions, loads or their amplitudes)");
+        " differs (NLGEOM, step period, boundary conditions (FIXED and TYPE=VELOCITY included), loads, body "
+        "loads, temperatures or their amplitudes)");
   return out;
 }
 

@@ -9,9 +9,10 @@
 namespace tether {
 
 /// The fingerprint of `model` as discretized, with the load history of its
-/// first `history_steps` steps (NLGEOM, period, boundary conditions, loads and
-/// the amplitudes they use; not the increment controls or output requests,
-/// which a restarted run may change). `contributions` is the number of
+/// first `history_steps` steps (NLGEOM, period, AMPLITUDE=RAMP/STEP, boundary
+/// conditions with their kind (`FIXED`, `TYPE=VELOCITY`), loads, body loads,
+/// initial and step temperatures and the amplitudes they use; not the
+/// increment controls or output requests, which a restarted run may change). `contributions` is the number of
 /// contributions restart records index (see StaticAnalysis).
 RestartFingerprint restart_fingerprint(const Model& model, const Discretization& discretization, int contributions,
                                        int history_steps);

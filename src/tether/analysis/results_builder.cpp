@@ -127,8 +127,10 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   r.nodal_strain.assign(n_nodes, Tensor4{});
   const bool plastic = std::any_of(elements.begin(), elements.end(), [](const auto& e) { return e->has_history(); });
   if (plastic) start_plastic_results(discretization, state, r);
+  const bool thermal = !r.temperature.empty();
+  if (thermal) r.nodal_thermal_strain.assign(n_nodes, Tensor4{});
   std::vector<int> count(n_nodes, 0);
-  std::vector<Tensor4> element_stress, element_strain, element_pe;
+  std::vector<Tensor4> element_stress, element_strain, element_pe, element_the;
   std::vector<double> element_peeq;
   for (int first = 0; first < n_elements; first += kPointBlock) {
     const int last = std::min(n_elements, first + kPointBlock);
@@ -143,6 +145,11 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
       elements[e]->extrapolate_to_nodes(points, element_stress, element_strain);
       const auto& nodes = elements[e]->nodes();
       if (plastic) add_plastic_results(*elements[e], e, points, element_peeq, element_pe, r);
+      if (thermal) {
+        elements[e]->extrapolate_thermal_to_nodes(points, element_the);
+        for (std::size_t a = 0; a < nodes.size(); ++a)
+          for (int k = 0; k < 4; ++k) r.nodal_thermal_strain[nodes[a]][k] += element_the[a][k];
+      }
       for (std::size_t a = 0; a < nodes.size(); ++a) {
         for (int k = 0; k < 4; ++k) {
           r.nodal_stress[nodes[a]][k] += element_stress[a][k];
@@ -155,6 +162,8 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   for (int i = 0; i < n_nodes; ++i)
     if (count[i] > 1) {
       for (int k = 0; k < 4; ++k) r.nodal_stress[i][k] /= count[i], r.nodal_strain[i][k] /= count[i];
+      if (thermal)
+        for (int k = 0; k < 4; ++k) r.nodal_thermal_strain[i][k] /= count[i];
       if (!plastic) continue;
       r.nodal_peeq[i] /= count[i];
       for (int k = 0; k < 4; ++k) r.nodal_plastic_strain[i][k] /= count[i];

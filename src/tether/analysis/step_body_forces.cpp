@@ -64,7 +64,7 @@ StepBodyForces::StepBodyForces(const Discretization& discretization, int step_in
     for (int n : e.nodes) x.push_back(model_.coords[static_cast<std::size_t>(n)]);
     forces_.push_back(std::make_unique<BodyForce>(e.id, e.type, e.nodes, std::move(x), *material.density,
                                                   discretization.thickness(l.load.element), l.load,
-                                                  discretization.dofs()));
+                                                  discretization.dofs(), label_text(model_.instances, e.id)));
   }
 }
 

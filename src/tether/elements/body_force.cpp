@@ -9,8 +9,11 @@ namespace tether {
 
 BodyForce::BodyForce(int element_label, const ElementType& type, const std::vector<int>& node_indices,
                      std::vector<Eigen::Vector2d> ref_coords, double density, double thickness, const BodyLoad& load,
-                     const DofMap& dofs)
-    : element_label_(element_label), type_(type), kind_(load.kind), ref_coords_(std::move(ref_coords)) {
+                     const DofMap& dofs, std::string element_name)
+    : element_name_(element_name.empty() ? std::to_string(element_label) : std::move(element_name)),
+      type_(type),
+      kind_(load.kind),
+      ref_coords_(std::move(ref_coords)) {
   try {
     mass_ = consistent_mass(type, ref_coords_, density, thickness);
   } catch (const ModelError& e) {
@@ -57,7 +60,7 @@ void BodyForce::evaluate(const EvaluationState& s, LocalSystem& out, bool need_t
 
 std::string BodyForce::describe() const {
   return fmt::format("{} on element {} ({})", kind_ == BodyLoad::Kind::Gravity ? "gravity" : "centrifugal load",
-                     element_label_, type_.name);
+                     element_name_, type_.name);
 }
 
 }  // namespace tether

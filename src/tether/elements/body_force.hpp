@@ -36,9 +36,11 @@ class BodyForce final : public Contribution {
   /// point (its magnitude is ignored: see set_magnitude). Throws ModelError
   /// naming the element for a non-positive density or thickness, or an
   /// element whose mass cannot be integrated (det J <= 0, R <= 0).
+  /// `element_name`: the element as the user knows it (label_text():
+  /// `PLATE-1.12`), for messages; empty: its label.
   BodyForce(int element_label, const ElementType& type, const std::vector<int>& node_indices,
             std::vector<Eigen::Vector2d> ref_coords, double density, double thickness, const BodyLoad& load,
-            const DofMap& dofs);
+            const DofMap& dofs, std::string element_name = "");
 
   /// Sets the current magnitude: g [length/time^2] or omega^2 [1/time^2].
   void set_magnitude(double magnitude) { magnitude_ = magnitude; }
@@ -61,7 +63,7 @@ class BodyForce final : public Contribution {
   [[nodiscard]] Eigen::VectorXd nodal_forces(const Eigen::VectorXd& u, bool nlgeom) const;
 
  private:
-  int element_label_;
+  std::string element_name_;  ///< for messages: the element_name given, else the label
   ElementType type_;
   BodyLoad::Kind kind_;
   std::vector<int> dofs_;

@@ -9,6 +9,7 @@
 
 #include "tether/assembly/saved_state.hpp"
 #include "tether/fem/extrapolation.hpp"
+#include "tether/materials/thermal_model.hpp"
 
 namespace tether {
 
@@ -325,6 +326,7 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
   MaterialPoint mp;
   PointGeometry g;
   std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  const auto* thermal = dynamic_cast<const ThermalModel*>(material_);  // THE (none: zero)
   try {
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
@@ -347,6 +349,8 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
       pv.peeq = material_->equivalent_plastic_strain(state);
       const Vec6 pe = material_->plastic_strain(state);
       pv.plastic_strain = {pe(0), pe(1), pe(2), 0.5 * pe(3)};
+      const double eth = thermal ? thermal->thermal_strain(context(s, q, g)) : 0.0;
+      pv.thermal_strain = {eth, eth, eth, 0.0};
     }
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
@@ -435,6 +439,15 @@ void ContinuumElement::extrapolate_to_nodes(const std::vector<PointValues>& poin
         nodal_stress[a][c] += E(a, q) * points[q].stress[c];
         nodal_strain[a][c] += E(a, q) * points[q].strain[c];
       }
+}
+
+void ContinuumElement::extrapolate_thermal_to_nodes(const std::vector<PointValues>& points,
+                                                    std::vector<Tensor4>& nodal_thermal_strain) const {
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  nodal_thermal_strain.assign(n_nodes_, Tensor4{});
+  for (int a = 0; a < n_nodes_; ++a)
+    for (int q = 0; q < n_points_; ++q)
+      for (int c = 0; c < 4; ++c) nodal_thermal_strain[a][c] += E(a, q) * points[q].thermal_strain[c];
 }
 
 void ContinuumElement::extrapolate_plastic_to_nodes(const std::vector<PointValues>& points,

@@ -107,7 +107,8 @@ class ContinuumElement final : public Contribution {
 
   /// Values at the integration points, ABAQUS order: Cauchy stress; small
   /// strain, or Green-Lagrange strain under NLGEOM (tensor shear); current
-  /// position X + u; PEEQ and plastic strain. With a history they are the
+  /// position X + u; PEEQ and plastic strain; the thermal strain THE (zero
+  /// unless the material is a ThermalModel). With a history they are the
   /// converged trial state of s.u: read from the committed records when they
   /// were committed at s.u (the element's displacements equal the stamp),
   /// else evaluated from the committed history, as evaluate() does -- so
@@ -126,6 +127,9 @@ class ContinuumElement final : public Contribution {
   /// ABAQUS-like (see fem/extrapolation.hpp). `points` has n_points() entries.
   void extrapolate_to_nodes(const std::vector<PointValues>& points, std::vector<Tensor4>& nodal_stress,
                             std::vector<Tensor4>& nodal_strain) const;
+  /// As extrapolate_to_nodes, for the thermal strain THE.
+  void extrapolate_thermal_to_nodes(const std::vector<PointValues>& points,
+                                    std::vector<Tensor4>& nodal_thermal_strain) const;
   /// As extrapolate_to_nodes, for PEEQ and the plastic strain PE.
   void extrapolate_plastic_to_nodes(const std::vector<PointValues>& points, std::vector<double>& nodal_peeq,
                                     std::vector<Tensor4>& nodal_plastic_strain) const;

@@ -15,14 +15,19 @@ namespace tether {
 FacePressure::FacePressure(int element_label, const ElementType& type,
                            std::vector<int> element_node_indices,
                            std::vector<Eigen::Vector2d> element_ref_coords, int face,
-                           double thickness, const ConstitutiveModel& material, const DofMap& dofs)
-    : element_label_(element_label), type_(type), face_(face), thickness_(thickness), material_(&material) {
+                           double thickness, const ConstitutiveModel& material, const DofMap& dofs,
+                           std::string element_name)
+    : element_name_(element_name.empty() ? std::to_string(element_label) : std::move(element_name)),
+      type_(type),
+      face_(face),
+      thickness_(thickness),
+      material_(&material) {
   if (face < 0 || face >= n_faces(type.shape))
-    throw ModelError(fmt::format("element {} ({}) has no face S{}", element_label, type.name, face + 1));
+    throw ModelError(fmt::format("element {} ({}) has no face S{}", element_name_, type.name, face + 1));
   const int nn = n_nodes(type.shape);
   if (static_cast<int>(element_node_indices.size()) != nn ||
       static_cast<int>(element_ref_coords.size()) != nn)
-    throw ModelError(fmt::format("element {} ({}): expected {} nodes", element_label, type.name, nn));
+    throw ModelError(fmt::format("element {} ({}): expected {} nodes", element_name_, type.name, nn));
   const auto local = face_nodes(type.shape, face);
   const int nf = n_face_nodes(type.shape);
   for (int k = 0; k < nf; ++k) {
@@ -80,7 +85,7 @@ double FacePressure::thickness_stretch(const EvaluationState& s, std::size_t poi
 }
 
 std::string FacePressure::describe() const {
-  return fmt::format("pressure on element {} ({}) face S{}", element_label_, type_.name, face_ + 1);
+  return fmt::format("pressure on element {} ({}) face S{}", element_name_, type_.name, face_ + 1);
 }
 
 void FacePressure::evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const {

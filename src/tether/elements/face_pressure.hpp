@@ -35,10 +35,11 @@ class FacePressure final : public Contribution {
   /// for axisymmetric ones); material: the element's (used for the thickness
   /// of plane-stress faces under NLGEOM; must outlive the load). Throws
   /// ModelError when the face does not exist, the node count does not match,
-  /// or the face has zero length.
+  /// or the face has zero length. `element_name`: the element as the user
+  /// knows it (label_text(): `PLATE-1.12`), for messages; empty: its label.
   FacePressure(int element_label, const ElementType& type, std::vector<int> element_node_indices,
                std::vector<Eigen::Vector2d> element_ref_coords, int face, double thickness,
-               const ConstitutiveModel& material, const DofMap& dofs);
+               const ConstitutiveModel& material, const DofMap& dofs, std::string element_name = "");
 
   /// Sets the current pressure magnitude p [force/area].
   void set_pressure(double p) { pressure_ = p; }
@@ -67,7 +68,7 @@ class FacePressure final : public Contribution {
   /// `point` and its derivative over dofs() (into dF33_du, resized).
   [[nodiscard]] double thickness_stretch(const EvaluationState& s, std::size_t point, Eigen::VectorXd& dF33_du) const;
 
-  int element_label_;
+  std::string element_name_;  ///< for messages: the element_name given, else the label
   ElementType type_;
   int face_;
   double thickness_;

@@ -58,7 +58,7 @@ std::vector<int> DeckState::elements_of(std::string_view token, const SourceLoca
   if (is_integer_token(token)) {
     const int label = parse_label(token, where, "element label");
     if (line_index.count(label) && !model.element_index.count(label))
-      throw InputError(where, "element " + std::to_string(label) + " is a line element (" +
+      throw InputError(where, "element " + label_text(model.instances, label) + " is a line element (" +
                                   lines[static_cast<std::size_t>(line_index.at(label))].type +
                                   "), which carries no stiffness in tether: expected a solid element here (a line "
                                   "element names a face in *SURFACE, TYPE=ELEMENT, without a face id)");
@@ -117,11 +117,12 @@ void require_data(const KeywordBlock& block, std::string_view what) {
 }
 
 /// Face id "S1".."S4" (0-based result), checked against the element's shape.
-int parse_face_id(const std::string& token, const Element& e, const SourceLocation& at, char prefix) {
+int parse_face_id(const std::string& token, const Model& model, const Element& e, const SourceLocation& at,
+                  char prefix) {
   const std::string t = to_upper(token);
   const int n = n_faces(e.type.shape);
   if (t.size() == 2 && t[0] == prefix && t[1] >= '1' && t[1] <= '0' + n) return t[1] - '1';
-  throw InputError(at, "bad face '" + token + "' for element " + std::to_string(e.id) + " (" +
+  throw InputError(at, "bad face '" + token + "' for element " + label_text(model.instances, e.id) + " (" +
                            std::string(e.type.name) + "): expected " + prefix + "1.." + prefix +
                            std::to_string(n));
 }

@@ -104,8 +104,10 @@ std::vector<std::string> data_fields(const DataLine& line, std::size_t min_field
 void require_data(const KeywordBlock& block, std::string_view what);
 
 /// Face id `<prefix>1..<prefix>n` ("S2", "P3"; case-insensitive) of element
-/// `e`, returned 0-based; InputError naming the allowed range otherwise.
-int parse_face_id(const std::string& token, const Element& e, const SourceLocation& at, char prefix);
+/// `e` of `model`, returned 0-based; InputError naming the element as the
+/// user knows it (label_text()) and the allowed range otherwise.
+int parse_face_id(const std::string& token, const Model& model, const Element& e, const SourceLocation& at,
+                  char prefix);
 
 /// Sorts and removes duplicates.
 void sort_unique(std::vector<int>& v);

@@ -274,7 +274,7 @@ void handle_dload(DeckState& state, const KeywordBlock& block, const ParameterVa
                                line.text + "'");
     const double magnitude = parse_real(f[2], at, "pressure magnitude");
     for (int e : state.elements_of(f[0], at)) {
-      const int face = parse_face_id(f[1], state.model.elements[static_cast<std::size_t>(e)], at, 'P');
+      const int face = parse_face_id(f[1], state.model, state.model.elements[static_cast<std::size_t>(e)], at, 'P');
       added.push_back({{e, face}, magnitude, amplitude, at});
     }
   }

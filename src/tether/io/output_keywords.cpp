@@ -11,7 +11,7 @@ namespace tether::deck {
 namespace {
 
 const std::vector<std::string_view> kNodeVariables = {"U", "RF", "V", "A", "NT"};
-const std::vector<std::string_view> kElementVariables = {"S", "E", "PEEQ", "PE"};
+const std::vector<std::string_view> kElementVariables = {"S", "E", "THE", "PEEQ", "PE"};
 
 bool is_nodal(OutputRequest::Kind k) {
   return k == OutputRequest::Kind::NodePrint || k == OutputRequest::Kind::NodeFile;
@@ -20,7 +20,7 @@ bool is_nodal(OutputRequest::Kind k) {
 /// Reads the variable names of the data lines; unknown ones are ignored with a warning.
 std::vector<std::string> read_variables(DeckState& state, const KeywordBlock& block, OutputRequest::Kind kind) {
   const auto& allowed = is_nodal(kind) ? kNodeVariables : kElementVariables;
-  const std::string expected = is_nodal(kind) ? "U, RF, V, A, NT" : "S, E, PEEQ, PE";
+  const std::string expected = is_nodal(kind) ? "U, RF, V, A, NT" : "S, E, THE, PEEQ, PE";
   require_data(block, "the variables to write (" + expected + ")");
   std::vector<std::string> vars;
   for (const DataLine& line : block.data)

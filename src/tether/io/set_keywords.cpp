@@ -70,7 +70,7 @@ std::vector<ElementFace> element_surface_faces(const DeckState& state, const Key
         throw InputError(at, "'" + f[0] + "' names line elements, which have no faces " + f[1] +
                                  ": expected it without a face id (the faces of the solid elements the lines lie on)");
       for (int e : state.elements_of(f[0], at))
-        add({ElementFace{e, parse_face_id(f[1], state.model.elements[static_cast<std::size_t>(e)], at, 'S')}});
+        add({ElementFace{e, parse_face_id(f[1], state.model, state.model.elements[static_cast<std::size_t>(e)], at, 'S')}});
       continue;
     }
     if (!index) index.emplace(state.model);

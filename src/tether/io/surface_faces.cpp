@@ -55,7 +55,7 @@ std::vector<ElementFace> faces_under_lines(const DeckState& state, const FaceInd
   std::vector<ElementFace> out;
   for (int l : lines) {
     const DeckState::LineElement& line = state.lines[static_cast<std::size_t>(l)];
-    const std::string name = "line element " + std::to_string(line.id) + " (" + line.type + ", " + line.where.str() + ")";
+    const std::string name = "line element " + label_text(m.instances, line.id) + " (" + line.type + ", " + line.where.str() + ")";
     const std::vector<ElementFace> faces = index.faces_on(line.nodes[0], line.nodes[1]);
     if (faces.empty())
       throw InputError(at, name + " lies on no face of a solid element: expected its two end nodes to be the corners of "

@@ -63,11 +63,11 @@ std::vector<int> surface_nodes(const Model& model, const Surface& s) {
   return nodes;
 }
 
-/// Labels of up to `limit` nodes, for messages.
+/// Labels of up to `limit` nodes as the user knows them (label_text()), for messages.
 std::string labels(const Model& model, const std::vector<int>& nodes, std::size_t limit = 10) {
   std::string out;
   for (std::size_t i = 0; i < nodes.size() && i < limit; ++i)
-    out += (i ? ", " : "") + std::to_string(model.node_ids[static_cast<std::size_t>(nodes[i])]);
+    out += (i ? ", " : "") + label_text(model.instances, model.node_ids[static_cast<std::size_t>(nodes[i])]);
   if (nodes.size() > limit) out += ", ... (" + std::to_string(nodes.size()) + " in all)";
   return out;
 }

@@ -21,7 +21,7 @@ struct RestartFingerprint {
   std::int64_t contributions = 0;  ///< elements, constraints, user constraints, contact pairs
   std::uint64_t nodes_hash = 0;    ///< node labels and reference coordinates (bitwise)
   std::uint64_t elements_hash = 0; ///< element labels, types and connectivity
-  std::uint64_t history_hash = 0;  ///< steps 1..history_steps: NLGEOM, period, boundary conditions, loads, amplitudes
+  std::uint64_t history_hash = 0;  ///< steps 1..history_steps: their load history (see restart_fingerprint())
   std::int64_t history_steps = 0;
 };
 

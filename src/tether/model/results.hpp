@@ -23,6 +23,10 @@ struct PointValues {
   Tensor4 strain{};         ///< small strain, or Green-Lagrange strain under NLGEOM; tensor shear
   double peeq = 0;          ///< equivalent plastic strain PEEQ [-] (0 for elastic materials)
   Tensor4 plastic_strain{}; ///< plastic strain PE, tensor shear [-] (zero for elastic materials)
+  /// Thermal strain THE [-]: eps_th on the three normal components, no shear
+  /// (zero without *EXPANSION). Under NLGEOM too it is eps_th, the thermal
+  /// stretch minus one (F_th = (1 + eps_th) I), not a Green-Lagrange measure.
+  Tensor4 thermal_strain{};
 };
 
 /// The force a constraint exerts on one node: -sum_k lambda_k df_k/du over
@@ -149,6 +153,8 @@ struct IncrementResults {
   std::optional<EnergyTotals> energy;         ///< dynamic steps only
   std::vector<Tensor4> nodal_stress;          ///< per node: average of extrapolated element values
   std::vector<Tensor4> nodal_strain;          ///< per node, as above
+  /// THE per node, averaged as nodal_stress; empty when the deck gives no temperatures
+  std::vector<Tensor4> nodal_thermal_strain;
   /// Plasticity (all empty / nullopt when no element keeps a material history):
   std::vector<double> nodal_peeq;             ///< per node: PEEQ averaged as nodal_stress
   std::vector<Tensor4> nodal_plastic_strain;  ///< per node: PE averaged as nodal_stress, tensor shear

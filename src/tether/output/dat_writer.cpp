@@ -130,21 +130,28 @@ void write_temperatures(Out out, const Model& model, const Selection& sel, const
                    t.empty() ? 0.0 : unsigned_zero(t[static_cast<std::size_t>(i)]));
 }
 
-void write_points(Out out, const Model& model, const Selection& sel, const IncrementResults& r, bool stress) {
+/// Which tensor of the integration points a block of write_points prints.
+enum class PointTensor { Stress, Strain, ThermalStrain };
+
+void write_points(Out out, const Model& model, const Selection& sel, const IncrementResults& r, PointTensor what) {
   if (r.points.size() != static_cast<std::size_t>(model.n_elements()) && !(r.points.empty() && r.point_source))
     throw std::invalid_argument(fmt::format("DatWriter: EL PRINT needs integration-point values for {} elements, "
                                             "results have {}",
                                             model.n_elements(), r.points.size()));
+  // THE: tether's block (ccx prints no thermal strains), laid out as the strains.
   write_header(out,
-               stress ? "stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)"
-                      : "strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)",
+               what == PointTensor::Stress   ? "stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)"
+               : what == PointTensor::Strain ? "strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)"
+                                             : "thermal strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)",
                sel.name, r.total_time);
   std::vector<PointValues> buffer;
   for (const int e : sel.indices) {
     const auto& points = element_points(r, static_cast<std::size_t>(e), buffer);
     const int label = model.elements[static_cast<std::size_t>(e)].id - sel.label_offset;
     for (std::size_t k = 0; k < points.size(); ++k) {
-      const Tensor4& t = stress ? points[k].stress : points[k].strain;
+      const Tensor4& t = what == PointTensor::Stress   ? points[k].stress
+                         : what == PointTensor::Strain ? points[k].strain
+                                                       : points[k].thermal_strain;
       fmt::format_to(out, "{:10d}{:4d} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}\n", label, k + 1,
                      unsigned_zero(t[0]), unsigned_zero(t[1]), unsigned_zero(t[2]), unsigned_zero(t[3]), 0.0, 0.0);
     }
@@ -291,7 +298,8 @@ void write_contact_forces(Out out, const Model& model, const IncrementResults& r
         throw std::invalid_argument(fmt::format(
             "DatWriter: contact pair '{}': slave node {} carries a force but its master face (element {}, face {}) "
             "cannot be evaluated",
-            pair.name, model.node_ids[static_cast<std::size_t>(v.node)], v.master_element, v.master_face));
+            pair.name, label_text(model.instances, model.node_ids[static_cast<std::size_t>(v.node)]),
+            label_text(model.instances, v.master_element), v.master_face));
       sum += normal ? Eigen::Vector2d(v.normal_force * frame->n) : Eigen::Vector2d(-v.tangential_force * frame->t);
     }
     fmt::format_to(out, "\n {} for pair {}{}\n\n",
@@ -401,10 +409,10 @@ void DatWriter::check(const Model& model, const OutputRequest& r) {
   }
   for (const auto& v : r.variables) {
     const bool ok = nodal ? (v == "U" || v == "RF" || v == "V" || v == "A" || v == "NT")
-                          : (v == "S" || v == "E" || v == "PEEQ" || v == "PE");
+                          : (v == "S" || v == "E" || v == "THE" || v == "PEEQ" || v == "PE");
     if (!ok)
       throw InputError(r.where, fmt::format("{}: variable '{}' cannot be printed (tether prints {})", keyword, v,
-                                            nodal ? "U, RF, V, A and NT" : "S, E, PEEQ and PE"));
+                                            nodal ? "U, RF, V, A and NT" : "S, E, THE, PEEQ and PE"));
   }
 }
 
@@ -480,8 +488,9 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
                     results.total_time);
       else if (v == "NT")
         write_temperatures(out, model_, sel, results.temperature, results.total_time);
-      else if (v == "S" || v == "E")
-        write_points(out, model_, sel, results, v == "S");
+      else if (v == "S" || v == "E" || v == "THE")
+        write_points(out, model_, sel, results,
+                     v == "S" ? PointTensor::Stress : v == "E" ? PointTensor::Strain : PointTensor::ThermalStrain);
       else if (v == "PEEQ" || v == "PE")
         write_plastic_points(out, model_, sel, results, v == "PEEQ");
     }

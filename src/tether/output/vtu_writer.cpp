@@ -294,6 +294,7 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   check_size(r.element_stress.size(), n_elements, "element_stress");
   check_size(r.nodal_peeq.size(), n_nodes, "nodal_peeq");
   check_size(r.nodal_plastic_strain.size(), n_nodes, "nodal_plastic_strain");
+  check_size(r.nodal_thermal_strain.size(), n_nodes, "nodal_thermal_strain");
   check_size(r.element_peeq.size(), n_elements, "element_peeq");
 
   Sink sink(out);
@@ -346,6 +347,7 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
                              indexed([&](std::size_t i) { return von_mises(r.nodal_stress[i]); }));
   }
   if (!r.nodal_strain.empty()) write_tensors6(sink, enc, kIndent, "E", r.nodal_strain);
+  if (!r.nodal_thermal_strain.empty()) write_tensors6(sink, enc, kIndent, "THE", r.nodal_thermal_strain);
   if (!r.nodal_peeq.empty())
     write_data_array<double>(sink, enc, kIndent, "PEEQ", 1, n_nodes, indexed([&](std::size_t i) { return r.nodal_peeq[i]; }));
   if (!r.nodal_plastic_strain.empty()) write_tensors6(sink, enc, kIndent, "PE", r.nodal_plastic_strain);
