@@ -145,16 +145,19 @@ TEST(CliOutputSchedule, ExplicitTimeIntervalWritesAtItsMultiples) {
   expect_times(dat_times(dir), {3e-5, 6e-5, 9e-5, 1e-4});
 }
 
-// Without FREQUENCY or an interval an explicit step writes at 20 equal
-// intervals (abaqus dialect) and at every explicit increment (calculix
-// dialect, with a warning), the .dat and the VTU alike.
+// Without FREQUENCY or an interval an explicit step writes as ABAQUS/Explicit's
+// default output does (abaqus dialect: 20 equal intervals to the result files,
+// 200 to the .dat, here every one of the 100 increments), or at every explicit
+// increment (calculix dialect, with a warning).
 TEST(CliOutputSchedule, ExplicitDefaultsFollowTheDialect) {
   const std::string deck = explicit_bar("*NODE PRINT, NSET=TIP\nU\n");
   const fs::path abaqus = run("explicit_default_abaqus", deck);
   std::vector<double> twenty;
   for (int i = 1; i <= 20; ++i) twenty.push_back(i * 5e-6);
-  expect_times(dat_times(abaqus), twenty);
+  EXPECT_EQ(dat_times(abaqus).size(), 100U);
   expect_times(vtu_times(abaqus), twenty);
+  const fs::path field = run("explicit_default_field", explicit_bar("*NODE FILE\nU\n"));
+  expect_times(vtu_times(field), twenty);
   std::string out;
   const fs::path calculix = run("explicit_default_calculix", deck, "--dialect calculix", &out);
   EXPECT_EQ(dat_times(calculix).size(), 100U);
@@ -218,4 +221,15 @@ TEST(CliOutputSchedule, ReportsWithNothingDueGiveTheSameEnergies) {
     fields.push_back(last.substr(at, comma - at));
   ASSERT_GE(fields.size(), 9U);
   EXPECT_GT(std::stod(fields[8]), 0);
+}
+
+// With no file request the result files follow ABAQUS/Standard's default
+// output of a dynamic step: every 10th increment (and the last).
+TEST(CliOutputSchedule, ImplicitDynamicResultFilesDefaultToEveryTenthIncrement) {
+  std::string deck = explicit_bar("*NODE PRINT, NSET=TIP\nU\n");
+  const std::string step = "*DYNAMIC, EXPLICIT, DIRECT\n1e-6, 1e-4\n";
+  deck.replace(deck.find(step), step.size(), "*DYNAMIC, DIRECT\n1e-6, 2.5e-5\n");
+  const fs::path dir = run("implicit_default", deck);
+  expect_times(vtu_times(dir), {1e-5, 2e-5, 2.5e-5});
+  EXPECT_EQ(dat_times(dir).size(), 25U);  // the print request: every increment
 }

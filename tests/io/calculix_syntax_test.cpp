@@ -1,6 +1,8 @@
 // Syntax CalculiX accepts and tether reads the same way: names used before the
 // line that defines them (CalculiX's reading order), empty coordinates, OFFSET=0
-// on *SOLID SECTION, a single-row *ELASTIC with a temperature, a lone '*'.
+// on *SOLID SECTION, a single-row *ELASTIC with a temperature, a lone '*',
+// keywords, parameters and choices written without their blanks, and *NODE
+// lines with ABAQUS's normal direction (fields 5-7).
 #include <gtest/gtest.h>
 
 #include "deck_test_support.hpp"
@@ -144,4 +146,37 @@ TEST(CalculixSyntax, LoneStarLineIsSkippedWithAWarning) {
   expect_deck_error_at(replaced(kDeck, "*MATERIAL", "*\n1, 2\n*MATERIAL"), "1, 2\n*MAT",
                        {"data line under a lone '*'"});
   expect_deck_error_at(replaced(kDeck, "*MATERIAL", "*, NAME=X\n*MATERIAL"), "*, NAME", {"empty keyword"});
+}
+
+// CalculiX removes every blank of a keyword line before it reads it, so its
+// decks may write *SOLIDSECTION, *ENDSTEP, TYPE=NODETOSURFACE: tether reads
+// them as the keywords, parameters and choices they spell.
+TEST(CalculixSyntax, KeywordsParametersAndChoicesWithoutTheirBlanks) {
+  std::string deck = replaced(kBackwards, "*SOLID SECTION,", "*SOLIDSECTION,");
+  deck = replaced(deck, "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR", "*SURFACEBEHAVIOR,PRESSURE-OVERCLOSURE=LINEAR");
+  deck = replaced(deck, "*CONTACT PAIR, INTERACTION=SOFT", "*CONTACTPAIR, INTERACTION=SOFT, TYPE=NODETOSURFACE");
+  deck = replaced(deck, "*END STEP", "*ENDSTEP");
+  const Model m = read_deck_string(deck, "c.inp");
+  const Model reference = read_deck_string(kBackwards, "c.inp");
+  ASSERT_EQ(m.steps.size(), reference.steps.size());
+  ASSERT_EQ(m.contact_pairs.size(), 1U);
+  EXPECT_EQ(m.sections.size(), reference.sections.size());
+  EXPECT_TRUE(m.contact_pairs[0].node_to_surface);
+  ASSERT_EQ(m.interactions.size(), reference.interactions.size());
+  // A name that spells no keyword even without blanks is still unknown.
+  EXPECT_THROW(read_deck_string(replaced(kBackwards, "*SOLID SECTION,", "*SOLIDSECTON,"), "c.inp"), InputError);
+}
+
+// ABAQUS's *NODE lines may carry a normal direction (fields 5-7, for shells
+// and beams); CalculiX ignores it. tether ignores it with one warning.
+TEST(CalculixSyntax, NodeNormalDirectionFieldsAreIgnoredWithAWarning) {
+  std::vector<DeckWarning> warnings;
+  const Model m = read_deck_string(replaced(replaced(kDeck, "2, 1, 0\n", "2, 1, 0, , 0.\n"), "4, 0, 1\n",
+                                            "4, 0, 1, 0, 0, 0, 1\n"),
+                                   "c.inp", &warnings);
+  EXPECT_EQ(m.coords[static_cast<std::size_t>(m.node_index.at(2))], Eigen::Vector2d(1, 0));
+  EXPECT_EQ(m.coords[static_cast<std::size_t>(m.node_index.at(4))], Eigen::Vector2d(0, 1));
+  int n = 0;
+  for (const auto& w : warnings) n += w.message.find("normal direction") != std::string::npos;
+  EXPECT_EQ(n, 1);
 }

@@ -91,7 +91,10 @@ TEST(DeckErrors, DuplicateAndMissingNodes) {
                        {"element 2 references undefined node 66"});
   expect_deck_error_at(replaced(kDeck, "LEFT, 1, 2", "44, 1, 2"), "44, 1, 2", {"undefined node 44"});
   expect_deck_error_at(replaced(kDeck, "1, 4\n*NSET", "1, 4, 9\n*NSET"), "1, 4, 9", {"undefined node 9"});
-  expect_deck_error_at(replaced(kDeck, "1, 0, 0\n", "1, 0, 0, 0, 7\n"), "1, 0, 0, 0, 7", {"expected `label, x, y[, z]`"});
+  expect_deck_error_at(replaced(kDeck, "1, 0, 0\n", "1, 0, 0, 0, 0, 0, 1, 7\n"), "1, 0, 0, 0, 0, 0, 1, 7",
+                       {"expected `label, x, y[, z[, nx, ny, nz]]`"});
+  expect_deck_error_at(replaced(kDeck, "1, 0, 0\n", "1, 0, 0, 0, 0, x\n"), "1, 0, 0, 0, 0, x",
+                       {"bad number 'x'", "normal direction component"});
 }
 
 TEST(DeckErrors, WrongNodeCountForTheType) {

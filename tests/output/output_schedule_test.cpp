@@ -108,9 +108,17 @@ TEST(OutputSchedule, TimeMarkPointsComeFromTimeMarksRequestsOnly) {
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(points[i], expected[i], 1e-15);
 }
 
-TEST(OutputSchedule, ResultFilesDefaultToEveryIncrementOrTwentyExplicitIntervals) {
-  EXPECT_EQ(default_file_request(false).number_interval, 0);
-  EXPECT_EQ(default_file_request(false).frequency, 1);
-  EXPECT_EQ(default_file_request(true).number_interval, kExplicitDefaultIntervals);
-  EXPECT_EQ(explicit_marks(default_file_request(true), 1000, 1).size(), 20U);
+TEST(OutputSchedule, ResultFilesDefaultAsAbaqusDefaultOutput) {
+  // ABAQUS's default output: every increment (static), every 10th (dynamic), 20 intervals (explicit).
+  EXPECT_EQ(default_file_request(StepProcedure::Static).number_interval, 0);
+  EXPECT_EQ(default_file_request(StepProcedure::Static).frequency, 1);
+  EXPECT_EQ(default_file_request(StepProcedure::ImplicitDynamic).frequency, 10);
+  EXPECT_EQ(default_file_request(StepProcedure::ExplicitDynamic).number_interval, kExplicitDefaultIntervals);
+  EXPECT_EQ(explicit_marks(default_file_request(StepProcedure::ExplicitDynamic), 1000, 1).size(), 20U);
+  IncrementResults r;
+  EXPECT_EQ(procedure_of(r), StepProcedure::Static);
+  r.energy = EnergyTotals{};
+  EXPECT_EQ(procedure_of(r), StepProcedure::ImplicitDynamic);
+  r.explicit_span = IncrementResults::ExplicitSpan{0, 1, 2};
+  EXPECT_EQ(procedure_of(r), StepProcedure::ExplicitDynamic);
 }

@@ -56,7 +56,8 @@ void ExplicitDynamicProcedure::plan_reports() {
     report_marks_.insert(report_marks_.end(), marks.begin(), marks.end());
   };
   for (const OutputRequest& r : step.outputs) add(r);
-  if (std::none_of(step.outputs.begin(), step.outputs.end(), is_file_request)) add(default_file_request(true));
+  if (std::none_of(step.outputs.begin(), step.outputs.end(), is_file_request))
+    add(default_file_request(StepProcedure::ExplicitDynamic));
   std::sort(report_marks_.begin(), report_marks_.end());
   report_marks_.erase(std::unique(report_marks_.begin(), report_marks_.end()), report_marks_.end());
 }
@@ -67,8 +68,9 @@ bool ExplicitDynamicProcedure::output_due(const IncrementResults::ExplicitSpan& 
   probe.period = system_.step().period > 0 ? system_.step().period : 1;
   const auto& outputs = system_.step().outputs;
   const auto due = [&](const OutputRequest& r) { return is_due(r, probe, last_in_step); };
+  const bool default_files = std::none_of(outputs.begin(), outputs.end(), is_file_request);
   return last_in_step || std::any_of(outputs.begin(), outputs.end(), due) ||
-         (std::none_of(outputs.begin(), outputs.end(), is_file_request) && due(default_file_request(true)));
+         (default_files && due(default_file_request(StepProcedure::ExplicitDynamic)));
 }
 
 void ExplicitDynamicProcedure::check_supported() const {

@@ -61,8 +61,8 @@ ParameterSpec frequency_param() {
   return integer("FREQUENCY", "1", "Write every n-th increment (0: never); the last increment of the step "
                                    "is always written. In *DYNAMIC, EXPLICIT steps n counts explicit increments "
                                    "(as in ABAQUS/Explicit and CalculiX); without FREQUENCY an explicit step "
-                                   "writes at 20 equal intervals (abaqus dialect) or at every explicit increment "
-                                   "(calculix dialect).");
+                                   "writes at 20 equal intervals to the result files and 200 to the .dat (abaqus "
+                                   "dialect) or at every explicit increment (calculix dialect).");
 }
 
 std::vector<KeywordSpec> build_table() {
@@ -102,8 +102,9 @@ std::vector<KeywordSpec> build_table() {
       {"HEADING", kModelData, "Title of the analysis; the data lines are kept as the model heading.",
        "free text lines", {}, handle_heading, ""},
       {"NODE", kModelData, "Defines nodes by label and coordinates.",
-       "`label, x, y[, z]` ((r, z) for axisymmetric models; a non-zero z is ignored with a warning; empty or "
-       "missing coordinates are 0, as in CalculiX)",
+       "`label, x, y[, z[, nx, ny, nz]]` ((r, z) for axisymmetric models; a non-zero z is ignored with a "
+       "warning; empty or missing coordinates are 0, as in CalculiX; fields 5-7, ABAQUS's normal direction for "
+       "shells and beams, are ignored with a warning, as CalculiX ignores them)",
        {name("NSET", "Also add the nodes to this node set.")}, handle_node, ""},
       {"ELEMENT", kModelData,
        "Defines 2D continuum elements of one type, or line elements (T2D2/T2D3/T3D2/T3D3, as Gmsh writes "

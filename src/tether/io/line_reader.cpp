@@ -31,6 +31,41 @@ bool is_comment(std::string_view line) { return line.size() >= 2 && line[0] == '
 
 bool is_blank(std::string_view line) { return trim(line).empty(); }
 
+/// `name` without its blanks ("SOLID SECTION" -> "SOLIDSECTION").
+std::string without_blanks(std::string_view name) {
+  std::string out;
+  for (char c : name)
+    if (c != ' ') out += c;
+  return out;
+}
+
+/// The table's spelling of a keyword or parameter name written without some
+/// of its blanks (CalculiX removes every blank of a keyword line, so its
+/// decks may write *SOLIDSECTION or *ENDSTEP): `name` itself when it is one
+/// of `names` or when no name matches it blank for blank.
+template <class Names, class NameOf>
+std::string canonical_name(const std::string& name, const Names& names, NameOf name_of) {
+  const std::string bare = without_blanks(name);
+  for (const auto& n : names)
+    if (name_of(n) == name) return name;
+  for (const auto& n : names)
+    if (without_blanks(name_of(n)) == bare) return std::string(name_of(n));
+  return name;
+}
+
+/// A parameter's name and, for a choice, its value in the table's spelling
+/// when written without some of its blanks (TYPE=NODETOSURFACE, as CalculiX
+/// reads TYPE=NODE TO SURFACE).
+void canonical_parameter(const KeywordSpec& spec, Parameter& p) {
+  p.name = canonical_name(p.name, spec.parameters, [](const ParameterSpec& q) { return q.name; });
+  const auto it = std::find_if(spec.parameters.begin(), spec.parameters.end(),
+                               [&](const ParameterSpec& q) { return q.name == p.name; });
+  if (it == spec.parameters.end() || it->type != ParameterType::Choice || !p.has_value) return;
+  const std::string value = normalize_name(p.value);
+  const std::string choice = canonical_name(value, it->choices, [](std::string_view c) { return c; });
+  if (choice != value) p.value = choice;
+}
+
 /// Parses a complete keyword line ("*NAME, P1, P2=v").
 KeywordBlock parse_keyword_line(std::string_view text, SourceLocation where) {
   const DataFields split = split_data_line(trim(text).substr(1));
@@ -39,7 +74,9 @@ KeywordBlock parse_keyword_line(std::string_view text, SourceLocation where) {
   if (split.fields.size() == 1 && split.fields[0].empty()) return block;  // a lone '*': the reader skips it
   if (split.fields.empty() || split.fields[0].empty())
     throw InputError(block.where, "empty keyword: expected a keyword name after '*', e.g. *NODE");
-  block.keyword = normalize_name(split.fields[0]);
+  block.keyword = canonical_name(normalize_name(split.fields[0]), keyword_table(),
+                                 [](const KeywordSpec& k) { return k.name; });
+  const KeywordSpec* spec = lookup_keyword(block.keyword);
   for (std::size_t i = 1; i < split.fields.size(); ++i) {
     const std::string& f = split.fields[i];
     if (f.empty()) continue;
@@ -54,6 +91,7 @@ KeywordBlock parse_keyword_line(std::string_view text, SourceLocation where) {
     }
     if (p.name.empty())
       throw InputError(block.where, "parameter without a name in '" + f + "' on *" + block.keyword);
+    if (spec) canonical_parameter(*spec, p);
     block.parameters.push_back(std::move(p));
   }
   return block;

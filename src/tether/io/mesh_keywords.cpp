@@ -106,17 +106,25 @@ void handle_node(DeckState& state, const KeywordBlock& block, const ParameterVal
   Model& m = state.model;
   std::vector<int> added;
   added.reserve(block.data.size());
-  bool warned_z = false;
+  bool warned_z = false, warned_normal = false;
   for (const DataLine& line : block.data) {
     const SourceLocation at = line.where();
-    // Empty or missing coordinates are 0, as CalculiX reads them.
-    const auto f = data_fields(line, 1, 4, "`label, x, y[, z]`");
+    // Empty or missing coordinates are 0, as CalculiX reads them. Fields 5-7
+    // are ABAQUS's normal direction (shells and beams only; CalculiX ignores them).
+    const auto f = data_fields(line, 1, 7, "`label, x, y[, z[, nx, ny, nz]]`");
     const int label = parse_label(f[0], at, "node label");
     const double x = f.size() < 2 || f[1].empty() ? 0.0 : parse_real(f[1], at, "x coordinate");
     const double y = f.size() < 3 || f[2].empty() ? 0.0 : parse_real(f[2], at, "y coordinate");
-    if (f.size() == 4 && !f[3].empty() && parse_real(f[3], at, "z coordinate") != 0.0 && !warned_z) {
+    if (f.size() >= 4 && !f[3].empty() && parse_real(f[3], at, "z coordinate") != 0.0 && !warned_z) {
       state.warn(at, "non-zero z coordinate ignored: tether models are 2D (x, y)");
       warned_z = true;
+    }
+    for (std::size_t k = 4; k < f.size(); ++k)
+      if (!f[k].empty()) (void)parse_real(f[k], at, "normal direction component");
+    if (f.size() > 4 && !warned_normal) {
+      state.warn(at, "fields 5-7 of *NODE (a normal direction in ABAQUS, for shells and beams; CalculiX ignores "
+                     "them) are ignored: tether's continuum elements use no nodal normals");
+      warned_normal = true;
     }
     if (m.node_index.count(label))
       throw InputError(at, "duplicate node " + std::to_string(label) +

@@ -259,15 +259,17 @@ void carry_output_requests(DeckState& state, Step& s) {
 }
 
 /// Explicit steps: requests written without FREQUENCY, NUMBER INTERVAL or
-/// TIME INTERVAL (carried ones included) write at 20 equal intervals in the
-/// abaqus dialect (ABAQUS/Explicit's default) and at every explicit increment
-/// in the calculix dialect (CalculiX's FREQUENCY=1), which is said.
+/// TIME INTERVAL (carried ones included) write, in the abaqus dialect, as
+/// ABAQUS/Explicit's default output does: at 20 equal intervals to the result
+/// files (field output) and at 200 to the .dat (history output); in the
+/// calculix dialect at every explicit increment (CalculiX's FREQUENCY=1),
+/// which is said.
 void default_explicit_schedules(DeckState& state, Step& s) {
   const bool calculix = state.model.dialect == Dialect::Calculix;
   for (OutputRequest& r : s.outputs) {
     if (r.schedule_given || r.frequency == 0) continue;
     if (!calculix) {
-      r.number_interval = kExplicitDefaultIntervals;
+      r.number_interval = is_file_request(r) ? kExplicitDefaultIntervals : kExplicitDefaultHistoryIntervals;
       continue;
     }
     state.warn(r.where, "this output request of explicit step " + s.name + " has no FREQUENCY: it writes at every "

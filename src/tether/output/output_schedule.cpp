@@ -94,11 +94,17 @@ bool is_file_request(const OutputRequest& request) {
   return request.kind == K::NodeFile || request.kind == K::ElementFile || request.kind == K::ContactFile;
 }
 
-OutputRequest default_file_request(bool explicit_step) {
+OutputRequest default_file_request(StepProcedure procedure) {
   OutputRequest r;
   r.kind = OutputRequest::Kind::NodeFile;
-  if (explicit_step) r.number_interval = kExplicitDefaultIntervals;
+  if (procedure == StepProcedure::ExplicitDynamic) r.number_interval = kExplicitDefaultIntervals;
+  if (procedure == StepProcedure::ImplicitDynamic) r.frequency = kImplicitDynamicDefaultFrequency;
   return r;
+}
+
+StepProcedure procedure_of(const IncrementResults& results) {
+  if (results.explicit_span) return StepProcedure::ExplicitDynamic;
+  return results.energy ? StepProcedure::ImplicitDynamic : StepProcedure::Static;
 }
 
 }  // namespace tether

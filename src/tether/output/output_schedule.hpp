@@ -17,9 +17,13 @@
 
 namespace tether {
 
-/// The number of equal intervals of an explicit step's default request
-/// (abaqus dialect; ABAQUS/Explicit's NUMBER INTERVAL default).
+/// The equal intervals of an explicit step's requests written without a
+/// schedule (abaqus dialect), as ABAQUS/Explicit's default output: 20 for
+/// field output (the result files), 200 for history output (the .dat).
 inline constexpr int kExplicitDefaultIntervals = 20;
+inline constexpr int kExplicitDefaultHistoryIntervals = 200;
+/// ABAQUS/Standard's default output of dynamic steps: every 10th increment.
+inline constexpr int kImplicitDynamicDefaultFrequency = 10;
 
 /// True when `request` writes the increment of `results` (its increment,
 /// step time, increment size, period and, in explicit steps, its span of
@@ -39,8 +43,13 @@ std::vector<double> time_mark_points(const Step& step);
 /// A request for the result files (*NODE FILE, *EL FILE, *CONTACT FILE, *OUTPUT, FIELD).
 bool is_file_request(const OutputRequest& request);
 
-/// The request the result files follow when a step has none of its own:
-/// every increment, and in explicit steps NUMBER INTERVAL=20.
-OutputRequest default_file_request(bool explicit_step);
+/// The request the result files follow when a step has none of its own, as
+/// ABAQUS's default output: every increment of a static step, every 10th of
+/// an implicit dynamic one, 20 equal intervals of an explicit one.
+OutputRequest default_file_request(StepProcedure procedure);
+
+/// The procedure whose step produced `results` (explicit reports carry
+/// their span, dynamic increments their energies).
+StepProcedure procedure_of(const IncrementResults& results);
 
 }  // namespace tether

@@ -43,7 +43,7 @@ std::filesystem::path prepared(const std::filesystem::path& directory, const std
 
 bool vtu_due(const std::vector<OutputRequest>& requests, const IncrementResults& results, bool last_in_step) {
   if (std::none_of(requests.begin(), requests.end(), is_file_request))
-    return is_due(default_file_request(results.explicit_span.has_value()), results, last_in_step);
+    return is_due(default_file_request(procedure_of(results)), results, last_in_step);
   return std::any_of(requests.begin(), requests.end(), [&](const OutputRequest& r) {
     return is_file_request(r) && is_due(r, results, last_in_step);
   });
