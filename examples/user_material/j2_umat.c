@@ -36,7 +36,7 @@ TETHER_UMAT_EXPORT void umat_(double* stress, double* statev, double* ddsdde, do
                               const double* drot, double* pnewdt, const double* celent, const double* dfgrd0,
                               const double* dfgrd1, const int* noel, const int* npt, const int* layer,
                               const int* kspt, const int* kstep, const int* kinc, size_t cmname_length) {
-  (void)scd, (void)rpl, (void)ddsddt, (void)drplde, (void)drpldt, (void)time, (void)dtime, (void)temp, (void)dtemp;
+  (void)scd, (void)rpl, (void)ddsddt, (void)drplde, (void)drpldt, (void)temp, (void)dtemp;
   (void)predef, (void)dpred, (void)cmname, (void)ndi, (void)nshr, (void)nprops, (void)coords, (void)drot;
   (void)pnewdt, (void)celent, (void)dfgrd0, (void)dfgrd1, (void)noel, (void)npt, (void)layer, (void)kspt;
   (void)kstep, (void)kinc, (void)cmname_length;
@@ -70,6 +70,12 @@ TETHER_UMAT_EXPORT void umat_(double* stress, double* statev, double* ddsdde, do
     for (int i = 0; i < 3; ++i) statev[i] += sqrt(1.5) * dp * nrm[i];
     statev[3] += 2 * sqrt(1.5) * dp * nrm[3]; /* engineering shear */
     statev[4] = p_old + dp;
+  } else if (time[0] > 1e-9 * (time[0] + *dtime) && q - k > -1e-6 * k) {
+    /* On the yield surface in an increment that continues a step (a point
+     * that yielded in the last one, at its first iteration): the loading
+     * tangent, the plastic one at dp = 0, as *PLASTIC gives it there. */
+    for (int i = 0; i < 4; ++i) nrm[i] = s[i] / norm;
+    theta_bar = 1 / (1 + H / (3 * mu));
   }
   for (int i = 0; i < 3; ++i) stress[i] = s[i] + kappa * vol;
   stress[3] = s[3];

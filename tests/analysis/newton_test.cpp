@@ -88,5 +88,18 @@ TEST(Newton, AFallingResidualResetsTheCount) {
   EXPECT_EQ(out.status, NewtonOutcome::Status::TooManyIterations);
 }
 
+TEST(Newton, GrowthBelowOneHundredthOfTheStartDoesNotCount) {
+  // Residuals that have fallen two orders below the larger of the first two
+  // (here 100) and then grow, as where integration points switch between the
+  // elastic and the plastic branch near the solution: Newton goes on.
+  const NewtonOutcome settled = solve({100, 50, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95}, {});
+  EXPECT_EQ(settled.status, NewtonOutcome::Status::TooManyIterations);
+  EXPECT_EQ(settled.iterations, Controls{}.max_iterations);
+  // Above it, two growths in a row are divergence as before.
+  const NewtonOutcome growing = solve({100, 50, 1.5, 1.6, 1.7, 1.8}, {});
+  EXPECT_EQ(growing.status, NewtonOutcome::Status::Diverged);
+  EXPECT_EQ(growing.iterations, 4);
+}
+
 }  // namespace
 }  // namespace tether

@@ -38,6 +38,15 @@ std::string hardening_cylinder(const std::string& material) {
   return replaced(d, "*STATIC\n0.25, 1.\n", "*STATIC\n0.25, 1.\n*CONTROLS, PARAMETERS=FIELD\n1e-12, 1e-12\n");
 }
 
+/// A data line of the values, exactly (17 digits).
+std::string numbers(std::initializer_list<double> values) {
+  std::ostringstream s;
+  s.precision(17);
+  const char* separator = "";
+  for (double v : values) s << separator << v, separator = ", ";
+  return s.str() + "\n";
+}
+
 double relative(double a, double b, double scale) { return std::abs(a - b) / scale; }
 
 std::string error_of(const std::string& deck) {
@@ -188,5 +197,51 @@ TEST(UserMaterial, RateDependentRoutineRelaxesAtAHeldStrain) {
     const double expected = (lambda + 2 * mu) * 1e-3 * std::pow(2.0 / 3.0, static_cast<double>(k + 1));
     for (const auto& p : run.recorder.results[k].points[0])
       EXPECT_NEAR(p.stress[0], expected, 1e-12 * (lambda + 2 * mu) * 1e-3) << "increment " << k + 1;
+  }
+}
+
+TEST(UserMaterial, RoutineReadsTheTemperatureAtTheStartAndItsIncrement) {
+  // One CPE4 held in x at both sides, heated from 20 to 220 in four
+  // increments, then cooled to 120 in two. The UMAT integrates a thermal
+  // strain whose secant coefficient varies with the temperature incrementally,
+  // alpha(TEMP + DTEMP)(TEMP + DTEMP - T0) - alpha(TEMP)(TEMP - T0): it adds up
+  // to the total only with both values right (with TEMP = DTEMP = 0 there is
+  // no stress at all), and then equals *EXPANSION with the same table.
+  const double young = 2e5, nu = 0.3, a0 = 1e-5, a1 = 2e-8, zero = 10;
+  const auto deck = [&](const std::string& material) {
+    return "*NODE\n1, 0., 0.\n2, 1., 0.\n3, 1., 1.\n4, 0., 1.\n"
+           "*ELEMENT, TYPE=CPE4, ELSET=EALL\n1, 1, 2, 3, 4\n"
+           "*NSET, NSET=LEFT\n1, 4\n*NSET, NSET=RIGHT\n2, 3\n*NSET, NSET=ALLN\n1, 2, 3, 4\n"
+           "*MATERIAL, NAME=HOT\n" + material +
+           "*SOLID SECTION, ELSET=EALL, MATERIAL=HOT\n1.\n"
+           "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nALLN, 20.\n"
+           "*BOUNDARY\nLEFT, 1, 1\nRIGHT, 1, 1\n1, 2, 2\n"
+           "*STEP\n*STATIC, DIRECT\n0.25, 1.\n*TEMPERATURE\nALLN, 220.\n*END STEP\n"
+           "*STEP\n*STATIC, DIRECT\n0.5, 1.\n*TEMPERATURE\nALLN, 120.\n*END STEP\n";
+  };
+  const auto user = tether::testing::run_deck_text(
+      deck(std::string("*USER MATERIAL, CONSTANTS=5, LIBRARY=") + TETHER_THERMAL_UMAT + "\n" +
+           numbers({young, nu, a0, a1, zero})));
+  const auto builtin = tether::testing::run_deck_text(
+      deck("*ELASTIC\n" + numbers({young, nu}) + "*EXPANSION, ZERO=" + numbers({zero}) + numbers({a0, 0.}) +
+           numbers({a0 + 400 * a1, 400.})));
+  ASSERT_TRUE(user.summary.completed) << user.summary.message;
+  ASSERT_TRUE(builtin.summary.completed) << builtin.summary.message;
+  ASSERT_EQ(user.recorder.results.size(), 6u);
+  ASSERT_EQ(builtin.recorder.results.size(), 6u);
+  // Closed form: eps_xx = eps_zz = 0, sigma_yy = 0.
+  const double lambda = young * nu / ((1 + nu) * (1 - 2 * nu)), mu = young / (2 * (1 + nu));
+  const auto secant = [&](double t) { return (a0 + a1 * t) * (t - zero); };
+  const double temperatures[6] = {70, 120, 170, 220, 170, 120};
+  for (std::size_t k = 0; k < 6; ++k) {
+    const double eth = secant(temperatures[k]) - secant(20);
+    const double eyy = 2 * lambda * eth / (lambda + 2 * mu);
+    const double sxx = lambda * (eyy - 2 * eth) - 2 * mu * eth;
+    for (std::size_t q = 0; q < 4; ++q) {
+      const double s_user = user.recorder.results[k].points[0][q].stress[0];
+      const double s_builtin = builtin.recorder.results[k].points[0][q].stress[0];
+      EXPECT_NEAR(s_user, sxx, 1e-10 * std::abs(sxx)) << "increment " << k + 1;
+      EXPECT_NEAR(s_user, s_builtin, 1e-10 * std::abs(sxx)) << "increment " << k + 1;
+    }
   }
 }

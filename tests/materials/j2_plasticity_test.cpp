@@ -402,3 +402,55 @@ TEST(J2Plasticity, UniaxialLoadUnloadReverseCombinedMatchesClosedForm) {
     EXPECT_NEAR(t.dissipation, work, 1e-9 * work) << (plane ? "plane stress" : "3D");
   }
 }
+
+TEST(J2Plasticity, APointOnTheYieldSurfaceGetsTheLoadingTangentWithinAStep) {
+  // A point yields; the next increment's first iteration evaluates it at the
+  // same strain from the committed state, on the yield surface. Within a step
+  // its tangent is the plastic branch's at dp = 0 (the one-sided derivative
+  // for further loading); in a step's first increment (and without times) the
+  // elastic one (the one-sided derivative for unloading). The stress is the
+  // same either way.
+  PointContext continuing, first;
+  continuing.step_time = 0.5, continuing.dt = 0.1;
+  first.step_time = 0.1, first.dt = 0.1;
+  const auto at = [](const J2Plasticity& m, Vec6 eps, bool plane, const State& old, const PointContext& where) {
+    State next(old.size());
+    MaterialResponse r;
+    m.update_small_strain(eps, plane, old, next, where, r);
+    return r;
+  };
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> d(-1, 1);
+  for (const J2Plasticity& m : {isotropic(), kinematic(), combined()})
+    for (bool plane : {false, true})
+      for (int k = 0; k < 6; ++k) {
+        const State old = random_state(gen, plane);
+        Vec6 step = Vec6::Zero();  // the strain increment that makes the point yield
+        for (int i : {0, 1, 3}) step(i) = 5e-3 * d(gen);
+        if (!plane) step(2) = 5e-3 * d(gen), step(4) = 5e-3 * d(gen), step(5) = 5e-3 * d(gen);
+        Vec6 eps = Eigen::Map<const Vec6>(old.data()) + step;
+        if (plane) eps(2) = 0;
+        State yielded(old.size());
+        const MaterialResponse converged = respond(m, eps, plane, old, &yielded);
+        ASSERT_GT(yielded[12], old[12]);
+        const MaterialResponse loading = at(m, eps, plane, yielded, continuing);
+        const MaterialResponse elastic = at(m, eps, plane, yielded, first);
+        const MaterialResponse untimed = at(m, eps, plane, yielded, PointContext{});
+        EXPECT_LT((loading.stress - converged.stress).norm(), 1e-10 * 200);
+        EXPECT_LT((elastic.stress - loading.stress).norm(), 1e-12 * 200);  // round-off: plane stress sums beta + eta
+        EXPECT_EQ(untimed.tangent, elastic.tangent);
+        // One-sided differences from the committed state: further along the
+        // increment that made it yield (plastic), and back (elastic).
+        const double h = 1e-7;
+        for (double sense : {1.0, -1.0}) {
+          Vec6 moved = eps + sense * h * step;
+          if (plane) moved(2) = eps(2);
+          const Vec6 fd = (at(m, moved, plane, yielded, continuing).stress - loading.stress) / h;
+          const Vec6 predicted = (sense > 0 ? loading : elastic).tangent * (sense * step);
+          EXPECT_LT((fd - predicted).norm(), 1e-5 * predicted.norm())
+              << (sense > 0 ? "loading" : "unloading") << (plane ? " plane stress" : " 3D") << "\nFD "
+              << fd.transpose() << "\nD  " << predicted.transpose();
+        }
+        EXPECT_GT((loading.tangent - elastic.tangent).norm(), 0.1 * elastic.tangent.norm());
+      }
+}

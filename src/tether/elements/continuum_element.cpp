@@ -144,7 +144,9 @@ PointContext ContinuumElement::context(const EvaluationState& s, int q, const Po
   if (temperatures_ != nullptr)
     for (int a = 0; a < n_nodes_; ++a) {
       const int node = nodes_[static_cast<std::size_t>(a)];
-      c.temperature += g.N(a) * temperatures_->current(node, s.step_time, s.total_time);
+      const double end = temperatures_->current(node, s.step_time, s.total_time);
+      c.temperature += g.N(a) * end;
+      c.temperature_increment += g.N(a) * (end - temperatures_->current(node, s.step_time - s.dt, s.total_time - s.dt));
       c.initial_temperature += g.N(a) * temperatures_->initial(node);
     }
   return c;

@@ -493,7 +493,7 @@ std::vector<KeywordSpec> build_table() {
        "Nodal temperatures of the step. Nodes not listed keep their temperature (their initial one before any "
        "step); without AMPLITUDE= a value is ramped from the node's temperature at the step's start (static "
        "steps) or applied at once (AMPLITUDE=STEP, dynamic steps). The point temperature is the shape-function "
-       "interpolation of the nodal values. Warned about when no material has *EXPANSION or a temperature table.",
+       "interpolation of the nodal values (a user material reads it as TEMP and DTEMP). Warned about when no material has *EXPANSION, a temperature table or *USER MATERIAL.",
        "`node or node set, temperature`",
        {name("AMPLITUDE", "Amplitude: the temperature is value * a(t)."),
         choice("OP", "MOD", {"MOD", "NEW"},

@@ -88,11 +88,11 @@ void handle_temperature(DeckState& state, const KeywordBlock& block, const Param
   const bool expansion = std::any_of(state.model.materials.begin(), state.model.materials.end(),
                                      [](const MaterialData& m) { return m.expansion.has_value(); });
   const bool table = std::any_of(state.model.materials.begin(), state.model.materials.end(), [](const MaterialData& m) {
-    return m.elastic && !m.elastic->table_young.empty();
+    return (m.elastic && !m.elastic->table_young.empty()) || m.user;  // a UMAT reads TEMP and DTEMP
   });
   if (!expansion && !table)
-    state.warn(block.where, "*TEMPERATURE, but no material has *EXPANSION or a temperature-dependent *ELASTIC: the "
-                            "temperatures cause no strain or stress");
+    state.warn(block.where, "*TEMPERATURE, but no material has *EXPANSION, a temperature-dependent *ELASTIC or "
+                            "*USER MATERIAL: the temperatures cause no strain or stress");
   const int amplitude = state.amplitude(params.name("AMPLITUDE"), block.where);
   StepTemperatureData& data = state.step().temperatures;
   if (params.name("OP") == "NEW" &&

@@ -46,6 +46,9 @@ struct PointContext {
   double total_time = 0;             ///< total time at the end of the increment
   double dt = 0;                     ///< increment size
   double temperature = 0;            ///< temperature of the point at the end of the increment [temperature]
+  /// Its change over the increment (end less start) [temperature]; a UMAT's
+  /// DTEMP, with TEMP = temperature - temperature_increment.
+  double temperature_increment = 0;
   double initial_temperature = 0;    ///< its initial temperature (*INITIAL CONDITIONS, TYPE=TEMPERATURE)
 };
 

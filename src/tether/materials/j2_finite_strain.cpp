@@ -68,10 +68,11 @@ struct Spectral {
 }  // namespace
 
 void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
-                                        std::span<double> new_state, const PointContext&,
+                                        std::span<double> new_state, const PointContext& where,
                                         MaterialResponse& out) const {
+  const bool loading = loading_tangent_applies(where);
   if (!plane_stress) {
-    finite_strain_return(C, old_state, new_state, out);
+    finite_strain_return(C, old_state, new_state, loading, out);
     return;
   }
   if (C(0, 2) != 0 || C(1, 2) != 0) throw ModelError("plane stress needs C13 = C23 = 0");
@@ -80,7 +81,7 @@ void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
   // leaves S33 at round-off (quadratic convergence).
   bool last = false;
   for (int it = 0; it < 50; ++it) {
-    finite_strain_return(C, old_state, new_state, out);
+    finite_strain_return(C, old_state, new_state, loading, out);
     if (last) {
       condense_out_of_plane(out.tangent);
       return;
@@ -96,7 +97,8 @@ void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
 }
 
 void J2Plasticity::finite_strain_return(const Eigen::Matrix3d& C, std::span<const double> old_state,
-                                        std::span<double> new_state, MaterialResponse& out) const {
+                                        std::span<double> new_state, bool on_surface_loading,
+                                        MaterialResponse& out) const {
   // State: E_p = (I - Cp^-1) / 2 (Voigt, engineering shear; as CalculiX reports
   // PE under NLGEOM), the back stress B on the rotated axes R^T (.) R of F = R U, PEEQ.
   const Eigen::Matrix3d Cp_inv =
@@ -116,7 +118,7 @@ void J2Plasticity::finite_strain_return(const Eigen::Matrix3d& C, std::span<cons
   double start[kStateSize] = {}, end[kStateSize] = {};
   for (int i = 6; i < kStateSize; ++i) start[i] = end[i] = old_state[i];  // the elastic branch writes nothing
   MaterialResponse r;
-  general_return(eps, start, end, r);
+  general_return(eps, start, end, on_surface_loading, r);
 
   // be = exp(2 (ee_trial - d eps_p)), the exponential map (exact when the flow
   // is coaxial with be*, always so without back stress); Cp^-1 = U^-1 be U^-1.

@@ -18,6 +18,18 @@ const double kSqrt32 = std::sqrt(1.5);
 /// A trial state is plastic when the yield function exceeds this fraction of the yield radius.
 constexpr double kYieldTolerance = 1e-12;
 
+/// A trial state this close below the yield surface (as a fraction of the
+/// yield radius) is on it: its stress is the elastic one, but its tangent is
+/// the plastic branch's at a zero plastic increment (the continuum
+/// elastoplastic tangent), the one-sided derivative for further loading. A
+/// point that yielded in the last increment sits here at the first iteration
+/// of the next (its strain unchanged, the return having left it on the
+/// surface to round-off, about 1e-14, well inside this band), so Newton's
+/// first correction is no longer computed with
+/// the elastic stiffness of points that go on yielding (when
+/// J2Plasticity::loading_tangent_applies).
+constexpr double kOnSurfaceTolerance = 1e-8;
+
 /// Tensor norm of a Voigt vector holding tensor components (shear counted twice).
 double tensor_norm(const Vec6& t) {
   return std::sqrt(t.head<3>().squaredNorm() + 2 * t.tail<3>().squaredNorm());
@@ -114,17 +126,17 @@ std::string J2Plasticity::describe() const {
 }
 
 void J2Plasticity::update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
-                                       std::span<double> new_state, const PointContext&,
+                                       std::span<double> new_state, const PointContext& where,
                                        MaterialResponse& out) const {
   std::copy(old_state.begin(), old_state.end(), new_state.begin());
   if (plane_stress)
-    plane_stress_return(eps, old_state, new_state, out);
+    plane_stress_return(eps, old_state, new_state, loading_tangent_applies(where), out);
   else
-    general_return(eps, old_state, new_state, out);
+    general_return(eps, old_state, new_state, loading_tangent_applies(where), out);
 }
 
 void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
-                                  MaterialResponse& out) const {
+                                  bool on_surface_loading, MaterialResponse& out) const {
   const double mu = elastic_.mu(), kappa = elastic_.lambda() + 2 * mu / 3;
   const Eigen::Map<const Vec6> ep_old(old_state.data()), alpha_old(old_state.data() + 6);
   const double p_old = old_state[12];
@@ -140,20 +152,23 @@ void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, 
   Vec6 pressure_part = Vec6::Zero();
   pressure_part.head<3>().setConstant(kappa * volumetric);
 
-  if (q_trial - h_old.K <= kYieldTolerance * h_old.K) {  // elastic
+  const bool inside = q_trial - h_old.K <= kYieldTolerance * h_old.K;
+  if (inside && (!on_surface_loading || q_trial - h_old.K < -kOnSurfaceTolerance * h_old.K)) {  // elastic
     out.stress = s_trial + pressure_part;
     out.tangent = isotropic_stiffness(elastic_.lambda(), mu);
     out.elastic_energy = 0.5 * out.stress.dot(ee_trial);
     out.dissipation = 0;
     return;
   }
-  const double dp = solve_plastic_increment(
-      [&](double x, double& slope) {
-        const Hardened h = hardened(p_old + x);
-        slope = -3 * mu - h.dK - h.dH;
-        return q_trial - 3 * mu * x - (h.H - h_old.H) - h.K;
-      },
-      (q_trial - h_old.K) / (3 * mu), 1e-14 * q_trial);
+  // On the yield surface (inside): no plastic increment, the loading tangent.
+  const double dp = inside ? 0.0
+                           : solve_plastic_increment(
+                                 [&](double x, double& slope) {
+                                   const Hardened h = hardened(p_old + x);
+                                   slope = -3 * mu - h.dK - h.dH;
+                                   return q_trial - 3 * mu * x - (h.H - h_old.H) - h.K;
+                                 },
+                                 (q_trial - h_old.K) / (3 * mu), 1e-14 * q_trial);
   const Hardened h = hardened(p_old + dp);
   const Vec6 n = xi_trial / xi_norm;
   Vec6 n_strain = n;  // engineering shear
@@ -177,7 +192,7 @@ void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, 
 }
 
 void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
-                                       MaterialResponse& out) const {
+                                       bool on_surface_loading, MaterialResponse& out) const {
   const Eigen::Matrix3d C = plane_stress_elasticity(young_, poisson_);
   const Eigen::Matrix3d P = plane_stress_projection();
   const Eigen::Map<const Vec6> ep_old(old_state.data()), alpha_old(old_state.data() + 6);
@@ -199,7 +214,8 @@ void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_st
     eps(2) = -poisson_ / young_ * (sigma(0) + sigma(1)) + ep(2);
     out.elastic_energy = 0.5 * sigma.dot(C.inverse() * sigma);
   };
-  if (q_trial - h_old.K <= kYieldTolerance * h_old.K) {
+  const bool inside = q_trial - h_old.K <= kYieldTolerance * h_old.K;
+  if (inside && (!on_surface_loading || q_trial - h_old.K < -kOnSurfaceTolerance * h_old.K)) {
     out.dissipation = 0;
     finish(sigma_trial, C, ep_old);
     return;
@@ -225,7 +241,8 @@ void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_st
     t.deta = -t.A_inv * ((t.dc * Eigen::Matrix3d::Identity() + t.ddgamma * C * P) * t.eta);
     return t;
   };
-  const double dp = solve_plastic_increment(
+  // On the yield surface (inside): no plastic increment, the loading tangent.
+  const double dp = inside ? 0.0 : solve_plastic_increment(
       [&](double x, double& slope) {
         const Trial t = trial_at(x);
         slope = 2 * t.eta.dot(P * t.deta) - 2 * t.q * t.dq;

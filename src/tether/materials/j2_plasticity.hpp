@@ -76,19 +76,35 @@ class J2Plasticity final : public ConstitutiveModel {
   /// Kinematic part: the uniaxial back stress magnitude function H(p) [stress].
   [[nodiscard]] double kinematic(double p) const;
 
+  /// True when a point on the yield surface gets the loading tangent (the
+  /// plastic branch's at a zero plastic increment) rather than the elastic
+  /// one: in every increment of a step but its first. Within a step the loads
+  /// and prescribed values move in one direction (a ramp), so a point that
+  /// yielded in the last increment most likely goes on yielding; a new step
+  /// may reverse them, and unloading predicted with a plastic tangent (very
+  /// soft for little hardening) overshoots into reversed yielding, where
+  /// Newton can cycle. An amplitude that reverses within a step costs
+  /// iterations there, not the answer.
+  [[nodiscard]] static bool loading_tangent_applies(const PointContext& where) {
+    return where.dt > 0 && where.step_time - where.dt > 1e-9 * where.step_time;
+  }
+
  private:
   struct Hardened;  // K, H and slopes at one p
   [[nodiscard]] Hardened hardened(double p) const;
   /// Plastic work density of a return from PEEQ p_old by dp in the direction
   /// n (unit deviatoric tensor), given alpha_n : n [energy/volume].
   [[nodiscard]] double plastic_work(double p_old, double dp, double alpha_dot_n) const;
+  /// The returns. `on_surface_loading`: a trial state on the yield surface
+  /// (within kOnSurfaceTolerance below it) gets the loading tangent instead
+  /// of the elastic one (see loading_tangent_applies).
   void general_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
-                      MaterialResponse& out) const;
+                      bool on_surface_loading, MaterialResponse& out) const;
   void plane_stress_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
-                           MaterialResponse& out) const;
+                           bool on_surface_loading, MaterialResponse& out) const;
   /// Finite-strain update at C (3D; plane strain and axisymmetry): PK2, dS/dE, state.
   void finite_strain_return(const Eigen::Matrix3d& C, std::span<const double> old_state, std::span<double> new_state,
-                            MaterialResponse& out) const;
+                            bool on_surface_loading, MaterialResponse& out) const;
 
   double young_, poisson_;
   LinearElastic elastic_;

@@ -80,7 +80,8 @@ void UserMaterial::update_small_strain(Vec6& eps, bool plane_stress, std::span<c
   double sse = old_state[12], spd = old_state[13], scd = old_state[14];
   std::copy(old_state.begin() + kHeader, old_state.end(), new_state.begin() + kHeader);
   double* statev = new_state.data() + kHeader;
-  double rpl = 0, ddsddt[4] = {}, drplde[4] = {}, drpldt = 0, temp = 0, dtemp = 0, predef = 0, dpred = 0;
+  double rpl = 0, ddsddt[4] = {}, drplde[4] = {}, drpldt = 0, predef = 0, dpred = 0;
+  const double temp = where.temperature - where.temperature_increment, dtemp = where.temperature_increment;
   const double time[2] = {where.step_time - where.dt, where.total_time - where.dt}, dtime = where.dt;
   const double coords[3] = {where.x, where.y, 0}, celent = 0;
   const double drot[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};

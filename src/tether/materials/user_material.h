@@ -51,7 +51,12 @@
  *   DSTRAN(NTENS)   strain increment (plane stress: the in-plane components)
  *   TIME(2)         step time and total time at the start of the increment
  *   DTIME           time increment
- *   TEMP, DTEMP, PREDEF(1), DPRED(1)  0 (no temperatures or field variables)
+ *   TEMP            temperature of the point at the start of the increment
+ *                   (the shape-function interpolation of the nodal values of
+ *                   *INITIAL CONDITIONS, TYPE=TEMPERATURE and *TEMPERATURE;
+ *                   0 without them)
+ *   DTEMP           its increment over the increment (TEMP + DTEMP: at the end)
+ *   PREDEF(1), DPRED(1)  0 (no field variables)
  *   CMNAME          the material name, upper case, blank-padded to 80 characters
  *   NDI, NSHR, NTENS, NSTATV, PROPS(NPROPS), NPROPS  as above
  *   COORDS(3)       reference coordinates of the integration point (z = 0)
