@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
+#include "tether/contact/mortar_terms.hpp"
 #include "tether/model/contact_data.hpp"
 #include "tether/model/results.hpp"
 
@@ -141,6 +142,10 @@ class MortarPair final : public Contribution {
   [[nodiscard]] const std::vector<int>& term_faces(int e) const { return term_faces_[static_cast<std::size_t>(e)]; }
   /// Slave faces sharing a node with each slave face's nodes (for the normals), by slave node index.
   [[nodiscard]] const std::vector<std::vector<std::pair<int, int>>>& faces_of_node() const { return faces_of_node_; }
+  /// The memo of the terms (slave face × master face) the nodes' kinematics
+  /// share (mortar_terms.hpp); a cache of pure functions of the positions,
+  /// so it is no state of the pair.
+  [[nodiscard]] MortarTermCache& term_cache() const { return term_cache_; }
 
   /// Per-slave output at the state: status, mean gap g̃_j / D_j, pressure
   /// λ_j, normal force λ_j D_j, and the contact force on the node.
@@ -167,6 +172,7 @@ class MortarPair final : public Contribution {
   double attempt_time_ = -1, attempt_dt_ = -1;  ///< the increment attempt the guard counts in
   int releases_ = 0;                            ///< guard releases in this attempt
   MortarIterationStatistics statistics_;
+  mutable MortarTermCache term_cache_;
 };
 
 }  // namespace tether
