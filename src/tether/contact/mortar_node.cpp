@@ -143,7 +143,10 @@ std::span<const int> MortarNode::dofs() const { return pair_.slave(slave_).dofs;
 bool MortarNode::symmetric_tangent(bool /*nlgeom*/) const { return !(pair_.mu() > 0) && !pair_.soft(); }
 
 std::string MortarNode::describe() const {
-  return pair_.describe() + ", slave node " + std::to_string(pair_.slave(slave_).node);
+  const auto& names = pair_.setup().slave_names;
+  const auto k = static_cast<std::size_t>(slave_);
+  return pair_.describe() + ", slave node " +
+         (k < names.size() ? names[k] : "index " + std::to_string(pair_.slave(slave_).node));
 }
 
 double MortarNode::row_stiffness() const {

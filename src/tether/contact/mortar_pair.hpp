@@ -35,6 +35,10 @@ struct MortarPairSetup {
   std::vector<std::vector<int>> slave_faces;
   /// Out-of-plane thickness of each slave face [length] (dA = t ds).
   std::vector<double> slave_thickness;
+  /// The user's name of each slave node (label_text(): `UPPER-1.3`, `17`),
+  /// in the order of slave_nodes_of(slave_faces), for messages; empty:
+  /// messages give the node index.
+  std::vector<std::string> slave_names;
   /// Node indices of each master face, face_nodes() order.
   std::vector<std::vector<int>> master_faces;
   /// (element id, face number 1..4) of each master face, for output.
