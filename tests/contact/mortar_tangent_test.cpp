@@ -176,4 +176,47 @@ TEST(MortarTangent, OpenNodeHasTheTrivialRow) {
   }
 }
 
+// The pair computes each term (slave face × master face) once per state and
+// hands each node of the face its share (MortarTermCache): every node's
+// residual and tangent must be, bit for bit, what a pair that evaluates that
+// node alone computes, at a state, at another one and at the first again (a
+// memo that handed out a stale term or another node's share would differ).
+TEST(MortarTangent, SharedTermsAreThoseOfEachNodeAloneBitForBit) {
+  for (const MortarCase& c : {MortarCase{false, false, 3, 7}, MortarCase{true, true, 3, 4, 0.3}}) {
+    std::mt19937 rng(5);
+    MortarFixture shared(c, rng);
+    const int n = shared.n_disp + MortarPair::multipliers_per_slave(c.mu) * shared.pair->n_slaves();
+    std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+    Eigen::VectorXd u1 = Eigen::VectorXd::Zero(n), u_start = Eigen::VectorXd::Zero(n);
+    for (int i = 0; i < shared.n_disp; ++i) u1[i] = jitter(rng), u_start[i] = 0.5 * u1[i];
+    for (int i = 0; i < shared.pair->n_slaves(); ++i) {
+      u1[shared.pair->slave(i).multiplier] = 1e4;
+      if (shared.pair->slave(i).tangent_multiplier >= 0) u1[shared.pair->slave(i).tangent_multiplier] = 100;
+    }
+    Eigen::VectorXd u2 = u1;
+    u2[shared.n_disp - 1] += 1e-3;  // a master node moves
+    const EvaluationState s1{u1, u_start, 1, 1, 1, false}, s2{u2, u_start, 1, 1, 1, false};
+    shared.pair->update_connectivity(s1);
+    const auto evaluate = [](const Contribution& node, const EvaluationState& s) {
+      LocalSystem out;
+      out.reset(static_cast<Eigen::Index>(node.dofs().size()));
+      node.evaluate(s, out, true);
+      return out;
+    };
+    for (const EvaluationState* s : {&s1, &s2, &s1}) {
+      std::vector<LocalSystem> together;
+      for (Contribution* node : shared.pair->nodes()) together.push_back(evaluate(*node, *s));
+      for (int j = 0; j < shared.pair->n_slaves(); ++j) {
+        std::mt19937 unused(5);
+        MortarFixture alone(c, unused);
+        alone.pair->update_connectivity(s1);
+        const LocalSystem one = evaluate(*alone.pair->nodes()[static_cast<std::size_t>(j)], *s);
+        const LocalSystem& t = together[static_cast<std::size_t>(j)];
+        EXPECT_TRUE(one.residual == t.residual && one.tangent == t.tangent) << "slave " << j;
+        EXPECT_NE(one.tangent.cwiseAbs().maxCoeff(), 0.0);
+      }
+    }
+  }
+}
+
 }  // namespace
