@@ -219,4 +219,32 @@ TEST(MortarTangent, SharedTermsAreThoseOfEachNodeAloneBitForBit) {
   }
 }
 
+// A slave sliding over many master faces: the memo keeps the terms of the
+// master faces each slave face sums now, not of every face it has passed.
+TEST(MortarTangent, TermMemoHoldsTheCurrentTermsOnly) {
+  std::mt19937 rng(7);
+  MortarFixture fx(MortarCase{false, false, 2, 24}, rng);
+  const int n = fx.n_disp + fx.pair->n_slaves();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < fx.pair->n_slaves(); ++i) u[fx.pair->slave(i).multiplier] = 1e4;
+  std::size_t most = 0;
+  for (int step = 0; step <= 10; ++step) {
+    for (std::size_t a = 0; a < fx.reference.size(); ++a)
+      if (fx.reference[a].y() >= 0) u[2 * static_cast<int>(a)] = -0.1 + 0.02 * step;  // 2 master faces over the slide
+    const EvaluationState s{u, u, 1, 1, 1, false};
+    fx.pair->update_connectivity(s);
+    std::size_t current = 0;
+    for (std::size_t e = 0; e < fx.pair->setup().slave_faces.size(); ++e)
+      current += fx.pair->term_faces(static_cast<int>(e)).size();
+    for (Contribution* node : fx.pair->nodes()) {
+      LocalSystem out;
+      out.reset(static_cast<Eigen::Index>(node->dofs().size()));
+      node->evaluate(s, out, true);
+    }
+    EXPECT_LE(fx.pair->term_cache().size(), current) << "step " << step;
+    most = std::max(most, current);
+  }
+  EXPECT_GE(most, 2u);
+}
+
 }  // namespace

@@ -169,6 +169,10 @@ void MortarTermCache::with_terms(const MortarPair& pair, int e, int f, const Eva
   const std::lock_guard<std::mutex> lock(mutex_);
   if (entries_.size() != pair.setup().slave_faces.size()) entries_.assign(pair.setup().slave_faces.size(), {});
   std::vector<Entry>& of_face = entries_[static_cast<std::size_t>(e)];
+  // Forget the master faces e no longer sums (a long slide passes many):
+  // the memo holds at most the current terms of each slave face.
+  if (const std::vector<int>& current = pair.term_faces(e); of_face.size() >= current.size())
+    std::erase_if(of_face, [&](const Entry& en) { return std::find(current.begin(), current.end(), en.f) == current.end(); });
   auto entry = std::find_if(of_face.begin(), of_face.end(), [f](const Entry& en) { return en.f == f; });
   if (entry == of_face.end()) {
     of_face.push_back({});
@@ -184,6 +188,13 @@ void MortarTermCache::with_terms(const MortarPair& pair, int e, int f, const Eva
     slot.nlgeom = state.nlgeom, slot.friction = friction, slot.valid = true;
   }
   use(slot.terms);
+}
+
+std::size_t MortarTermCache::size() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::size_t n = 0;
+  for (const std::vector<Entry>& of_face : entries_) n += of_face.size();
+  return n;
 }
 
 }  // namespace tether

@@ -83,7 +83,9 @@ struct MortarFaceTerms {
 };
 
 /// The pair's memo of terms: per (slave face, master face) and order class
-/// (0; 1; 2), the last state's terms. Thread-safe.
+/// (0; 1; 2), the last state's terms; the entries of master faces a slave
+/// face no longer sums (MortarPair::term_faces) are dropped at its next
+/// look-up, so the memo stays the size of the current terms. Thread-safe.
 class MortarTermCache {
  public:
   /// Calls `use` with the terms of slave face e against master face f at
@@ -93,6 +95,8 @@ class MortarTermCache {
   /// them for the same positions. `use` runs under the memo's lock.
   void with_terms(const MortarPair& pair, int e, int f, const EvaluationState& state, int order, bool friction,
                   const std::function<void(const MortarFaceTerms&)>& use);
+  /// Number of (slave face, master face) entries held.
+  [[nodiscard]] std::size_t size();
 
  private:
   struct Slot {
