@@ -1,6 +1,6 @@
 // The analysis names nodes and elements of an ABAQUS/CAE deck as its author
 // knows them (`UPPER-1.7`), through label_text(): unknowns, elements and
-// contact nodes alike.
+// contact nodes (node-to-segment and mortar) and the mortar builder's errors alike.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -10,13 +10,45 @@
 #include "tether/analysis/discretization.hpp"
 #include "tether/analysis/step_body_forces.hpp"
 #include "tether/contact/contact_pair.hpp"
+#include "tether/core/error.hpp"
 #include "tether/io/deck_reader.hpp"
 
 using namespace tether;
 
 namespace {
 
-Model cae_model() { return read_deck(std::string(TETHER_SOURCE_DIR) + "/tests/io/decks/cae/one_part_twice.inp"); }
+const std::string kCaeDeck = std::string(TETHER_SOURCE_DIR) + "/tests/io/decks/cae/one_part_twice.inp";
+
+Model cae_model() { return read_deck(kCaeDeck); }
+
+/// The CAE deck with its contact pair made mortar and `edit` replaced by
+/// `by` (once, after checking it is there).
+Model cae_mortar_model(const std::string& edit = "", const std::string& by = "") {
+  std::ifstream in(kCaeDeck);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  const std::string pair = "*Contact Pair, interaction=IntProp-1\n";
+  deck.replace(deck.find(pair), pair.size(), "*Contact Pair, interaction=IntProp-1, type=SURFACE TO SURFACE\n");
+  if (!edit.empty()) {
+    const auto at = deck.find(edit);
+    EXPECT_NE(at, std::string::npos) << edit;
+    if (at != std::string::npos) deck.replace(at, edit.size(), by);
+  }
+  const std::string path = ::testing::TempDir() + "/one_part_twice_mortar.inp";
+  std::ofstream(path) << deck;
+  return read_deck(path);
+}
+
+/// The message of the ModelError that discretizing `model` throws ("" when none).
+std::string discretization_error(const Model& model) {
+  try {
+    const Discretization disc(model);
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 TEST(InstanceLabels, UnknownsAndElementsOfAnInstanceCarryItsName) {
   const Model model = cae_model();
@@ -94,6 +126,35 @@ TEST(InstanceLabels, NodeBasedSlaveAreaErrorNamesTheNodeByInstance) {
     const std::string what = e.what();
     EXPECT_NE(what.find("node UPPER-1.20 of node-based slave surface"), std::string::npos) << what;
   }
+}
+
+TEST(InstanceLabels, MortarContactNodesAreNamedByTheirLabelNotTheirIndex) {
+  const Model model = cae_mortar_model();
+  const Discretization disc(model);
+  ASSERT_EQ(disc.mortar_pairs().size(), 1u);
+  const auto nodes = disc.mortar_pairs()[0]->nodes();
+  ASSERT_EQ(nodes.size(), 3u);  // the bottom of Upper-1: its nodes 1, 2, 3
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const std::string text = nodes[k]->describe();
+    EXPECT_NE(text.find(", slave node UPPER-1." + std::to_string(k + 1)), std::string::npos) << text;
+  }
+}
+
+// The mortar builder's errors about a node name it by its label too: Upper-1's
+// node 2 on three slave faces (the bottoms of elements 1 and 2 and the right
+// side of element 1), and its node 1 on both surfaces (the left side of
+// element 1 added to the master surface).
+TEST(InstanceLabels, MortarBuilderErrorsNameNodesByTheirLabel) {
+  const std::string three_faces = discretization_error(cae_mortar_model(
+      "*Surface, type=ELEMENT, name=Slave\n_Slave_S1, S1\n",
+      "*Elset, elset=_Slave_S2, internal, instance=Upper-1\n 1\n"
+      "*Surface, type=ELEMENT, name=Slave\n_Slave_S1, S1\n_Slave_S2, S2\n"));
+  EXPECT_NE(three_faces.find("node UPPER-1.2 is on 3 faces of the slave surface"), std::string::npos) << three_faces;
+  const std::string shared = discretization_error(cae_mortar_model(
+      "*Surface, type=ELEMENT, name=Master\n_Master_S3, S3\n",
+      "*Elset, elset=_Master_S4, internal, instance=Upper-1\n 1\n"
+      "*Surface, type=ELEMENT, name=Master\n_Master_S3, S3\n_Master_S4, S4\n"));
+  EXPECT_NE(shared.find("node UPPER-1.1 belongs to both the slave surface"), std::string::npos) << shared;
 }
 
 }  // namespace

@@ -176,4 +176,75 @@ TEST(MortarTangent, OpenNodeHasTheTrivialRow) {
   }
 }
 
+// The pair computes each term (slave face × master face) once per state and
+// hands each node of the face its share (MortarTermCache): every node's
+// residual and tangent must be, bit for bit, what a pair that evaluates that
+// node alone computes, at a state, at another one and at the first again (a
+// memo that handed out a stale term or another node's share would differ).
+TEST(MortarTangent, SharedTermsAreThoseOfEachNodeAloneBitForBit) {
+  for (const MortarCase& c : {MortarCase{false, false, 3, 7}, MortarCase{true, true, 3, 4, 0.3}}) {
+    std::mt19937 rng(5);
+    MortarFixture shared(c, rng);
+    const int n = shared.n_disp + MortarPair::multipliers_per_slave(c.mu) * shared.pair->n_slaves();
+    std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+    Eigen::VectorXd u1 = Eigen::VectorXd::Zero(n), u_start = Eigen::VectorXd::Zero(n);
+    for (int i = 0; i < shared.n_disp; ++i) u1[i] = jitter(rng), u_start[i] = 0.5 * u1[i];
+    for (int i = 0; i < shared.pair->n_slaves(); ++i) {
+      u1[shared.pair->slave(i).multiplier] = 1e4;
+      if (shared.pair->slave(i).tangent_multiplier >= 0) u1[shared.pair->slave(i).tangent_multiplier] = 100;
+    }
+    Eigen::VectorXd u2 = u1;
+    u2[shared.n_disp - 1] += 1e-3;  // a master node moves
+    const EvaluationState s1{u1, u_start, 1, 1, 1, false}, s2{u2, u_start, 1, 1, 1, false};
+    shared.pair->update_connectivity(s1);
+    const auto evaluate = [](const Contribution& node, const EvaluationState& s) {
+      LocalSystem out;
+      out.reset(static_cast<Eigen::Index>(node.dofs().size()));
+      node.evaluate(s, out, true);
+      return out;
+    };
+    for (const EvaluationState* s : {&s1, &s2, &s1}) {
+      std::vector<LocalSystem> together;
+      for (Contribution* node : shared.pair->nodes()) together.push_back(evaluate(*node, *s));
+      for (int j = 0; j < shared.pair->n_slaves(); ++j) {
+        std::mt19937 unused(5);
+        MortarFixture alone(c, unused);
+        alone.pair->update_connectivity(s1);
+        const LocalSystem one = evaluate(*alone.pair->nodes()[static_cast<std::size_t>(j)], *s);
+        const LocalSystem& t = together[static_cast<std::size_t>(j)];
+        EXPECT_TRUE(one.residual == t.residual && one.tangent == t.tangent) << "slave " << j;
+        EXPECT_NE(one.tangent.cwiseAbs().maxCoeff(), 0.0);
+      }
+    }
+  }
+}
+
+// A slave sliding over many master faces: the memo keeps the terms of the
+// master faces each slave face sums now, not of every face it has passed.
+TEST(MortarTangent, TermMemoHoldsTheCurrentTermsOnly) {
+  std::mt19937 rng(7);
+  MortarFixture fx(MortarCase{false, false, 2, 24}, rng);
+  const int n = fx.n_disp + fx.pair->n_slaves();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < fx.pair->n_slaves(); ++i) u[fx.pair->slave(i).multiplier] = 1e4;
+  std::size_t most = 0;
+  for (int step = 0; step <= 10; ++step) {
+    for (std::size_t a = 0; a < fx.reference.size(); ++a)
+      if (fx.reference[a].y() >= 0) u[2 * static_cast<int>(a)] = -0.1 + 0.02 * step;  // 2 master faces over the slide
+    const EvaluationState s{u, u, 1, 1, 1, false};
+    fx.pair->update_connectivity(s);
+    std::size_t current = 0;
+    for (std::size_t e = 0; e < fx.pair->setup().slave_faces.size(); ++e)
+      current += fx.pair->term_faces(static_cast<int>(e)).size();
+    for (Contribution* node : fx.pair->nodes()) {
+      LocalSystem out;
+      out.reset(static_cast<Eigen::Index>(node->dofs().size()));
+      node->evaluate(s, out, true);
+    }
+    EXPECT_LE(fx.pair->term_cache().size(), current) << "step " << step;
+    most = std::max(most, current);
+  }
+  EXPECT_GE(most, 2u);
+}
+
 }  // namespace

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "tether/core/error.hpp"
+#include "tether/model/part_instance.hpp"
 
 namespace tether {
 
@@ -88,7 +89,7 @@ std::unique_ptr<MortarPair> make_mortar_pair(const Model& model, const ContactPa
     for (int node : face) ++faces_at[node];
   for (const auto& [node, count] : faces_at)
     if (count > 2)
-      throw ModelError("node " + std::to_string(model.node_ids[static_cast<std::size_t>(node)]) + " is on " +
+      throw ModelError("node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(node)]) + " is on " +
                        std::to_string(count) + " faces of the slave surface " + data.slave + where +
                        ": mortar contact needs a slave surface that is a chain of faces (each node on at most two)");
   std::set<int> master_nodes;
@@ -96,9 +97,11 @@ std::unique_ptr<MortarPair> make_mortar_pair(const Model& model, const ContactPa
   const std::vector<int> slave_nodes = MortarPair::slave_nodes_of(setup.slave_faces);
   for (int node : slave_nodes)
     if (master_nodes.count(node))
-      throw ModelError("node " + std::to_string(model.node_ids[static_cast<std::size_t>(node)]) +
+      throw ModelError("node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(node)]) +
                        " belongs to both the slave surface " + data.slave + " and the master surface " + data.master +
                        where + ": contact is between distinct surfaces; split the node or the surfaces");
+  for (int node : slave_nodes)
+    setup.slave_names.push_back(label_text(model.instances, model.node_ids[static_cast<std::size_t>(node)]));
   setup.search_radius = 2 * longest + data.adjust;
   setup.complementarity_stiffness = stiffness > 0 ? stiffness : 1.0;
   setup.mu = interaction->friction ? interaction->friction->mu : 0.0;

@@ -6,6 +6,7 @@
 
 #include "tether/contact/mortar_pair.hpp"
 #include "tether/contact/mortar_segmentation.hpp"
+#include "tether/contact/mortar_terms.hpp"
 #include "tether/contact/pressure_overclosure.hpp"
 #include "tether/dofs/dof_map.hpp"
 
@@ -13,107 +14,9 @@ namespace tether {
 
 namespace {
 
-/// Gauss points per overlap of a slave and a master segment: exact for the
-/// polynomial integrands of straight and quadratic faces with constant normals.
-constexpr int kMortarGaussPoints = 6;
-
 /// Index of real node `node` in `nodes`.
 int index_of(const std::vector<int>& nodes, int node) {
   return static_cast<int>(std::find(nodes.begin(), nodes.end(), node) - nodes.begin());
-}
-
-/// Positions of `wanted` from the positions `x` of `nodes`.
-template <class T>
-std::vector<Vec2T<T>> gather(const std::vector<int>& nodes, std::span<const Vec2T<T>> x, const std::vector<int>& wanted) {
-  std::vector<Vec2T<T>> out;
-  out.reserve(wanted.size());
-  for (int n : wanted) out.push_back(x[static_cast<std::size_t>(index_of(nodes, n))]);
-  return out;
-}
-
-/// Averaged unit normal at slave node `node` from the positions `x` of `nodes`.
-template <class T>
-Vec2T<T> normal_at(const MortarPair& pair, const std::vector<int>& nodes, std::span<const Vec2T<T>> x, int node) {
-  std::vector<std::vector<Vec2T<T>>> faces;
-  std::vector<int> at;
-  for (const auto& [e, k] : pair.faces_of_node()[static_cast<std::size_t>(node)]) {
-    faces.push_back(gather(nodes, x, pair.setup().slave_faces[static_cast<std::size_t>(e)]));
-    at.push_back(k);
-  }
-  return nodal_normal<T>(faces, at);
-}
-
-/// The real nodes one term (slave face e, master face f) of g̃_j depends on:
-/// the nodes of e, of the slave faces around them (their normals), and of f.
-std::vector<int> term_nodes(const MortarPair& pair, int e, int f) {
-  std::vector<int> nodes;
-  const auto add = [&nodes](int node) {
-    if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
-  };
-  for (int q : pair.setup().slave_faces[static_cast<std::size_t>(e)])
-    for (const auto& [e2, k2] : pair.faces_of_node()[static_cast<std::size_t>(q)])
-      for (int r : pair.setup().slave_faces[static_cast<std::size_t>(e2)]) add(r);
-  for (int q : pair.setup().master_faces[static_cast<std::size_t>(f)]) add(q);
-  return nodes;
-}
-
-/// One term of the mortar kinematics of slave node j (position k on slave
-/// face e) against master face f: D = D^e_kf (the part of D^e_k over the
-/// overlap with f), M_a = M^e_kfa, the nodal normal n_j, and the weighted gap
-/// vector v = Σ_a M_a y_a - D x_j, whose normal part n_j·v is the term's
-/// share of g̃_j. `x`: the positions of `nodes` (term_nodes()). `nlgeom`: dA
-/// from the current positions; otherwise from the reference ones.
-template <class T>
-struct Term {
-  bool overlaps = false;
-  T D{};
-  std::array<T, 3> M{};
-  Vec2T<T> normal{}, v{};
-  std::vector<Vec2T<T>> y;  ///< master face positions
-  Vec2T<T> x_j{};
-};
-
-template <class T>
-Term<T> term_of(const MortarPair& pair, int j, int e, int k, int f, const std::vector<int>& nodes,
-                std::span<const Vec2T<T>> x, bool nlgeom) {
-  Term<T> out;
-  const std::vector<int>& face = pair.setup().slave_faces[static_cast<std::size_t>(e)];
-  const std::vector<Vec2T<T>> xe = gather(nodes, x, face);
-  std::vector<Vec2T<T>> ne;
-  for (int q : face) ne.push_back(normal_at(pair, nodes, x, q));
-  const std::vector<std::vector<Vec2T<T>>> master{gather(nodes, x, pair.setup().master_faces[static_cast<std::size_t>(f)])};
-  std::vector<Vec2T<double>> reference;
-  if (!nlgeom)
-    for (int q : face) {
-      const Eigen::Vector2d& X = pair.reference()[static_cast<std::size_t>(q)];
-      reference.push_back({X.x(), X.y()});
-    }
-  const SegmentMortar<T> m = integrate_segment<T>(
-      xe, ne, master, pair.setup().slave_thickness[static_cast<std::size_t>(e)], kMortarGaussPoints, reference);
-  out.y = master[0];
-  out.x_j = x[static_cast<std::size_t>(index_of(nodes, j))];
-  out.normal = ne[static_cast<std::size_t>(k)];
-  if (!(m.overlap[0][0] < m.overlap[0][1])) return out;
-  out.overlaps = true;
-  out.D = m.D[static_cast<std::size_t>(k)];
-  Vec2T<T> weighted{T(0.0), T(0.0)};
-  for (std::size_t a = 0; a < out.y.size(); ++a) {
-    out.M[a] = m.M[0][static_cast<std::size_t>(k)][a];
-    weighted = weighted + out.M[a] * out.y[a];
-  }
-  out.v = weighted - out.D * out.x_j;
-  return out;
-}
-
-Vec2T<double> position(const MortarPair& pair, const Eigen::VectorXd& u, int n) {
-  const Eigen::Vector2d& X = pair.reference()[static_cast<std::size_t>(n)];
-  return {X.x() + u[DofMap::displacement(n, 0)], X.y() + u[DofMap::displacement(n, 1)]};
-}
-
-/// The tangent τ = n rotated by +90°.
-template <class T>
-Vec2T<T> tangent_of(const Vec2T<T>& n) {
-  return {-n.y, n.x};
 }
 
 /// Kinematics of slave node j over the displacements of s.nodes (order 0:
@@ -138,12 +41,11 @@ struct Kinematics {
   Eigen::MatrixXd G_jacobian;
 };
 
-/// Adds one term's contributions (T = double: values only).
-void add_term(Kinematics& out, const Term<double>& t, const Term<double>* old, bool friction,
-              const std::vector<Eigen::Index>&) {
+/// Adds the share of one term without derivatives (order 0).
+void add_term(Kinematics& out, const MortarTerm<double>& t, const MortarTerm<double>* old, bool friction) {
   if (t.overlaps) out.covered = true, out.gap += dot(t.normal, t.v), out.D += t.D;
   if (!friction) return;
-  const Vec2T<double> tau = tangent_of(t.normal);
+  const Vec2T<double> tau = {-t.normal.y, t.normal.x};
   out.slip += dot(tau, t.v);
   if (old && old->overlaps) {
     Vec2T<double> w = -old->D * t.x_j;
@@ -152,39 +54,47 @@ void add_term(Kinematics& out, const Term<double>& t, const Term<double>* old, b
   }
 }
 
-void scatter(Eigen::VectorXd& g, const Dual2& value, const std::vector<Eigen::Index>& to) {
+void scatter(Eigen::VectorXd& g, const MortarTermScalar& value, const std::vector<Eigen::Index>& to) {
   if (value.constant()) return;
-  for (Eigen::Index a = 0; a < value.gradient().size(); ++a) g[to[static_cast<std::size_t>(a)]] += value.gradient()[a];
+  for (Eigen::Index a = 0; a < value.gradient.size(); ++a) g[to[static_cast<std::size_t>(a)]] += value.gradient[a];
 }
 
-void add_term(Kinematics& out, const Term<Dual2>& t, const Term<double>* old, bool friction,
-              const std::vector<Eigen::Index>& to) {
+void scatter_hessian(Eigen::MatrixXd& h, const MortarTermScalar& value, const std::vector<Eigen::Index>& to) {
+  if (h.size() == 0 || !value.second()) return;
+  for (std::size_t a = 0; a < to.size(); ++a)
+    for (std::size_t b = 0; b < to.size(); ++b)
+      h(to[a], to[b]) += value.hessian(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+}
+
+/// Adds the share of one term with derivatives (order >= 1); `to`: where the
+/// term's unknowns sit among the node's, `xj` the row of x_j there and
+/// `master` those of the master face's nodes (frictional direction).
+void add_share(Kinematics& out, const MortarTermShare& t, bool friction, const std::vector<Eigen::Index>& to,
+               Eigen::Index xj, const std::vector<Eigen::Index>& master) {
   if (t.overlaps) {
     out.covered = true;
-    const Dual2 gap = dot(t.normal, t.v);
-    out.gap += gap.value(), out.D += t.D.value();
-    scatter(out.gradient, gap, to);
+    out.gap += t.gap.value, out.D += t.D.value;
+    scatter(out.gradient, t.gap, to);
     scatter(out.D_gradient, t.D, to);
-    const auto add_hessian = [&to](Eigen::MatrixXd& h, const Dual2& value) {
-      if (h.size() == 0 || !value.second()) return;
-      for (std::size_t a = 0; a < to.size(); ++a)
-        for (std::size_t b = 0; b < to.size(); ++b)
-          h(to[a], to[b]) += value.hessian()(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
-    };
-    add_hessian(out.hessian, gap);
-    add_hessian(out.D_hessian, t.D);
+    scatter_hessian(out.hessian, t.gap, to);
+    scatter_hessian(out.D_hessian, t.D, to);
   }
   if (!friction) return;
-  const Vec2T<Dual2> tau = tangent_of(t.normal);
-  Dual2 slip(0.0);
-  if (t.overlaps) slip += dot(tau, t.v);
-  if (old && old->overlaps) {
-    Vec2T<Dual2> w{Dual2(-old->D) * t.x_j.x, Dual2(-old->D) * t.x_j.y};
-    for (std::size_t a = 0; a < t.y.size(); ++a) w = w + Dual2(old->M[a]) * t.y[a];
-    slip -= dot(tau, w);
+  out.slip += t.slip.value;
+  scatter(out.slip_gradient, t.slip, to);
+  if (!t.overlaps) return;
+  const auto add_G = [&](Eigen::Index row, const MortarTermScalar& value) {
+    out.G[row] += value.value;
+    if (value.constant()) return;
+    for (Eigen::Index b = 0; b < value.gradient.size(); ++b)
+      out.G_jacobian(row, to[static_cast<std::size_t>(b)]) += value.gradient[b];
+  };
+  add_G(xj, t.G[0]);
+  add_G(xj + 1, t.G[1]);
+  for (std::size_t a = 0; a < master.size(); ++a) {
+    add_G(master[a], t.G[2 + 2 * a]);
+    add_G(master[a] + 1, t.G[3 + 2 * a]);
   }
-  out.slip += slip.value();
-  scatter(out.slip_gradient, slip, to);
 }
 
 /// Where the unknowns of `nodes` sit among those of s.nodes.
@@ -210,45 +120,17 @@ Kinematics kinematics(const MortarPair& pair, const MortarSlave& s, const Evalua
   }
   if (order >= 2) out.hessian = Eigen::MatrixXd::Zero(n_u, n_u);
   if (order >= 2 && pair.soft()) out.D_hessian = Eigen::MatrixXd::Zero(n_u, n_u);
+  const Eigen::Index xj = 2 * index_of(s.nodes, s.node);
   for (const auto& [e, k] : s.faces)
     for (int f : pair.term_faces(e)) {
-      const std::vector<int> nodes = term_nodes(pair, e, f);
-      std::vector<Vec2T<double>> x, x0;
-      for (int n : nodes) x.push_back(position(pair, state.u, n)), x0.push_back(position(pair, state.u_start, n));
-      const std::vector<Eigen::Index> to = unknown_map(s, nodes);
-      std::optional<Term<double>> old;
-      if (friction) old = term_of<double>(pair, s.node, e, k, f, nodes, x0, state.nlgeom);
-      if (order == 0) {
-        add_term(out, term_of<double>(pair, s.node, e, k, f, nodes, x, state.nlgeom), old ? &*old : nullptr, friction,
-                 to);
-        continue;
-      }
-      const int n = 2 * static_cast<int>(nodes.size());
-      std::vector<Vec2T<Dual2>> d;
-      for (std::size_t a = 0; a < x.size(); ++a) {
-        const int i = 2 * static_cast<int>(a);
-        d.push_back({Dual2::variable(x[a].x, i, n, order >= 2), Dual2::variable(x[a].y, i + 1, n, order >= 2)});
-      }
-      const Term<Dual2> t = term_of<Dual2>(pair, s.node, e, k, f, nodes, d, state.nlgeom);
-      add_term(out, t, old ? &*old : nullptr, friction, to);
-      if (friction && t.overlaps) {
-        const Vec2T<Dual2> tau = tangent_of(t.normal);
-        const auto add_G = [&](Eigen::Index row, const Dual2& value) {
-          out.G[row] += value.value();
-          if (value.constant()) return;
-          for (Eigen::Index b = 0; b < value.gradient().size(); ++b)
-            out.G_jacobian(row, to[static_cast<std::size_t>(b)]) += value.gradient()[b];
-        };
-        const Eigen::Index xj = 2 * index_of(s.nodes, s.node);
-        add_G(xj, t.D * tau.x);
-        add_G(xj + 1, t.D * tau.y);
-        const std::vector<int>& master = pair.setup().master_faces[static_cast<std::size_t>(f)];
-        for (std::size_t a = 0; a < master.size(); ++a) {
-          const Eigen::Index ya = 2 * index_of(s.nodes, master[a]);
-          add_G(ya, -(t.M[a] * tau.x));
-          add_G(ya + 1, -(t.M[a] * tau.y));
-        }
-      }
+      const auto kk = static_cast<std::size_t>(k);
+      pair.term_cache().with_terms(pair, e, f, state, order, friction, [&](const MortarFaceTerms& terms) {
+        if (order == 0) return add_term(out, terms.values[kk], friction ? &terms.start[kk] : nullptr, friction);
+        std::vector<Eigen::Index> master;
+        if (friction)
+          for (int q : pair.setup().master_faces[static_cast<std::size_t>(f)]) master.push_back(2 * index_of(s.nodes, q));
+        add_share(out, terms.shares[kk], friction, unknown_map(s, terms.nodes), xj, master);
+      });
     }
   if (!(out.D > 0)) out.covered = false;
   return out;
@@ -261,7 +143,10 @@ std::span<const int> MortarNode::dofs() const { return pair_.slave(slave_).dofs;
 bool MortarNode::symmetric_tangent(bool /*nlgeom*/) const { return !(pair_.mu() > 0) && !pair_.soft(); }
 
 std::string MortarNode::describe() const {
-  return pair_.describe() + ", slave node " + std::to_string(pair_.slave(slave_).node);
+  const auto& names = pair_.setup().slave_names;
+  const auto k = static_cast<std::size_t>(slave_);
+  return pair_.describe() + ", slave node " +
+         (k < names.size() ? names[k] : "index " + std::to_string(pair_.slave(slave_).node));
 }
 
 double MortarNode::row_stiffness() const {
@@ -281,7 +166,7 @@ namespace {
 double round_off(const MortarPair& pair, const MortarSlave& s, const Eigen::VectorXd& u, double D) {
   double largest = 0;
   for (int n : s.nodes) {
-    const Vec2T<double> p = position(pair, u, n);
+    const Vec2T<double> p = mortar_position(pair, u, n);
     largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
   }
   return 1e-12 * largest * std::abs(D);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
+#include "tether/contact/mortar_terms.hpp"
 #include "tether/model/contact_data.hpp"
 #include "tether/model/results.hpp"
 
@@ -34,6 +35,10 @@ struct MortarPairSetup {
   std::vector<std::vector<int>> slave_faces;
   /// Out-of-plane thickness of each slave face [length] (dA = t ds).
   std::vector<double> slave_thickness;
+  /// The user's name of each slave node (label_text(): `UPPER-1.3`, `17`),
+  /// in the order of slave_nodes_of(slave_faces), for messages; empty:
+  /// messages give the node index.
+  std::vector<std::string> slave_names;
   /// Node indices of each master face, face_nodes() order.
   std::vector<std::vector<int>> master_faces;
   /// (element id, face number 1..4) of each master face, for output.
@@ -141,6 +146,10 @@ class MortarPair final : public Contribution {
   [[nodiscard]] const std::vector<int>& term_faces(int e) const { return term_faces_[static_cast<std::size_t>(e)]; }
   /// Slave faces sharing a node with each slave face's nodes (for the normals), by slave node index.
   [[nodiscard]] const std::vector<std::vector<std::pair<int, int>>>& faces_of_node() const { return faces_of_node_; }
+  /// The memo of the terms (slave face × master face) the nodes' kinematics
+  /// share (mortar_terms.hpp); a cache of pure functions of the positions,
+  /// so it is no state of the pair.
+  [[nodiscard]] MortarTermCache& term_cache() const { return term_cache_; }
 
   /// Per-slave output at the state: status, mean gap g̃_j / D_j, pressure
   /// λ_j, normal force λ_j D_j, and the contact force on the node.
@@ -167,6 +176,7 @@ class MortarPair final : public Contribution {
   double attempt_time_ = -1, attempt_dt_ = -1;  ///< the increment attempt the guard counts in
   int releases_ = 0;                            ///< guard releases in this attempt
   MortarIterationStatistics statistics_;
+  mutable MortarTermCache term_cache_;
 };
 
 }  // namespace tether
