@@ -402,3 +402,49 @@ TEST(CondensedSolver, APromiseOfAnUnchangedBulkIsTakenWithoutComparing) {
   solve_with(promised, a, true, b);
   EXPECT_EQ(promised.statistics().sparse_factorizations, 2);
 }
+
+TEST(CondensedSolver, ARightHandSideWithANegligibleBulkPartSkipsTheFullForwardSweep) {
+  // After a first solve with a bulk load, right-hand sides whose entries
+  // outside the interface are zero or round-off (as in Newton once a linear
+  // bulk is in equilibrium) are solved from the interface alone: the same
+  // solution as the full solve with those entries zero, to round-off. A bulk
+  // part above the threshold takes the full path. Symmetric and unsymmetric.
+  constexpr int kExtra = 4;
+  for (const bool symmetric : {true, false}) {
+    Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 5, symmetric);
+    if (!symmetric)
+      for (int s : interface_equations(0)) a(s - kGrid, s) += 0.07;  // A_RI != A_IR^T: LU
+    CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+    std::mt19937 rng(17);
+    std::normal_distribution<double> g;
+    Eigen::VectorXd load(a.rows());
+    for (Eigen::Index i = 0; i < load.size(); ++i) load[i] = g(rng);
+    const Eigen::PartialPivLU<Eigen::MatrixXd> exact(a);
+    Eigen::VectorXd x = solve_with(solver, sparse(a), symmetric, load);
+    EXPECT_LT(relative_error(a, x, load), 1e-12);
+    EXPECT_EQ(solver.statistics().interface_only_solves, 0);
+
+    std::vector<char> in_interface(static_cast<std::size_t>(a.rows()), 0);
+    for (int e : interface_equations(kExtra)) in_interface[static_cast<std::size_t>(e)] = 1;
+    Eigen::VectorXd interface_only = Eigen::VectorXd::Zero(a.rows());
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      if (in_interface[static_cast<std::size_t>(i)]) interface_only[i] = g(rng);
+    Eigen::VectorXd round_off = interface_only;
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      if (!in_interface[static_cast<std::size_t>(i)]) round_off[i] = 1e-15 * g(rng);
+    Eigen::VectorXd small_load = interface_only;
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      if (!in_interface[static_cast<std::size_t>(i)]) small_load[i] = 1e-6 * g(rng);
+
+    solver.solve(interface_only, x);  // b_R exactly zero: exact
+    EXPECT_LT((x - exact.solve(interface_only)).norm() / x.norm(), 1e-12) << symmetric;
+    EXPECT_EQ(solver.statistics().interface_only_solves, 1);
+    solver.solve(round_off, x);  // b_R round-off: the solution of b_R = 0
+    EXPECT_LT((x - exact.solve(interface_only)).norm() / x.norm(), 1e-12) << symmetric;
+    EXPECT_EQ(solver.statistics().interface_only_solves, 2);
+    solver.solve(small_load, x);  // 1e-6 of the first load: a load, solved in full
+    EXPECT_LT(relative_error(a, x, small_load), 1e-12) << symmetric;
+    EXPECT_GT((x - exact.solve(interface_only)).norm() / x.norm(), 1e-8) << symmetric;
+    EXPECT_EQ(solver.statistics().interface_only_solves, 2);
+  }
+}
