@@ -87,6 +87,7 @@ bool CondensedSolver::outer_symmetric(const SparseMatrix& a) const {
 
 void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
   fallback_active_ = false;
+  system_symmetric_ = symmetric;
   const bool promised = std::exchange(outer_unchanged_, false);
   const auto n = static_cast<std::size_t>(a.cols());
   if (in_interface_.size() != n) {
@@ -192,7 +193,7 @@ void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   double bulk = 0;
   for (Eigen::Index i = 0; i < b.size(); ++i)
     if (!in_interface_[static_cast<std::size_t>(i)]) bulk = std::max(bulk, std::abs(b[i]));
-  const bool bulk_negligible = b.allFinite() && bulk <= kNegligibleBulk * bulk_scale_;
+  const bool bulk_negligible = system_symmetric_ && b.allFinite() && bulk <= kNegligibleBulk * bulk_scale_;
   if (std::isfinite(bulk)) bulk_scale_ = std::max(bulk_scale_, bulk);
   Eigen::VectorXd reduced;
   if (bulk_negligible) {

@@ -70,7 +70,10 @@ class CondensedSolver final : public LinearSolver {
   /// first: the bulk rows of the residual are round-off (measured at 2–4e-12
   /// of the increment's load at 230k dofs). A b_R so dropped that was not
   /// round-off stays in the next residual, so a convergence tolerance below
-  /// 1e-10 of the largest bulk load would not be reached.
+  /// 1e-10 of the largest bulk load would not be reached. Only after a
+  /// factorize() of a matrix declared symmetric: with friction the
+  /// stick/slip decisions rest on round-off, and dropping it changes the
+  /// path (measured: one more iteration in a Cattaneo–Mindlin increment).
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override;
   [[nodiscard]] std::string name() const override;
   /// Those of the bulk (statistics().out_of_core_factorizations) and of the fallback.
@@ -96,6 +99,7 @@ class CondensedSolver final : public LinearSolver {
   bool fallback_active_ = false;  ///< the last factorize() went to the fallback
   bool fallback_analysed_ = false;
   bool outer_unchanged_ = false;  ///< note_outer_unchanged() before this factorize()
+  bool system_symmetric_ = false;  ///< the last factorize() was of a matrix declared symmetric
   double bulk_scale_ = 0;         ///< largest |b_i| outside the interface in the solves since the bulk factorization
   // Dense interface system (A_II + C), equilibrated: D (A_II + C) D, D = 1/sqrt|diag|,
   // LU-factorized in place by LAPACK (dgetrf: blocked, multithreaded BLAS).
