@@ -402,3 +402,75 @@ TEST(CondensedSolver, APromiseOfAnUnchangedBulkIsTakenWithoutComparing) {
   solve_with(promised, a, true, b);
   EXPECT_EQ(promised.statistics().sparse_factorizations, 2);
 }
+
+TEST(CondensedSolver, ARightHandSideWithANegligibleBulkPartSkipsTheFullForwardSweep) {
+  // After a first solve with a bulk load, right-hand sides whose entries
+  // outside the interface are zero or round-off (as in Newton once a linear
+  // bulk is in equilibrium) are solved from the interface alone: the same
+  // solution as the full solve with those entries zero, to round-off. A bulk
+  // part above the threshold takes the full path, and so does every solve of
+  // a matrix declared unsymmetric (friction: its path rests on round-off).
+  constexpr int kExtra = 4;
+  for (const bool symmetric : {true, false}) {
+    const Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 5, symmetric);
+    CondensedSolver solver(interface_equations(kExtra), make_linear_solver(SolverKind::Auto));
+    std::mt19937 rng(17);
+    std::normal_distribution<double> g;
+    Eigen::VectorXd load(a.rows());
+    for (Eigen::Index i = 0; i < load.size(); ++i) load[i] = g(rng);
+    const Eigen::PartialPivLU<Eigen::MatrixXd> exact(a);
+    Eigen::VectorXd x = solve_with(solver, sparse(a), symmetric, load);
+    EXPECT_LT(relative_error(a, x, load), 1e-12);
+    EXPECT_EQ(solver.statistics().interface_only_solves, 0);
+
+    std::vector<char> in_interface(static_cast<std::size_t>(a.rows()), 0);
+    for (int e : interface_equations(kExtra)) in_interface[static_cast<std::size_t>(e)] = 1;
+    Eigen::VectorXd interface_only = Eigen::VectorXd::Zero(a.rows());
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      if (in_interface[static_cast<std::size_t>(i)]) interface_only[i] = g(rng);
+    Eigen::VectorXd round_off = interface_only;
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      if (!in_interface[static_cast<std::size_t>(i)]) round_off[i] = 1e-15 * g(rng);
+    Eigen::VectorXd small_load = interface_only;
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      if (!in_interface[static_cast<std::size_t>(i)]) small_load[i] = 1e-6 * g(rng);
+
+    const int skips = symmetric ? 1 : 0;
+    solver.solve(interface_only, x);  // b_R exactly zero: exact either way
+    EXPECT_LT((x - exact.solve(interface_only)).norm() / x.norm(), 1e-12) << symmetric;
+    EXPECT_EQ(solver.statistics().interface_only_solves, skips);
+    solver.solve(round_off, x);  // b_R round-off: the solution of b_R = 0 when skipped
+    if (symmetric) EXPECT_LT((x - exact.solve(interface_only)).norm() / x.norm(), 1e-12);
+    EXPECT_LT(relative_error(a, x, round_off), 1e-12) << symmetric;
+    EXPECT_EQ(solver.statistics().interface_only_solves, 2 * skips);
+    solver.solve(small_load, x);  // 1e-6 of the first load: a load, solved in full
+    EXPECT_LT(relative_error(a, x, small_load), 1e-12) << symmetric;
+    EXPECT_GT((x - exact.solve(interface_only)).norm() / x.norm(), 1e-8) << symmetric;
+    EXPECT_EQ(solver.statistics().interface_only_solves, 2 * skips);
+  }
+}
+
+TEST(MumpsSchur, ExpandFromTheInterfaceEqualsReduceOfAZeroBulkThenExpand) {
+  // LDLT and LU (A_RI != A_IR^T) bulks: expand_interface(x_I) is reduce(b)
+  // with b_R = 0 followed by expand(x_I).
+  constexpr int kExtra = 3;
+  for (const bool symmetric : {true, false}) {
+    Eigen::MatrixXd a = with_contact(bulk_matrix(kExtra), kExtra, 9, symmetric);
+    if (!symmetric)
+      for (int s : interface_equations(0)) a(s - kGrid, s) += 0.07;  // row in R, column in I
+    const std::vector<int> interface = interface_equations(kExtra);
+    std::vector<char> in_interface(static_cast<std::size_t>(a.rows()), 0);
+    for (int e : interface) in_interface[static_cast<std::size_t>(e)] = 1;
+    MumpsSchur schur;
+    schur.factorize(sparse(a), interface, in_interface, symmetric);
+    Eigen::VectorXd x_interface(static_cast<Eigen::Index>(interface.size()));
+    for (Eigen::Index k = 0; k < x_interface.size(); ++k) x_interface[k] = std::sin(1.0 + static_cast<double>(k));
+    Eigen::VectorXd reduced, reference, x;
+    schur.reduce(Eigen::VectorXd::Zero(a.rows()), reduced);
+    EXPECT_EQ(reduced.norm(), 0.0);
+    schur.expand(x_interface, reference);
+    schur.expand_interface(x_interface, x);
+    EXPECT_LT((x - reference).norm() / reference.norm(), 1e-13) << symmetric;
+    EXPECT_GT(reference.head(kBulk - kGrid).norm(), 1e-3) << "x_R must not be trivially zero";
+  }
+}

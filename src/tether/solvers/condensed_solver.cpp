@@ -26,6 +26,10 @@ namespace {
 constexpr double kSingularRcond = 1e-12;
 /// A diagonal below this fraction of the largest counts as absent for the scaling.
 constexpr double kNegligibleDiagonal = 1e-14;
+/// A right-hand side whose entries outside the interface are all at most
+/// this fraction of the largest such entry since the bulk factorization is
+/// solved as if they were zero (see CondensedSolver::solve).
+constexpr double kNegligibleBulk = 1e-10;
 }  // namespace
 
 CondensedSolver::CondensedSolver(std::vector<int> interface, std::unique_ptr<LinearSolver> fallback,
@@ -83,6 +87,7 @@ bool CondensedSolver::outer_symmetric(const SparseMatrix& a) const {
 
 void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
   fallback_active_ = false;
+  system_symmetric_ = symmetric;
   const bool promised = std::exchange(outer_unchanged_, false);
   const auto n = static_cast<std::size_t>(a.cols());
   if (in_interface_.size() != n) {
@@ -117,6 +122,7 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
       bulk_->factorize(a, interface_, in_interface_, outer_sym);
       bulk_valid_ = true;
       bulk_symmetric_ = outer_sym;
+      bulk_scale_ = 0;
       ++statistics_.sparse_factorizations;
       statistics_.factor_entries = bulk_->factor_entries();
       statistics_.factor_memory_mb = bulk_->memory_mb();
@@ -183,8 +189,19 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
 void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   if (fallback_active_) return fallback_->solve(b, x);
   if (!bulk_valid_) throw SolverError("condensed solver: solve before factorize");
+  // Largest |b_i| outside the interface (b_R); a non-finite one is never negligible.
+  double bulk = 0;
+  for (Eigen::Index i = 0; i < b.size(); ++i)
+    if (!in_interface_[static_cast<std::size_t>(i)]) bulk = std::max(bulk, std::abs(b[i]));
+  const bool bulk_negligible = system_symmetric_ && b.allFinite() && bulk <= kNegligibleBulk * bulk_scale_;
+  if (std::isfinite(bulk)) bulk_scale_ = std::max(bulk_scale_, bulk);
   Eigen::VectorXd reduced;
-  bulk_->reduce(b, reduced);
+  if (bulk_negligible) {
+    reduced.setZero(static_cast<Eigen::Index>(interface_.size()));
+    ++statistics_.interface_only_solves;
+  } else {
+    bulk_->reduce(b, reduced);
+  }
   for (std::size_t k = 0; k < interface_.size(); ++k)
     reduced[static_cast<Eigen::Index>(k)] += b[interface_[k]];
   Eigen::VectorXd y = scale_.asDiagonal() * reduced;
@@ -193,7 +210,10 @@ void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   dgetrs_("N", &size, &one, lu_.data(), &size, pivots_.data(), y.data(), &size, &info, 1);
   if (info != 0) throw SolverError("condensed solver: LAPACK dgetrs failed (info " + std::to_string(info) + ")");
   y = scale_.asDiagonal() * y;
-  bulk_->expand(y, x);
+  if (bulk_negligible)
+    bulk_->expand_interface(y, x);
+  else
+    bulk_->expand(y, x);
 }
 
 std::string CondensedSolver::name() const {

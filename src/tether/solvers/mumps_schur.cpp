@@ -68,9 +68,13 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   const std::size_t capacity = static_cast<std::size_t>(a.nonZeros()) / (symmetric ? 2 : 1) + interface.size();
   rows.reserve(capacity), cols.reserve(capacity), values.reserve(capacity);
   Fingerprint pattern, entries;
+  std::vector<Coupling> coupling;  // A_RI: for a symmetric matrix each passed entry between R and I is one of it
   for_each_passed(a, in_interface, symmetric, [&](int i, int j, int k) {
     rows.push_back(i + 1), cols.push_back(j + 1), values.push_back(a.valuePtr()[k]);
     add_entry(pattern, i, j), add_entry(entries, i, j, a.valuePtr()[k]);
+    const bool i_in = in_interface[static_cast<std::size_t>(i)], j_in = in_interface[static_cast<std::size_t>(j)];
+    if (j_in && !i_in) coupling.push_back({i, j, a.valuePtr()[k]});
+    else if (symmetric && i_in && !j_in) coupling.push_back({j, i, a.valuePtr()[k]});
   });
   for (int e : interface) rows.push_back(e + 1), cols.push_back(e + 1), values.push_back(0.0);
 
@@ -122,6 +126,7 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   mumps_->throw_if_null_pivots();
   factorized_ = true;
   entries_ = entries;
+  keep_coupling(coupling, interface);
   factor_entries_ = mumps_->infog(29) >= 0 ? mumps_->infog(29) : -1e6 * mumps_->infog(29);
   memory_mb_ = mumps_->infog(22);
   out_of_core_ = mumps_->icntl(22) == 1;
@@ -168,6 +173,53 @@ void MumpsSchur::reduce(const Eigen::VectorXd& b, Eigen::VectorXd& reduced) {
   run_schur_solve(1);
   reduced = reduced_;
   reduced_ready_ = true;
+}
+
+void MumpsSchur::keep_coupling(std::vector<Coupling>& coupling, const std::vector<int>& interface) {
+  std::sort(coupling.begin(), coupling.end(), [](const Coupling& p, const Coupling& q) { return p.row < q.row; });
+  coupled_rows_.clear(), coupling_row_.clear(), coupling_column_.clear(), coupling_value_.clear();
+  for (const Coupling& c : coupling) {
+    if (coupled_rows_.empty() || coupled_rows_.back() != c.row + 1) coupled_rows_.push_back(c.row + 1);
+    coupling_row_.push_back(static_cast<int>(coupled_rows_.size()) - 1);
+    coupling_column_.push_back(
+        static_cast<int>(std::lower_bound(interface.begin(), interface.end(), c.column) - interface.begin()));
+    coupling_value_.push_back(c.value);
+  }
+  coupled_rows_.shrink_to_fit(), coupling_row_.shrink_to_fit(), coupling_column_.shrink_to_fit();
+  coupling_value_.shrink_to_fit();
+  sparse_rhs_.assign(coupled_rows_.size(), 0.0);
+}
+
+void MumpsSchur::expand_interface(const Eigen::VectorXd& x_interface, Eigen::VectorXd& x) {
+  if (!factorized_ || x_interface.size() != static_cast<Eigen::Index>(schur_list_.size()))
+    throw SolverError("MUMPS Schur: expand_interface before factorize or wrong size");
+  reduced_ready_ = false;
+  std::fill(sparse_rhs_.begin(), sparse_rhs_.end(), 0.0);
+  for (std::size_t k = 0; k < coupling_value_.size(); ++k)
+    sparse_rhs_[static_cast<std::size_t>(coupling_row_[k])] -=
+        coupling_value_[k] * x_interface[coupling_column_[k]];
+  x.setZero(n_);
+  if (!coupled_rows_.empty()) {  // else A_RI = 0 and x_R = 0
+    DMUMPS_STRUC_C& id = mumps_->id;
+    int pointers[2] = {1, static_cast<int>(coupled_rows_.size()) + 1};
+    id.nz_rhs = static_cast<int>(coupled_rows_.size());
+    id.nrhs = 1;
+    id.rhs_sparse = sparse_rhs_.data();
+    id.irhs_sparse = coupled_rows_.data();
+    id.irhs_ptr = pointers;
+    id.rhs = x.data();
+    id.lrhs = static_cast<int>(n_);
+    mumps_->icntl(20) = 1;  // sparse right-hand side; with ICNTL(26) = 0 the internal problem A_RR alone
+    struct Restore {
+      detail::MumpsInstance& m;
+      ~Restore() {
+        m.icntl(20) = 0;
+        m.id.rhs_sparse = nullptr, m.id.irhs_sparse = nullptr, m.id.irhs_ptr = nullptr, m.id.nz_rhs = 0;
+      }
+    } restore{*mumps_};
+    mumps_->run(3);
+  }
+  for (std::size_t k = 0; k < schur_list_.size(); ++k) x[schur_list_[k] - 1] = x_interface[static_cast<Eigen::Index>(k)];
 }
 
 void MumpsSchur::expand(const Eigen::VectorXd& x_interface, Eigen::VectorXd& x) {

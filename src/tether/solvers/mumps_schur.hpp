@@ -63,6 +63,15 @@ class MumpsSchur {
   /// Expansion after reduce(b): x_R = A_RR⁻¹ (b_R - A_RI x_I) and x_I = `x_interface`.
   void expand(const Eigen::VectorXd& x_interface, Eigen::VectorXd& x);
 
+  /// The solution for a right-hand side whose R part is zero, without
+  /// reduce(): x_R = -A_RR⁻¹ A_RI x_I and x_I = `x_interface` (the same as
+  /// reduce(b) with b_R = 0, whose reduced vector is zero, then expand()).
+  /// The right-hand side -A_RI x_I is nonzero only on the equations of R
+  /// coupled to I, so it is given to MUMPS as sparse (ICNTL(20)) and the
+  /// forward sweep visits only the fronts on their paths to the root; the
+  /// backward sweep is complete. Invalidates a pending reduce().
+  void expand_interface(const Eigen::VectorXd& x_interface, Eigen::VectorXd& x);
+
   /// Entries of the factors (INFOG(29)) and MUMPS' memory for it [MB] (INFOG(22)) of the last factorization.
   [[nodiscard]] double factor_entries() const { return factor_entries_; }
   [[nodiscard]] int memory_mb() const { return memory_mb_; }
@@ -78,6 +87,14 @@ class MumpsSchur {
  private:
   /// Solve phase with ICNTL(26) = `phase` (1 condensation, 2 expansion) on rhs_ and reduced_.
   void run_schur_solve(int phase);
+
+  /// An entry of A_RI: R equation `row`, interface equation `column` (0-based).
+  struct Coupling {
+    int row, column;
+    double value;
+  };
+  /// Keeps A_RI (`coupling`, sorted here) in the coupling_* arrays for expand_interface().
+  void keep_coupling(std::vector<Coupling>& coupling, const std::vector<int>& interface);
 
   /// 128-bit fingerprint of a sequence of entries (two independent 64-bit lanes).
   struct Fingerprint {
@@ -98,6 +115,13 @@ class MumpsSchur {
   bool factorized_ = false;
   bool analysed_ = false;            ///< the last analysis (job 1) succeeded
   std::vector<int> schur_list_;      ///< interface equations, 1-based
+  /// A_RI of the last factorization, for expand_interface(): entry k couples
+  /// R row coupled_rows_[coupling_row_[k]] to interface column coupling_column_[k]
+  /// (index into schur_list_) with value coupling_value_[k].
+  std::vector<int> coupled_rows_;    ///< distinct R equations with an entry in A_RI, 1-based, ascending
+  std::vector<int> coupling_row_, coupling_column_;
+  std::vector<double> coupling_value_;
+  std::vector<double> sparse_rhs_;   ///< -A_RI x_I on coupled_rows_
   std::vector<double> schur_rows_;   ///< MUMPS' Schur array (by rows)
   Eigen::MatrixXd schur_;
   Eigen::VectorXd rhs_, reduced_;    ///< kept from reduce() for expand()
