@@ -99,7 +99,7 @@ void ExplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
   mass_ = Eigen::VectorXd::Zero(n);
   for (const auto& m : system_.inertia()) {
     const auto d = m->dofs();
-    for (std::size_t i = 0; i < d.size(); ++i) mass_[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+    for (std::size_t i = 0; i < d.size(); ++i) mass_[d[i]] += m->mass_entry(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
   }
   inverse_mass_ = Eigen::VectorXd::Zero(n);
   free_.clear(), prescribed_.clear();
@@ -150,7 +150,7 @@ void ExplicitDynamicProcedure::setup_damping(const EvaluationState& s) {
     const ElementInertia& m = *inertia[e];
     const auto dofs = m.dofs();
     for (std::size_t i = 0; i < dofs.size(); ++i)
-      alpha_mass[dofs[i]] += m.damping_alpha() * m.mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+      alpha_mass[dofs[i]] += m.damping_alpha() * m.mass_entry(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
     if (m.damping_beta() == 0) continue;
     k.reset(static_cast<Eigen::Index>(dofs.size()));
     m.element().evaluate(s, k, true);
