@@ -5,7 +5,13 @@
 // stable increment h / c_p each). No writers: the results of the 100 report
 // intervals are built and dropped.
 //
-//   OMP_NUM_THREADS=1 tether_bench_explicit --elements 1000000 --increments 200
+//   OMP_NUM_THREADS=1 tether_bench_explicit --elements 1000000 --increments 400
+//
+// The figure is the difference of a run of K and one of 2K increments, both
+// with 100 reports: set-up and reports cancel in it, but their noise does not.
+// At 1M elements one report costs about as much as 5 increments, so K must be
+// a few hundred for the K increments to dominate the runs: the bench prints
+// their share of the 2K run's CPU time and warns below one half.
 //
 // Output: a readable report on stderr and `@key=value` lines on stdout:
 // elements, increments, ns per element per increment from the CPU time (and
@@ -102,14 +108,21 @@ int main(int argc, char** argv) {
   const double per = 1e9 / (static_cast<double>(elements) * static_cast<double>(twice.increments - once.increments));
   const double ns_cpu = (twice.cpu - once.cpu) * per;
   const double ns_wall = (twice.evaluation - once.evaluation) * per;
+  const double share = (twice.cpu - once.cpu) / twice.cpu;  // the K increments' share of the 2K run
+  const double rest = (2 * once.cpu - twice.cpu) / 100;       // set-up and reports of one run, per report
   fmt::print(stderr,
              "{} CPE4: {} and {} explicit increments took {:.3f} and {:.3f} s CPU ({:.3f} and {:.3f} s wall, of "
              "which the explicit loop {:.3f} and {:.3f} s, the 100 reports {:.3f} and {:.3f} s): {:.1f} ns CPU "
              "({:.1f} ns wall) per element per increment; peak RSS {:.0f} MiB\n",
              elements, once.increments, twice.increments, once.cpu, twice.cpu, once.wall, twice.wall, once.evaluation,
              twice.evaluation, once.output, twice.output, ns_cpu, ns_wall, peak_rss_mib());
+  fmt::print(stderr, "the K increments are {:.0f} % of the 2K run's CPU; set-up and reports {:.3f} s CPU per report{}\n",
+             100 * share, rest,
+             share < 0.5 ? ": below one half, the reports' noise weighs on the figure; run more increments" : "");
   fmt::print("@elements={}\n@increments={}\n@ns_per_element_increment_cpu={:.4g}\n"
-             "@ns_per_element_increment_wall={:.4g}\n@cpu_s_2k={:.6g}\n@peak_rss_mib={:.1f}\n",
-             elements, twice.increments - once.increments, ns_cpu, ns_wall, twice.cpu, peak_rss_mib());
+             "@ns_per_element_increment_wall={:.4g}\n@cpu_s_2k={:.6g}\n@increments_share_2k={:.3f}\n"
+             "@peak_rss_mib={:.1f}\n@peak_rss_bytes_per_element={:.0f}\n",
+             elements, twice.increments - once.increments, ns_cpu, ns_wall, twice.cpu, share, peak_rss_mib(),
+             peak_rss_mib() * 1048576.0 / static_cast<double>(elements));
   return 0;
 }

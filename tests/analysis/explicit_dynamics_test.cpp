@@ -214,7 +214,7 @@ TEST(StableIncrement, BoundsTheHighestFrequencyOfADistortedMesh) {
     local.reset(static_cast<Eigen::Index>(dofs.size()));
     m->element().evaluate(s, local, true);
     for (std::size_t i = 0; i < dofs.size(); ++i) {
-      mass[dofs[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+      mass[dofs[i]] += m->mass_entry(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
       for (std::size_t j = 0; j < dofs.size(); ++j)
         stiffness(dofs[i], dofs[j]) += local.tangent(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
     }
@@ -731,7 +731,7 @@ Eigen::VectorXd nodal_masses(const std::string& deck) {
   for (const auto& m : b->system->inertia()) {
     const auto dofs = m->dofs();
     for (std::size_t i = 0; i < dofs.size(); i += 2)
-      out[b->discretization->dofs().node_of(dofs[i])] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+      out[b->discretization->dofs().node_of(dofs[i])] += m->mass_entry(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
   }
   return out;
 }

@@ -82,5 +82,46 @@ TEST(ElementInertia, ResidualIsMassTimesNewmarkAccelerationPlusDamping) {
   EXPECT_LT((force - (0.7 * m.mass() * v + 2e-3 * K * v)).cwiseAbs().maxCoeff(), 1e-12 * force.cwiseAbs().maxCoeff());
 }
 
+// The inertia keeps the mass over the nodes (n lumped masses, or the n x n
+// consistent matrix), not the (2n)^2 matrix over local dofs; what it hands
+// out is bitwise ContinuumElement::mass, before and after redistribution.
+TEST(ElementInertia, KeepsTheNodalMassAndHandsOutTheElementsMatrixBitwise) {
+  LinearElastic material{1000.0, 0.3};
+  MaterialData data;
+  data.name = "M", data.density = 2.5, data.where = {"deck.inp", 3};
+  NewmarkIncrement increment;
+  for (const ElementType& type : test::supported_types()) {
+    const int n = type.n_nodes;
+    DofMap dofs{std::vector<int>(static_cast<std::size_t>(n), 0)};
+    std::vector<int> nodes(static_cast<std::size_t>(n));
+    std::iota(nodes.begin(), nodes.end(), 0);
+    const ContinuumElement element(1, type, nodes, test::distorted_element(type.shape, 5), material, 1.0, dofs, &data);
+    for (const MassKind kind : {MassKind::Consistent, MassKind::Lumped}) {
+      const std::string what = std::string(type.name) + (kind == MassKind::Lumped ? " lumped" : " consistent");
+      Eigen::MatrixXd expected;
+      element.mass(kind, expected);
+      ElementInertia m(element, kind, 0, 0, increment);
+      EXPECT_EQ(m.stored_mass_values(), kind == MassKind::Lumped ? n : n * n) << what;
+      EXPECT_EQ(m.mass(), expected) << what;
+      EXPECT_EQ(m.mass_diagonal(), Eigen::VectorXd(expected.diagonal())) << what;
+      for (Eigen::Index i = 0; i < expected.rows(); ++i)
+        for (Eigen::Index j = 0; j < expected.cols(); ++j) ASSERT_EQ(m.mass_entry(i, j), expected(i, j)) << what;
+      // Redistribution away from node 0 keeps the (2n)^2 result of redistribute_mass.
+      std::vector<bool> massless(static_cast<std::size_t>(n), false);
+      massless[0] = true;
+      Eigen::MatrixXd lumped;
+      element.mass(MassKind::Lumped, lumped);
+      Eigen::VectorXd weights(n);
+      for (int a = 0; a < n; ++a) weights[a] = lumped(2 * a, 2 * a);
+      ASSERT_TRUE(m.redistribute(massless)) << what;
+      const Eigen::MatrixXd moved = redistribute_mass(expected, 2, weights, massless, kind == MassKind::Lumped);
+      EXPECT_EQ(m.stored_mass_values(), 4 * n * n) << what;
+      EXPECT_EQ(m.mass(), moved) << what;
+      EXPECT_EQ(m.mass_entry(1, 1), moved(1, 1)) << what;
+      EXPECT_EQ(m.mass_entry(0, 2), moved(0, 2)) << what;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tether

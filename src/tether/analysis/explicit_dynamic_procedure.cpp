@@ -135,7 +135,7 @@ void ExplicitDynamicProcedure::start_step(const IncrementTimes& first, Eigen::Ve
   mass_ = Eigen::VectorXd::Zero(n);
   for (const auto& m : system_.inertia()) {
     const auto d = m->dofs();
-    for (std::size_t i = 0; i < d.size(); ++i) mass_[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+    for (std::size_t i = 0; i < d.size(); ++i) mass_[d[i]] += m->mass_entry(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
   }
   inverse_mass_ = Eigen::VectorXd::Zero(n);
   free_.clear(), prescribed_.clear();
@@ -186,7 +186,7 @@ void ExplicitDynamicProcedure::setup_damping(const EvaluationState& s) {
     const ElementInertia& m = *inertia[e];
     const auto dofs = m.dofs();
     for (std::size_t i = 0; i < dofs.size(); ++i)
-      alpha_mass[dofs[i]] += m.damping_alpha() * m.mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+      alpha_mass[dofs[i]] += m.damping_alpha() * m.mass_entry(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
     if (m.damping_beta() == 0) continue;
     k.reset(static_cast<Eigen::Index>(dofs.size()));
     m.element().evaluate(s, k, true);
@@ -213,7 +213,7 @@ void ExplicitDynamicProcedure::set_damping_factors(double h_average) {
       decay_[d] = std::exp(-x);
       gain_[d] = -std::expm1(-x) / x;
     }
-  effective_inverse_mass_ = gain_.cwiseProduct(inverse_mass_);
+  if (contact_ || constraints_) effective_inverse_mass_ = gain_.cwiseProduct(inverse_mass_);  // the correction's mobility
 }
 
 void ExplicitDynamicProcedure::sort_elements() {
@@ -222,22 +222,27 @@ void ExplicitDynamicProcedure::sort_elements() {
   for (int d : prescribed_) constant[static_cast<std::size_t>(d)] = true;  // held dofs keep their values...
   for (const auto& [dof, v] : system_.loads().prescribed)  // ... unless the step moves them
     constant[static_cast<std::size_t>(dof)] = !prescribed_moves(v);
-  moving_elements_.clear(), held_elements_.clear();
+  moving_elements_.clear(), held_elements_.clear(), committing_elements_.clear();
   const auto& elements = system_.discretization().elements();
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const auto dofs = elements[e]->dofs();
     const bool held = std::all_of(dofs.begin(), dofs.end(), [&](int d) { return constant[static_cast<std::size_t>(d)]; });
     (held ? held_elements_ : moving_elements_).push_back(static_cast<int>(e));
+    if (!held && elements[e]->has_history()) committing_elements_.push_back(static_cast<int>(e));
   }
 }
 
 void ExplicitDynamicProcedure::evaluate_held(const EvaluationState& s) {
+  if (held_elements_.empty()) {  // no held element: no vector
+    held_residual_.resize(0);
+    return;
+  }
   if (residual_.size() == s.u.size() && held_residual_.size() == s.u.size()) residual_ -= held_residual_;
   held_residual_.setZero(s.u.size());
   const auto& elements = system_.discretization().elements();
   for (int e : held_elements_) {
     const auto& el = elements[static_cast<std::size_t>(e)];
-    local_.reset(static_cast<Eigen::Index>(el->dofs().size()));
+    local_.residual.setZero(static_cast<Eigen::Index>(el->dofs().size()));  // no tangent: left unsized
     el->evaluate(s, local_, false);
     scatter(*el, local_.residual, 1, held_residual_);
     el->commit(s);
@@ -246,11 +251,14 @@ void ExplicitDynamicProcedure::evaluate_held(const EvaluationState& s) {
 }
 
 void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
-  residual_ = held_residual_;
+  if (held_residual_.size() == s.u.size())
+    residual_ = held_residual_;
+  else
+    residual_.setZero(s.u.size());
   const auto& elements = system_.discretization().elements();
   for (int e : moving_elements_) {
     const auto& el = elements[static_cast<std::size_t>(e)];
-    local_.reset(static_cast<Eigen::Index>(el->dofs().size()));
+    local_.residual.setZero(static_cast<Eigen::Index>(el->dofs().size()));  // no tangent: left unsized
     el->evaluate(s, local_, false);
     scatter(*el, local_.residual, 1, residual_);
   }
@@ -261,6 +269,10 @@ void ExplicitDynamicProcedure::evaluate_forces(const EvaluationState& s) {
     scatter(*p, local_.residual, -1, external_);
   }
   residual_ -= external_;
+  if (!damped() && damping_force_.size() == s.u.size()) {  // stays 0; r + 0 = r (r is never -0: sums from +0)
+    for (int d : free_) accel_[d] = -residual_[d] * inverse_mass_[d];
+    return;
+  }
   damping_force_.setZero(s.u.size());
   const auto& inertia = system_.inertia();
   for (const StiffnessDamping& c : stiffness_damping_) {  // beta K_e v_{n-1/2}
@@ -319,6 +331,30 @@ void ExplicitDynamicProcedure::correction_force(Eigen::VectorXd& u, double h, Ei
   }
 }
 
+double ExplicitDynamicProcedure::move(Eigen::VectorXd& u, double h, double h_average) {
+  const int n_disp = system_.discretization().dofs().n_displacement_dofs();
+  for (Eigen::Index d = n_disp; d < u.size(); ++d) u_previous_[d] = u[d];  // multipliers
+  if (!damped()) {  // decay_ = gain_ = 1 and no damping force: the same values, fewer vectors read
+    for (int d = 0; d < n_disp; ++d) {
+      half_velocity_[d] = half_velocity_[d] + h_average * accel_[d];
+      u_previous_[d] = u[d];
+      u[d] += h * half_velocity_[d];
+      step_u_[d] = u[d] - u_previous_[d];
+    }
+    return 0;
+  }
+  double viscous_power = 0;  // (the damping forces at t_n) . (u_{n+1} - u_n) / h
+  for (int d = 0; d < n_disp; ++d) {
+    const double undamped = half_velocity_[d] + h_average * accel_[d];
+    half_velocity_[d] = decay_[d] * half_velocity_[d] + h_average * gain_[d] * accel_[d];
+    u_previous_[d] = u[d];
+    u[d] += h * half_velocity_[d];
+    step_u_[d] = u[d] - u_previous_[d];
+    viscous_power += (damping_force_[d] + mass_[d] * (undamped - half_velocity_[d]) / h_average) * half_velocity_[d];
+  }
+  return viscous_power;
+}
+
 void ExplicitDynamicProcedure::advance(Eigen::VectorXd& u, double t, double h) {
   prescribed_accelerations(u, t, h);
   if (contact_ || constraints_) {  // the contact and constraint forces at t_n, from the predicted positions
@@ -333,21 +369,14 @@ void ExplicitDynamicProcedure::advance(Eigen::VectorXd& u, double t, double h) {
   const double h_average = 0.5 * (h_previous_ + h);
   const int n_disp = system_.discretization().dofs().n_displacement_dofs();
   set_damping_factors(h_average);
-  u_previous_ = u;
-  double viscous_power = 0;  // (the damping forces at t_n) . (u_{n+1} - u_n) / h
-  for (int d = 0; d < n_disp; ++d) {
-    const double undamped = half_velocity_[d] + h_average * accel_[d];
-    half_velocity_[d] = decay_[d] * half_velocity_[d] + h_average * gain_[d] * accel_[d];
-    u[d] += h * half_velocity_[d];
-    viscous_power += (damping_force_[d] + mass_[d] * (undamped - half_velocity_[d]) / h_average) * half_velocity_[d];
-  }
-  viscous_ += h * viscous_power;
+  viscous_ += h * move(u, h, h_average);
   const double t_next = t + h;
   system_.apply_loads(IncrementTimes{t_next, motion_time_offset_ + t_next, h, period_, false}, u, cloads_);
-  for (int d = 0; d < n_disp; ++d) step_u_[d] = u[d] - u_previous_[d];
+  for (const auto& [dof, v] : system_.loads().prescribed)  // the dofs apply_loads() moved
+    if (dof < n_disp) step_u_[dof] = u[dof] - u_previous_[dof];
   const EvaluationState s{u, u_previous_, t_next, motion_time_offset_ + t_next, h, system_.step().nlgeom};
   evaluate_forces(s);
-  for (int e : moving_elements_) system_.discretization().elements()[static_cast<std::size_t>(e)]->commit(s);
+  for (int e : committing_elements_) system_.discretization().elements()[static_cast<std::size_t>(e)]->commit(s);
   h_previous_ = h;
   ++n_increments_;
 }

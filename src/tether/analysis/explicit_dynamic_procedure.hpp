@@ -125,6 +125,12 @@ class ExplicitDynamicProcedure final : public Procedure {
   /// predict from the state `u`, half_velocity_, accel_; the constraints'
   /// multipliers are written into `u`.
   void correction_force(Eigen::VectorXd& u, double h, Eigen::VectorXd& force);
+  /// v_{n+1/2} and u_{n+1} at the displacement dofs (u_previous_ = u_n,
+  /// step_u_ = u_{n+1} - u_n there); returns the viscous power of the damping
+  /// forces at t_n over the increment (0 undamped).
+  double move(Eigen::VectorXd& u, double h, double h_average);
+  /// Rayleigh damping in the step (mass- or stiffness-proportional).
+  [[nodiscard]] bool damped() const { return mass_damping_.size() > 0 || !stiffness_damping_.empty(); }
   /// One explicit increment h from step time t to t + h.
   void advance(Eigen::VectorXd& u, double t, double h);
   /// Results and energies at the end of an interval, state `s`, spanning
@@ -161,8 +167,10 @@ class ExplicitDynamicProcedure final : public Procedure {
   Eigen::VectorXd next_values_;          ///< scratch: prescribed values one increment ahead
   LocalSystem local_;                    ///< scratch for one contribution
   std::vector<int> moving_elements_, held_elements_;  ///< element indices (see sort_elements())
+  std::vector<int> committing_elements_;  ///< the moving elements with history (the others commit nothing)
   Eigen::VectorXd mass_damping_;         ///< alpha per dof [1/time], 0 at prescribed dofs (empty: none)
-  Eigen::VectorXd decay_, gain_, effective_inverse_mass_;  ///< see set_damping_factors()
+  Eigen::VectorXd decay_, gain_;         ///< see set_damping_factors()
+  Eigen::VectorXd effective_inverse_mass_;  ///< see set_damping_factors() (empty without contact and constraints)
   double factors_h_ = -1;                ///< the h_average of decay_ and gain_
   struct StiffnessDamping {
     int element = 0;         ///< index in the step system's inertia()
@@ -171,7 +179,7 @@ class ExplicitDynamicProcedure final : public Procedure {
   std::vector<StiffnessDamping> stiffness_damping_;
   Eigen::VectorXd damping_force_;        ///< beta K v_{n-1/2} (with alpha m v_{n-1/2} at prescribed dofs)
   double viscous_ = 0;                   ///< ALLVD (from the step's start value)
-  Eigen::VectorXd held_residual_;        ///< the held elements' f_int at the current report interval
+  Eigen::VectorXd held_residual_;        ///< the held elements' f_int at the current report interval (empty: none)
   Eigen::VectorXd half_velocity_;        ///< v_{n-1/2} (v_0 before the first increment)
   Eigen::VectorXd accel_;                ///< a_n
   Eigen::VectorXd u_previous_;           ///< u_{n-1} (evaluation state's u_start)

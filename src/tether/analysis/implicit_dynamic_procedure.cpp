@@ -30,7 +30,7 @@ Eigen::VectorXd mass_diagonal(const StepSystem& system) {
   for (const auto& m : system.inertia()) {
     const auto d = m->dofs();
     for (std::size_t i = 0; i < d.size(); ++i)
-      diagonal[d[i]] += m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
+      diagonal[d[i]] += m->mass_entry(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i));
   }
   return diagonal;
 }
@@ -54,7 +54,7 @@ Eigen::VectorXd solve_mass(const StepSystem& system, const Eigen::VectorXd& f) {
     for (std::size_t i = 0; i < d.size(); ++i)
       for (std::size_t j = 0; j < d.size(); ++j) {
         const auto fi = index.find(d[i]), fj = index.find(d[j]);
-        const double v = m->mass()(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+        const double v = m->mass_entry(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
         if (fi != index.end() && fj != index.end() && v != 0) entries.emplace_back(fi->second, fj->second, v);
       }
   }

@@ -46,7 +46,7 @@ StableIncrement stable_increment(const std::vector<std::unique_ptr<ElementInerti
     local.reset(static_cast<Eigen::Index>(dofs.size()));
     m.element().evaluate(s, local, true);
     const std::string what = m.element().describe();
-    const Eigen::VectorXd mass = m.mass().diagonal();
+    const Eigen::VectorXd mass = m.mass_diagonal();
     const double omega2 = free.size() == dofs.size()
                               ? largest_frequency_squared(local.tangent, mass, what)
                               : largest_frequency_squared(local.tangent(free, free), mass(free), what);

@@ -14,6 +14,7 @@
 /// docs/theory/dynamics.md.
 
 #include <Eigen/Core>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -63,8 +64,18 @@ class ElementInertia final : public Contribution {
   }
   [[nodiscard]] std::string describe() const override { return "inertia of " + element_.describe(); }
 
-  /// The element's mass matrix over dofs() [mass] (diagonal when lumped).
-  [[nodiscard]] const Eigen::MatrixXd& mass() const { return mass_; }
+  /// The element's mass matrix over dofs() [mass] (diagonal when lumped),
+  /// built from the stored nodal form at each call: bitwise the matrix of
+  /// ContinuumElement::mass (or of redistribute()). Loops over entries use mass_entry().
+  [[nodiscard]] Eigen::MatrixXd mass() const;
+  /// Entry (i, j) of mass() over the element's local dofs, without building the matrix [mass].
+  [[nodiscard]] double mass_entry(Eigen::Index i, Eigen::Index j) const;
+  /// The diagonal of mass() over the element's local dofs [mass] (the lumped nodal masses per component).
+  [[nodiscard]] Eigen::VectorXd mass_diagonal() const;
+  /// Doubles the inertia keeps on the heap for its mass: n (lumped) or n^2
+  /// (consistent) for an element of n nodes, (c n)^2 once redistribute()
+  /// changed it (c components per node). The (c n)^2 matrix is built per use.
+  [[nodiscard]] Eigen::Index stored_mass_values() const;
   [[nodiscard]] const ContinuumElement& element() const { return element_; }
   /// Kinetic energy 1/2 v_e^T M v_e of global velocities `v` [energy].
   [[nodiscard]] double kinetic_energy(const Eigen::VectorXd& v) const;
@@ -84,9 +95,16 @@ class ElementInertia final : public Contribution {
   bool redistribute(const std::vector<bool>& massless);
 
  private:
+  /// mass() into `out`.
+  void expanded_mass(Eigen::MatrixXd& out) const;
+
   const ContinuumElement& element_;
   const NewmarkIncrement& increment_;
-  Eigen::MatrixXd mass_;
+  /// The mass over the element's nodes, the same for every component:
+  /// n x 1 nodal masses (lumped) or the n x n matrix (consistent).
+  Eigen::MatrixXd nodal_;
+  Eigen::Index components_ = 0;              ///< local dofs per node
+  std::unique_ptr<Eigen::MatrixXd> moved_;  ///< the mass over local dofs after redistribute() (null before)
   MassKind kind_;
   double damping_alpha_ = 0, damping_beta_ = 0;
 };
