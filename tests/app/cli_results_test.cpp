@@ -367,3 +367,38 @@ TEST(Cli, PretensionRestartCarriesTheHeldBoltLengthAndRefusesAnotherHistory) {
   EXPECT_FALSE(fs::exists(dir / "zero"));
   EXPECT_EQ(slurp(dir / "first" / "first.dat"), first_dat);
 }
+
+// The .dat's contact rows of a CAE deck carry the part's labels when a pair's
+// slave nodes (and its master elements) lie in one instance, as the node and
+// element blocks of a set do: Upper-1's bottom nodes 1-3 (inside tether
+// 11-13) on Lower-1's top elements.
+TEST(Cli, CaeDeckContactRowsCarryPartLabels) {
+  const fs::path dir = scratch("cae_contact_rows");
+  std::string deck = slurp(fs::path(TETHER_SOURCE_DIR) / "tests/io/decks/cae/one_part_twice.inp");
+  const auto end = deck.rfind("*End Step");
+  ASSERT_NE(end, std::string::npos);
+  deck.insert(end, "*Contact Print\nCSTRESS\n");
+  write(dir / "contact.inp", deck);
+  const auto run = tether("run " + (dir / "contact.inp").string() + " -o " + (dir / "out").string() + " -q");
+  ASSERT_EQ(run.code, 0) << run.out;
+  std::istringstream dat(slurp(dir / "out" / "contact.dat"));
+  std::string line, block;
+  int state_rows = 0, stress_rows = 0;
+  while (std::getline(dat, line)) {
+    if (line.find_first_of("abcdefghijklmnopqrstuvwxyz") != std::string::npos) block = line;  // a block's title
+    std::istringstream row(line);
+    std::vector<double> v;
+    for (double x; row >> x;) v.push_back(x);
+    if (v.empty() || block.empty()) continue;
+    if (block.find("contact stress") != std::string::npos && v.size() == 4) {
+      ++stress_rows;
+      EXPECT_LE(v[0], 3) << line;  // a part label of Upper-1's bottom, not 11-13
+    } else if (block.find("contact state") != std::string::npos && v.size() == 10) {
+      ++state_rows;
+      EXPECT_LE(v[0], 3) << line;
+      EXPECT_LE(v[7], 4) << line;  // Lower-1's elements 1-4
+    }
+  }
+  EXPECT_EQ(state_rows, 6);  // three slave nodes at each of the two increments
+  EXPECT_GE(stress_rows, 1);
+}

@@ -199,6 +199,10 @@ struct OutputRequest {
   std::string set;                    ///< NSET/ELSET name (upper case); empty = all
   std::vector<std::string> variables; ///< U, RF, S, E, ... (upper case)
   int frequency = 1;                  ///< every n-th increment (0 = none); last always written
+  bool totals = false;                ///< TOTALS=YES/ONLY
+  bool totals_only = false;           ///< TOTALS=ONLY
+  SourceLocation where;
+  // Set after `where`, so that positional initializers of the fields above keep their meaning.
   /// NUMBER INTERVAL= (`*OUTPUT`): write at the ends of this many equal
   /// intervals of the step; 0 = not given (FREQUENCY or TIME INTERVAL rules).
   int number_interval = 0;
@@ -211,9 +215,6 @@ struct OutputRequest {
   /// FREQUENCY, NUMBER INTERVAL or TIME INTERVAL was written (else the
   /// procedure's default applies: see explicit steps in docs/keywords.md).
   bool schedule_given = false;
-  bool totals = false;                ///< TOTALS=YES/ONLY
-  bool totals_only = false;           ///< TOTALS=ONLY
-  SourceLocation where;
 };
 
 /// The procedure of a step.

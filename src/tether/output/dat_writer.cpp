@@ -75,6 +75,16 @@ Selection select(const Model& model, const OutputRequest& r) {
   return s;
 }
 
+/// The instance offset of the slave nodes of `pairs` (all of them in one
+/// ABAQUS/CAE instance: its part's labels are printed), else 0.
+int slave_label_offset(const Model& model, const std::vector<ContactPairValues>& pairs) {
+  std::vector<int> nodes;
+  for (const ContactPairValues& pair : pairs)
+    for (const ContactNodeValues& v : pair.nodes)
+      if (v.node >= 0 && v.node < model.n_nodes()) nodes.push_back(v.node);
+  return common_instance_offset(model, nodes, [&](int i) { return model.node_ids[static_cast<std::size_t>(i)]; });
+}
+
 /// " and time  0.1000000E+01" (ccx: ' and time ',e14.7).
 std::string time_suffix(double time) { return fmt::format(" and time {:>14}", fortran_e(time, 7)); }
 
@@ -270,6 +280,7 @@ void write_contact_rows(Out out, const Model& model, const IncrementResults& r, 
                        stress ? "contact stress (slave node,press,tang1,tang2)"
                               : "relative contact displacement (slave node,normal,tang1,tang2)",
                        r.total_time);
+  const int offset = slave_label_offset(model, r.contact);
   for (std::size_t p = 0; p < r.contact.size(); ++p) {
     const ContactPairValues& pair = r.contact[p];
     for (const ContactNodeValues& v : pair.nodes) {
@@ -279,7 +290,7 @@ void write_contact_rows(Out out, const Model& model, const IncrementResults& r, 
       const double in_plane = stress ? c.factor * v.shear : relative_slip[p].at(v.node);
       const double tang1 = c.vertical ? 0.0 : in_plane;
       const double tang2 = c.vertical ? in_plane : 0.0;
-      fmt::format_to(out, "{:10d} {:13.6E} {:13.6E} {:13.6E}\n", model.node_ids[node],
+      fmt::format_to(out, "{:10d} {:13.6E} {:13.6E} {:13.6E}\n", model.node_ids[node] - offset,
                      unsigned_zero(stress ? v.pressure : v.gap), unsigned_zero(tang1), unsigned_zero(tang2));
     }
   }
@@ -374,11 +385,18 @@ void write_contact_state_blocks(std::string& text, const Model& model, const std
                    contact[p].node_based ? kNodeBasedContactStateTitle : kContactStateTitle,
                    contact_pair_set_name(model, contact, p),
                    time_suffix(time));
+    // Within one ABAQUS/CAE instance each, slave nodes and master elements carry their part's labels.
+    const int node_offset = slave_label_offset(model, {contact[p]});
+    std::vector<int> masters;
+    for (const ContactNodeValues& v : contact[p].nodes)
+      if (v.master_element > 0) masters.push_back(v.master_element);
+    const int element_offset = common_instance_offset(model, masters, [](int label) { return label; });
     for (const ContactNodeValues& v : contact[p].nodes) {
       const std::size_t node = checked_node(model, contact[p], v.node);
       fmt::format_to(out, "{:10d}{:5d} {:13.6E} {:13.6E} {:13.6E} {:13.6E} {:13.6E}{:10d}{:5d} {:13.6E}\n",
-                     model.node_ids[node], status_code(v.status), unsigned_zero(v.gap), unsigned_zero(v.pressure),
-                     unsigned_zero(v.shear), unsigned_zero(v.slip), unsigned_zero(v.total_slip), v.master_element,
+                     model.node_ids[node] - node_offset, status_code(v.status), unsigned_zero(v.gap),
+                     unsigned_zero(v.pressure), unsigned_zero(v.shear), unsigned_zero(v.slip),
+                     unsigned_zero(v.total_slip), v.master_element > 0 ? v.master_element - element_offset : 0,
                      v.master_face, unsigned_zero(v.xi));
     }
   }
