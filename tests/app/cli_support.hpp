@@ -50,4 +50,34 @@ inline std::string slurp(const fs::path& p) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
+/// One CPE4 under tension, held at its left edge: a deck that runs.
+inline constexpr const char* kGoodDeck = R"(*HEADING
+one CPE4 under tension
+*NODE, NSET=ALL
+1, 0, 0
+2, 1, 0
+3, 1, 1
+4, 0, 1
+*ELEMENT, TYPE=CPE4, ELSET=E
+1, 1, 2, 3, 4
+*NSET, NSET=LEFT
+1, 4
+*MATERIAL, NAME=M
+*ELASTIC
+1000, 0.3
+*SOLID SECTION, ELSET=E, MATERIAL=M
+*BOUNDARY
+LEFT, 1
+1, 2
+*STEP
+*STATIC
+0.5, 1.
+*CLOAD
+2, 1, 1.
+3, 1, 1.
+*NODE PRINT, NSET=ALL
+U
+*END STEP
+)";
+
 }  // namespace cli_test

@@ -1,0 +1,150 @@
+// The tether command line: memory budget, solver choice, bulk reuse and mortar condensation.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include "cli_support.hpp"
+
+namespace fs = std::filesystem;
+using namespace cli_test;
+
+
+TEST(Cli, MemoryBudgetKeepsTheAnswerAndRefusesNonsense) {
+  const fs::path dir = scratch("memory");
+  write(dir / "plate.inp", kGoodDeck);
+  const std::string deck = (dir / "plate.inp").string();
+  for (const char* bad : {"--memory 0", "--memory -5", "--memory lots"}) {
+    const auto r = tether("run " + deck + " " + bad + " -o " + (dir / "bad").string());
+    EXPECT_NE(r.code, 0) << bad;
+    EXPECT_NE(r.out.find("--memory"), std::string::npos) << bad << ": " << r.out;
+  }
+  // 1 MB: the MUMPS factors go out of core; the printed results are the same.
+  const auto in_core = tether("run " + deck + " --solver mumps -o " + (dir / "in").string());
+  const auto on_disk = tether("run " + deck + " --solver mumps --memory 1 -o " + (dir / "disk").string());
+  ASSERT_EQ(in_core.code, 0) << in_core.out;
+  ASSERT_EQ(on_disk.code, 0) << on_disk.out;
+  const auto read = [](const fs::path& p) {
+    std::ifstream f(p);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(read(dir / "in" / "plate.dat"), read(dir / "disk" / "plate.dat"));
+  // The run says so, though there is no contact (no condensed solver to report it).
+  EXPECT_NE(read(dir / "disk" / "plate.msg").find("factorization(s) were kept on disk"), std::string::npos)
+      << read(dir / "disk" / "plate.msg");
+  EXPECT_EQ(read(dir / "in" / "plate.msg").find("on disk"), std::string::npos);
+}
+
+TEST(Cli, MemoryBudgetRefusesAnUnusableTemporaryDirectoryByName) {
+  const fs::path dir = scratch("memory_tmpdir");
+  write(dir / "plate.inp", kGoodDeck);
+  write(dir / "a_file", "not a directory\n");
+  const std::string deck = (dir / "plate.inp").string();
+  const std::string missing = (dir / "missing").string(), file = (dir / "a_file").string();
+  const std::string too_long = (dir / std::string(130, 'd') / std::string(130, 'd')).string();
+  fs::create_directories(too_long);
+  for (const auto& [tmpdir, why] : {std::pair{missing, "does not exist"}, std::pair{file, "not a directory"},
+                                    std::pair{too_long, "longer than MUMPS accepts"}}) {
+    const auto r = tether("run " + deck + " --solver mumps --memory 1 -o " + (dir / "out").string(),
+                          "TMPDIR=" + tmpdir);
+    EXPECT_EQ(r.code, 2) << r.out;  // not completed; neither a crash (3) nor a silent in-core run (0)
+    EXPECT_NE(r.out.find("'" + tmpdir + "' ($TMPDIR)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(why), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("set TMPDIR"), std::string::npos) << r.out;
+  }
+  // Without a budget nothing goes to disk and the directory does not matter;
+  // nor with a solver that never writes its factors out (UMFPACK, CHOLMOD).
+  const auto r = tether("run " + deck + " --solver mumps -o " + (dir / "out").string(), "TMPDIR=" + missing);
+  EXPECT_EQ(r.code, 0) << r.out;
+  for (const char* in_core_only : {"umfpack", "cholmod"}) {
+    const auto q = tether("run " + deck + " --solver " + in_core_only + " --memory 1 -o " + (dir / "out").string(),
+                          "TMPDIR=" + missing);
+    EXPECT_EQ(q.code, 0) << in_core_only << ": " << q.out;
+  }
+  // Auto may use MUMPS, so it checks.
+  EXPECT_EQ(tether("run " + deck + " --memory 1 -o " + (dir / "out").string(), "TMPDIR=" + missing).code, 2);
+}
+
+// MUMPS (LDLT) and CHOLMOD read one triangle only: asked for on a step whose
+// tangent is unsymmetric (friction), the run is refused with the reason and
+// the way out, not factorized as if the matrix were symmetric.
+TEST(Cli, ASymmetricOnlySolverIsRefusedForAnUnsymmetricStep) {
+  const fs::path dir = scratch("unsymmetric_solver");
+  write(dir / "friction.inp", slurp(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/restart_friction.inp"));
+  for (const char* solver : {"mumps", "cholmod"}) {
+    const auto r = tether("run " + (dir / "friction.inp").string() + " --solver " + solver + " -o " +
+                          (dir / solver).string());
+    EXPECT_EQ(r.code, 2) << solver << ": " << r.out;  // the step cannot be solved as asked
+    EXPECT_NE(r.out.find(std::string("--solver ") + solver), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("factorizes symmetric matrices only"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("use --solver auto or umfpack"), std::string::npos) << r.out;
+  }
+  EXPECT_EQ(tether("run " + (dir / "friction.inp").string() + " --solver umfpack -q -o " + (dir / "lu").string()).code,
+            0);
+}
+
+// A restart never writes over the run it continues: `--restart JOB/JOB.rst`
+// without -o used to truncate JOB/JOB.dat and rewrite its .sta.
+
+TEST(Cli, NoReuseAssemblesAndFactorizesEveryIterationWithTheSameResults) {
+  // A linear elastic step in two increments: by default the tangent is held
+  // and its one factorization reused by the second increment; --no-reuse
+  // assembles and factorizes at every iteration. The results are the same
+  // byte for byte; the timing line of the .msg says which was done.
+  const fs::path dir = scratch("reuse");
+  write(dir / "plate.inp", kGoodDeck);
+  const std::string deck = (dir / "plate.inp").string();
+  const auto held = tether("run " + deck + " -o " + (dir / "held").string());
+  const auto fresh = tether("run " + deck + " --no-reuse -o " + (dir / "fresh").string());
+  ASSERT_EQ(held.code, 0) << held.out;
+  ASSERT_EQ(fresh.code, 0) << fresh.out;
+  const auto read = [](const fs::path& p) {
+    std::ifstream f(p);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(read(dir / "held" / "plate.dat"), read(dir / "fresh" / "plate.dat"));
+  const std::string held_log = read(dir / "held" / "plate.msg"), fresh_log = read(dir / "fresh" / "plate.msg");
+  EXPECT_NE(held_log.find("(1 factorizations, 1 reused)"), std::string::npos) << held_log;
+  EXPECT_NE(held_log.find("linear bulk's tangent held in"), std::string::npos) << held_log;
+  EXPECT_NE(fresh_log.find("(2 factorizations)"), std::string::npos) << fresh_log;
+  EXPECT_EQ(fresh_log.find("held"), std::string::npos) << fresh_log;
+}
+
+TEST(Cli, MortarCondensationEliminatesTheMultipliersWithTheSameIterations) {
+  // The Hertz example (5k dofs) with its pair made mortar: by default the
+  // solver condenses onto the contact equations (the .msg's timing line says
+  // "the rest of the contact equations only"); --mortar-condensation
+  // eliminates the mortar multipliers instead and factorizes the condensed
+  // matrix at every iteration, in the same number of Newton iterations.
+  const fs::path dir = scratch("mortar_condensation");
+  std::string deck = slurp(fs::path(TETHER_SOURCE_DIR) / "examples/hertz_mortar/hertz.inp");
+  const std::string from = "TYPE=NODE TO SURFACE";
+  ASSERT_NE(deck.find(from), std::string::npos);
+  deck.replace(deck.find(from), from.size(), "TYPE=SURFACE TO SURFACE");
+  write(dir / "hertz.inp", deck);
+  const std::string path = (dir / "hertz.inp").string();
+  const auto schur = tether("run " + path + " -q -o " + (dir / "schur").string());
+  const auto dual = tether("run " + path + " -q --mortar-condensation -o " + (dir / "dual").string());
+  ASSERT_EQ(schur.code, 0) << schur.out;
+  ASSERT_EQ(dual.code, 0) << dual.out;
+  const std::string schur_log = slurp(dir / "schur" / "hertz.msg"), dual_log = slurp(dir / "dual" / "hertz.msg");
+  EXPECT_NE(schur_log.find("the rest of the contact equations only"), std::string::npos) << schur_log;
+  EXPECT_EQ(dual_log.find("the rest of the contact equations only"), std::string::npos) << dual_log;
+  const auto iterations = [](const std::string& log) {  // Σ of "K iterations, converged" over the increments
+    int total = 0;
+    for (std::size_t at = log.find(" iterations, converged"); at != std::string::npos;
+         at = log.find(" iterations, converged", at + 1))
+      total += std::stoi(log.substr(log.rfind(' ', at - 1) + 1));
+    return total;
+  };
+  EXPECT_EQ(iterations(schur_log), 25) << schur_log;
+  EXPECT_EQ(iterations(dual_log), iterations(schur_log)) << dual_log;
+}
