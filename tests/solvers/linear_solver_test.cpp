@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 #include "tether/core/error.hpp"
 #include "tether/solvers/linear_solver.hpp"
 
@@ -16,6 +19,24 @@ SparseMatrix laplacian(int n, double anchor) {
   }
   t.emplace_back(0, 0, anchor - 1.0);  // anchor = 1 keeps it SPD; anchor = 0 makes it singular
   t.emplace_back(n - 1, n - 1, -1.0);
+  SparseMatrix a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  a.makeCompressed();
+  return a;
+}
+
+/// A free-free chain of n springs of stiffness between 0.1 and 10 (seeded):
+/// singular (a rigid translation), but its last pivot is round-off of either
+/// sign rather than an exact zero.
+SparseMatrix free_chain(int n, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> exponent(-1, 1);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i + 1 < n; ++i) {
+    const double k = std::pow(10.0, exponent(random));
+    t.emplace_back(i, i, k), t.emplace_back(i + 1, i + 1, k);
+    t.emplace_back(i, i + 1, -k), t.emplace_back(i + 1, i, -k);
+  }
   SparseMatrix a(n, n);
   a.setFromTriplets(t.begin(), t.end());
   a.makeCompressed();
@@ -56,6 +77,24 @@ TEST_P(EverySolver, ReportsSingularMatrixWithEquation) {
   } catch (const SolverError& e) {
     EXPECT_GE(e.equation(), 0) << e.what();
     EXPECT_LT(e.equation(), 50);
+  }
+}
+
+TEST_P(EverySolver, ReportsASingularMatrixWhosePivotIsRoundOff) {
+  // A model held nowhere: in floating point its zero pivot comes out as
+  // +-1e-16 of the stiffness, which a Cholesky factorization alone accepts
+  // when the sign is positive (CHOLMOD did, for the Python test's free bar).
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const SparseMatrix a = free_chain(40, seed);
+    auto solver = make_linear_solver(GetParam());
+    solver->analyze(a);
+    try {
+      solver->factorize(a, true);
+      ADD_FAILURE() << "singular chain (seed " << seed << ") accepted by " << solver->name();
+    } catch (const SolverError& e) {
+      EXPECT_GE(e.equation(), 0) << e.what();
+      EXPECT_LT(e.equation(), 40);
+    }
   }
 }
 
