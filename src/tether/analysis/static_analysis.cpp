@@ -85,9 +85,11 @@ class StepEndReport {
     s.contact_search += t.contact_search, s.assembly += t.assembly, s.analyse += t.analyse;
     s.factorize += t.factorize, s.solve += t.solve, s.factorizations += t.factorizations;
     s.reused_factorizations += t.reused_factorizations;
-    s.held_tangents += system_.assembler().linear_reuse().reused;
-    s.full_tangents += system_.assembler().linear_reuse().full;
-    s.residual_updates += system_.assembler().linear_reuse().residual_updates;
+    if (system_.has_assembler()) {
+      s.held_tangents += system_.assembler().linear_reuse().reused;
+      s.full_tangents += system_.assembler().linear_reuse().full;
+      s.residual_updates += system_.assembler().linear_reuse().residual_updates;
+    }
     s.output += t.output;
     const CondensedSolver* condensed = system_.condensed();
     const LinearSolver& solver = system_.solver();

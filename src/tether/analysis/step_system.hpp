@@ -90,9 +90,12 @@ class StepSystem {
   /// the time `t` of the step (step_time, period and total_time are used).
   void apply_loads(const IncrementTimes& t, Eigen::VectorXd& u, Eigen::VectorXd& forces);
 
-  [[nodiscard]] Assembler& assembler() { return *assembler_; }
-  [[nodiscard]] const Assembler& assembler() const { return *assembler_; }
-  [[nodiscard]] const EquationMap& equations() const { return assembler_->equations(); }
+  /// The assembler of an implicit (static or dynamic) step; an explicit step
+  /// has none (has_assembler() false; std::logic_error).
+  [[nodiscard]] Assembler& assembler();
+  [[nodiscard]] const Assembler& assembler() const;
+  [[nodiscard]] bool has_assembler() const { return assembler_ != nullptr; }
+  [[nodiscard]] const EquationMap& equations() const;
   [[nodiscard]] LinearSolver& solver() { return *solver_; }
   [[nodiscard]] const LinearSolver& solver() const { return *solver_; }
   /// The condensed solver when the system condenses onto the contact equations, else null.
@@ -134,6 +137,7 @@ class StepSystem {
   std::vector<Contribution*> contributions_;
   std::vector<const Contribution*> load_contributions_;
   std::unique_ptr<Assembler> assembler_;
+  std::unique_ptr<EquationMap> explicit_equations_;  ///< explicit steps' equations (no assembler_)
   std::unique_ptr<LinearSolver> solver_;
   const CondensedSolver* condensed_ = nullptr;
   int unused_nodes_ = 0;
