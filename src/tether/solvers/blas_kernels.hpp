@@ -37,7 +37,9 @@ namespace tether {
 /// the same arguments (execv of /proc/self/exe, Linux only). Returns only
 /// when nothing is to be done or the exec failed (the run then goes on with
 /// the kernels it has). Call it first in main(), before any output. A user's
-/// OPENBLAS_CORETYPE (Prescott included) is left alone.
+/// OPENBLAS_CORETYPE (Prescott included) is left alone; set it when running
+/// the program under a tool that does not follow exec (valgrind without
+/// --trace-children=yes), else the restarted run escapes the tool.
 void restart_with_better_blas_kernels(char** argv);
 
 }  // namespace tether
