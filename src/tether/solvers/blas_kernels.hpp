@@ -8,7 +8,7 @@
 /// Intel Xeon of family 6, model 207 (Emerald Rapids), which has AVX-512. Every
 /// dense kernel of the sparse and dense factorizations and of the triangular
 /// sweeps then runs at a fraction of the machine's speed: on the 230k-dof
-/// Hertz deck, 8.4 s of CPU with Prescott against 7.1 s with SkylakeX
+/// Hertz deck, 9.07 s of CPU with Prescott against 7.64 s with SkylakeX
 /// (docs/performance.md). OpenBLAS reads its choice from the environment
 /// variable OPENBLAS_CORETYPE only while it is loaded, i.e. before main(), so
 /// a program that wants other kernels must start again with it set
