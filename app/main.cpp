@@ -25,6 +25,7 @@
 #include "tether/io/deck_survey.hpp"
 #include "tether/output/restart_file.hpp"
 #include "tether/job/job.hpp"
+#include "tether/solvers/blas_kernels.hpp"
 
 namespace fs = std::filesystem;
 using namespace tether;
@@ -252,6 +253,7 @@ int run(const RunRequest& request) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  restart_with_better_blas_kernels(argv);  // OpenBLAS's generic kernels on a CPU it does not know: ask for others
   CLI::App app{"tether: nonlinear finite elements for 2D solids with constraints and contact"};
   app.set_version_flag("--version", std::string("tether ") + TETHER_VERSION);
   app.require_subcommand(1);

@@ -5,16 +5,18 @@
 # wall time, 1-minute load and Newton iterations, then the median and range
 # of the CPU time and RSS of each build. One thread (OMP_NUM_THREADS=1). Not
 # part of CTest/CI; run it by hand. The figures of docs/performance.md
-# ("The forward sweep skipped ...") were measured this way.
+# ("OpenBLAS kernels and the same output request ...", "The forward sweep
+# skipped ...") were measured this way.
 #
 # Usage: bench/hertz/alternate.sh DECK A_TETHER B_TETHER [REPEATS]   (REPEATS default 3)
 #   DECK: e.g. from /usr/bin/python3 tools/make_hertz_deck.py h230k.inp --dofs 230k --element CPE4 --increments 10
+#         (add --no-field-output for the deck measured against ccx: no .vtu, as ccx writes no field results)
 #   A_TETHER, B_TETHER: the two programs (e.g. a build of the commit before and build/bin/tether)
 # Environment: WORK=/tmp/hertz_alternate (run directories; the .vtu files are deleted after each run)
 set -euo pipefail
 
 if [[ $# -lt 3 ]]; then
-  sed -n '2,13p' "$0" >&2
+  sed -n '2,15p' "$0" >&2
   exit 2
 fi
 deck=$(realpath "$1")

@@ -1,4 +1,6 @@
 """Job(output_dir=...) writes what `tether run` writes; without it nothing is written."""
+import ctypes
+import ctypes.util
 import os
 import subprocess
 
@@ -8,6 +10,17 @@ import pytest
 import tether
 from conftest import bar_deck
 from tethertools import dat  # tools/ on PYTHONPATH
+
+
+def openblas_kernels():
+    """The OpenBLAS kernels this process runs ("Prescott", "SkylakeX", ...), or None."""
+    name = ctypes.util.find_library("openblas")
+    try:
+        corename = ctypes.CDLL(name or "libopenblas.so.0").openblas_get_corename
+    except (OSError, AttributeError):
+        return None
+    corename.restype = ctypes.c_char_p
+    return corename().decode()
 
 
 def test_nothing_written_without_output_dir(tmp_path, monkeypatch):
@@ -28,7 +41,13 @@ def test_output_dir_gets_the_files_of_tether_run(tmp_path):
     cli = os.environ.get("TETHER_CLI")
     if not cli:
         pytest.skip("TETHER_CLI not set")
-    subprocess.run([cli, "run", str(deck), "-o", str(tmp_path / "cli"), "-q"], check=True)
+    # The same BLAS kernels as this process: `tether run` otherwise replaces
+    # OpenBLAS's generic kernels by better ones (docs/theory/condensation.md),
+    # and other kernels change the last bits.
+    env = dict(os.environ)
+    if "OPENBLAS_CORETYPE" not in env and openblas_kernels():
+        env["OPENBLAS_CORETYPE"] = openblas_kernels()
+    subprocess.run([cli, "run", str(deck), "-o", str(tmp_path / "cli"), "-q"], check=True, env=env)
     names = sorted(p.name for p in (tmp_path / "py").iterdir())
     assert names == sorted(p.name for p in (tmp_path / "cli").iterdir())
     py_blocks = dat.parse((tmp_path / "py/bar.dat").read_text())

@@ -24,6 +24,9 @@ Model (units mm, N, MPa; plane strain, thickness 1):
     on the supports, *CONTACT PRINT CSTR and (elastic block) *EL PRINT S of the
     block elements under the master faces (ELSET PRESSEL), from which
     tools/hertz_summary.py can recover the pressure when no CSTR block is printed.
+    No field request (tether then writes ABAQUS's default, a .vtu per increment;
+    ccx a .frd with the mesh only); --no-field-output adds *NODE FILE,
+    FREQUENCY=0 so that neither writes field results (the speed benchmark).
 
 Mesh: gmsh 4.8 (the `gmsh` program; the Python module is not needed), all quads.
 Each body has a structured core of uniform squares of size h next to the contact
@@ -386,6 +389,11 @@ def write_deck(path, mesh, opts, exact):
             "*CONTACT PRINT", "CSTR"]
     if not opts.rigid_flat:
         out += ["*EL PRINT, ELSET=PRESSEL", "S"]
+    if opts.no_field_output:
+        # A field request that writes nothing: tether then writes no .vtu (no
+        # default output), ccx no results in its .frd (it writes none for
+        # this deck anyway): the same output request in both codes.
+        out += ["*NODE FILE, FREQUENCY=0", "U"]
     out.append("*END STEP")
     with open(path, "w") as f:
         f.write("\n".join(out) + "\n")
@@ -455,6 +463,8 @@ def main(argv=None):
     ap.add_argument("--core", type=float, default=3.0, help="half-size of the uniform core in units of a (default 3)")
     ap.add_argument("--block", type=float, default=20.0, help="block half-width and depth in units of R (default 20)")
     ap.add_argument("--gmsh", default="gmsh", help="gmsh program (default gmsh)")
+    ap.add_argument("--no-field-output", action="store_true",
+                    help="ask for no field output (*NODE FILE, FREQUENCY=0): no .vtu from tether, no results in ccx's .frd")
     ap.add_argument("--json", help="also write the mesh parameters to this JSON file")
     ap.add_argument("--plot", metavar="PNG", help="also draw the mesh (whole, cylinder, contact zone) into this PNG (matplotlib)")
     opts = ap.parse_args(argv)
