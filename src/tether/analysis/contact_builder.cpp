@@ -75,7 +75,8 @@ constexpr double kCalculixHalfSegment = std::numbers::pi / kCalculixAxisymmetric
 ///   corner nodes sit at r; r'_chord = (r_2 - r_1)/2); times 180 for tether's
 ///   full circle.
 /// Reference configuration; ccx evaluates it on the deformed master face
-/// each time it generates the contact element.
+/// each time it generates the contact element. 0 at the axis (r = 0) of an
+/// axisymmetric master: such a node carries no force, in ccx too.
 double calculix_face_area(const Model& model, const Element& e, std::span<const Eigen::Vector2d> x, double xi) {
   const int m = static_cast<int>(x.size());
   Eigen::Vector3d N, dN;
@@ -155,6 +156,9 @@ std::map<int, double> calculix_node_areas(const Model& model, const Surface& sla
                        "calculix dialect tether models only nodes of 2D elements, whose area is CalculiX's (from the "
                        "master face)" + where);
     const NearestFace near = nearest_face(faces, reference, reference[static_cast<std::size_t>(n)]);
+    if (!std::isfinite(near.distance))
+      throw ModelError("master surface " + master.name + " has only faces of zero length, so node " + node +
+                       " of node-based slave surface " + slave.name + " has no area in the calculix dialect" + where);
     const Element& e = model.elements[static_cast<std::size_t>(master.faces.at(near.face).element)];
     if (kind != (e.type.family == Family::Axisymmetric ? 1 : 0))
       throw ModelError("node " + node + " of node-based slave surface " + slave.name + " (" +
