@@ -191,10 +191,10 @@ TEST(DialectAgainstCcx, AxisymmetricReactionsAre180TimesCalculixsSegment) {
 
 // What the calculix dialect does not model is refused when the analysis is
 // built: CalculiX's LINEAR law on a mortar pair, an area on a node-based
-// slave's data line (CalculiX has no such field), a node-based slave of plane
-// elements against axisymmetric master faces (ccx's spring acts on one 2°
-// segment of the master and the whole thickness of the slave), a node-based
-// slave node in no element.
+// slave's data line (CalculiX has no such field), a slave (node-based or
+// element faces) of plane elements against axisymmetric master faces (ccx's
+// spring acts on one 2° segment of the master and the whole thickness of the
+// slave), a node-based slave node in no element.
 TEST(DialectAgainstCcx, UnmodelledCalculixCasesAreRefused) {
   std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/tests/verification/dialect/contact_node_slave_calculix.inp");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -223,6 +223,9 @@ TEST(DialectAgainstCcx, UnmodelledCalculixCasesAreRefused) {
   EXPECT_NE(outcome(mortar).find("not modelled for mortar pairs"), std::string::npos) << outcome(mortar);
   const std::string mixed = edit(text, "*ELEMENT, TYPE=CPE4, ELSET=BOTTOM", "*ELEMENT, TYPE=CAX4, ELSET=BOTTOM");
   EXPECT_NE(outcome(mixed).find("180-fold apart"), std::string::npos) << outcome(mixed);
+  const std::string mixed_faces = edit(edit(text, node_slave, face_slave), "*ELEMENT, TYPE=CPE4, ELSET=BOTTOM",
+                                     "*ELEMENT, TYPE=CAX4, ELSET=BOTTOM");
+  EXPECT_NE(outcome(mixed_faces).find("mix axisymmetric and plane"), std::string::npos) << outcome(mixed_faces);
   const std::string lone = edit(edit(text, "*NSET, NSET=SLAVEN\n1, 2, 3, 4", "*NSET, NSET=SLAVEN\n1, 2, 3, 4, 77"), "*NODE\n1001, 0, 0\n",
                                 "*NODE\n77, 0.5, 1.1\n*NODE\n1001, 0, 0\n");
   EXPECT_NE(outcome(lone).find("belongs to no element"), std::string::npos) << outcome(lone);

@@ -132,6 +132,25 @@ std::map<int, int> axisymmetric_nodes(const Model& model, const std::vector<int>
   return kind;
 }
 
+/// Throws ModelError when the element faces of `slave` and `master` mix
+/// axisymmetric and plane elements (dialect calculix): ccx's contact spring
+/// then acts on one 2° segment of the axisymmetric side and on the whole
+/// thickness of the plane one, forces 180-fold apart that no 2D model
+/// reproduces.
+void refuse_mixed_faces(const Model& model, const Surface& slave, const Surface& master, const std::string& where) {
+  const auto axisymmetric = [&](const ElementFace& f) {
+    return model.elements[static_cast<std::size_t>(f.element)].type.family == Family::Axisymmetric;
+  };
+  const bool slave_axi = std::any_of(slave.faces.begin(), slave.faces.end(), axisymmetric);
+  const bool slave_plane = !std::all_of(slave.faces.begin(), slave.faces.end(), axisymmetric);
+  const bool master_axi = std::any_of(master.faces.begin(), master.faces.end(), axisymmetric);
+  const bool master_plane = !std::all_of(master.faces.begin(), master.faces.end(), axisymmetric);
+  if ((slave_axi || master_axi) && (slave_plane || master_plane))
+    throw ModelError("contact surfaces " + slave.name + " and " + master.name + " mix axisymmetric and plane "
+                     "elements: CalculiX's contact spring acts on one 2-degree segment of the axisymmetric side and on "
+                     "the whole thickness of the plane one, forces 180-fold apart that no 2D model reproduces" + where);
+}
+
 /// The area CalculiX gives each node of the node-based slave surface `slave`
 /// against the master surface `master` (dialect calculix): the area of the
 /// master face the node projects onto, at that point (calculix_face_area),
@@ -220,6 +239,7 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
     }
     for (const Element& e : model.elements) stiffness = std::max(stiffness, modulus(model, e) * measure(model, e, {1, 0}));
   } else {
+    if (model.dialect == Dialect::Calculix) refuse_mixed_faces(model, slave, master, where);
     for (const ElementFace& f : slave.faces) {
       const Element& e = model.elements[static_cast<std::size_t>(f.element)];
       const std::vector<int> nodes = face_node_indices(model, f);
