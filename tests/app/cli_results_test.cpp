@@ -402,3 +402,49 @@ TEST(Cli, CaeDeckContactRowsCarryPartLabels) {
   EXPECT_EQ(state_rows, 6);  // three slave nodes at each of the two increments
   EXPECT_GE(stress_rows, 1);
 }
+
+// A node-based slave surface of CAX8 elements through `tether run --dialect
+// calculix`, read back from the .dat at t = 1: each slave node's u_y within
+// 2e-5 of ccx 2.20's on the same deck (measured 1.1e-5: ccx takes the master
+// face's area on the deformed mesh), the base's total force as ccx prints it
+// (its 2° segment: 10 pi (2² - 1) / 180 = 0.5235988) and the contact pressure
+// within 0.5 % of ccx's at every slave node. Before session 12 the deck was
+// refused (node-based slaves next to quadratic or axisymmetric elements).
+TEST(Cli, NodeBasedSlaveOfCax8MatchesCcxInTheCalculixDialect) {
+  const fs::path dir = scratch("node_slave_cax8");
+  const fs::path deck = fs::path(TETHER_SOURCE_DIR) / "tests/verification/dialect/contact_node_slave_cax8_calculix.inp";
+  const auto run = tether("run " + deck.string() + " --dialect calculix -q -o " + (dir / "out").string());
+  ASSERT_EQ(run.code, 0) << run.out;
+  const std::array<double, 7> ccx_uy = {-1.026738e-2, -1.213189e-2, -1.223135e-2, -1.251170e-2,
+                                        -1.178785e-2, -1.117065e-2, -8.739308e-3};
+  const std::array<double, 7> ccx_p = {2.561666, 3.265329, 2.893333, 3.100187, 2.838078, 3.156061, 2.345257};
+  std::istringstream dat(slurp(dir / "out" / "contact_node_slave_cax8_calculix.dat"));
+  std::string line, block;
+  int u_rows = 0, p_rows = 0, totals = 0;
+  while (std::getline(dat, line)) {
+    if (line.find_first_of("abcdefghijklmnopqrstuvwxyz") != std::string::npos) block = line;  // a block's title
+    if (block.find("time  0.1000000E+01") == std::string::npos && block.find("time 0.1000000E+01") == std::string::npos)
+      continue;
+    std::istringstream row(line);
+    std::vector<double> v;
+    for (double x; row >> x;) v.push_back(x);
+    if (v.empty()) continue;
+    if (block.find("displacements") != std::string::npos && v.size() == 4) {
+      const auto k = static_cast<std::size_t>(v[0]) - 1;
+      ASSERT_LT(k, ccx_uy.size()) << line;
+      EXPECT_NEAR(v[2], ccx_uy[k], 2e-5) << line;
+      ++u_rows;
+    } else if (block.find("total force") != std::string::npos && v.size() == 3) {
+      EXPECT_NEAR(v[1], 10 * std::acos(-1.0) * 3 / 180, 1e-6) << line;
+      ++totals;
+    } else if (block.find("contact stress") != std::string::npos && v.size() == 4) {
+      const auto k = static_cast<std::size_t>(v[0]) - 1;
+      ASSERT_LT(k, ccx_p.size()) << line;
+      EXPECT_NEAR(v[1], ccx_p[k], 5e-3 * ccx_p[k]) << line;
+      ++p_rows;
+    }
+  }
+  EXPECT_EQ(u_rows, 7);
+  EXPECT_EQ(p_rows, 7);
+  EXPECT_EQ(totals, 1);
+}

@@ -169,3 +169,17 @@ RF
   EXPECT_EQ(frequencies(read(carried, Dialect::Calculix).steps[2]), (std::vector<int>{2, 2, 1}));
   EXPECT_EQ(frequencies(read(carried, Dialect::Abaqus).steps[2]), (std::vector<int>{1, 2, 1}));
 }
+
+// *CONTACT PRINT, SET= (CalculiX's test deck thread.inp): ccx 2.20 warns
+// "parameter not recognized" and prints all slave nodes; the calculix dialect
+// does the same, the abaqus dialect refuses it at its line.
+TEST(Dialect, ContactPrintSetIsIgnoredWithAWarningInCalculixAndRefusedInAbaqus) {
+  const std::string deck = replaced(with_behavior("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n0.001, 100.\n"),
+                                    "*END STEP", "*CONTACT PRINT, SET=RIGHT\nCSTR\n*END STEP");
+  std::vector<DeckWarning> w;
+  const Model m = read(deck, Dialect::Calculix, &w);
+  EXPECT_TRUE(has_warning(w, "SET=RIGHT on *CONTACT PRINT is ignored, as ccx does"));
+  ASSERT_FALSE(m.steps.empty());
+  EXPECT_EQ(m.steps[0].outputs.back().kind, OutputRequest::Kind::ContactPrint);
+  expect_deck_error(deck, line_of(deck, "*CONTACT PRINT, SET=RIGHT"), {"no parameter SET", "calculix dialect"});
+}

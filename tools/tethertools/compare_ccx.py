@@ -346,8 +346,9 @@ def model_differences(info):
                    "stress only in the limit of a thin plate (stiffer at thickness ~ depth; ~1e-4 / 1e-2 difference "
                    "in u / root reactions at thickness = depth/100).")
     if "CAX" in fams:
-        out.append("CAX: ccx models a 2-degree wedge (cyclic MPCs): its reactions are per wedge and are multiplied "
-                   "by 180 here; its mid-side nodes come out ~1e-4 softer than the corners at the same radius.")
+        out.append("CAX: ccx models a 2-degree wedge (cyclic MPCs): its reactions are per wedge, and so are tether's "
+                   "in the calculix dialect (full circle / 180); its mid-side nodes come out ~1e-4 softer than the "
+                   "corners at the same radius.")
     out.append("RF: ccx prints the internal nodal force, tether internal force minus applied load: reactions are "
                "compared only at constrained components of nodes without *CLOAD or pressure load; set totals only "
                "for sets without loaded nodes; free components are not compared (ccx prints the internal force).")
@@ -473,7 +474,8 @@ def run(args, deck, tether_deck, job, work, ccx, tether):
 
     info = DeckInfo(deck)
     fams = info.family()
-    rf_scale = 180.0 if fams == {"CAX"} else 1.0
+    # tether runs in the calculix dialect, whose .dat gives CAX forces per 2-degree segment as ccx's does.
+    rf_scale = 1.0
     ccx_blocks = tethertools.dat.read(os.path.join(ccx_dir, job + ".dat"))
     tet_blocks = tethertools.dat.read(os.path.join(tet_dir, job + ".dat"))
     stats, unmatched = compare(ccx_blocks, tet_blocks, info, rf_scale)

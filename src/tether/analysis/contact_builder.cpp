@@ -1,10 +1,14 @@
 #include "tether/analysis/contact_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
+#include <span>
 
+#include "tether/contact/segment_geometry.hpp"
 #include "tether/core/error.hpp"
 #include "tether/fem/quadrature.hpp"
 #include "tether/fem/shape_functions.hpp"
@@ -47,51 +51,144 @@ void resolve_calculix_linear(const Model& model, const SurfaceInteraction& inter
   if (!(law.sigma_inf > 0)) law.sigma_inf = young / 70000;
 }
 
-/// The area CalculiX gives each node of a node-based slave surface (dialect
-/// calculix): CalculiX expands the 2D mesh to one layer of 3D elements and
-/// shares every free face of that layer among its nodes (1/4 per node of a
-/// 4-node face, 1/3 of a 3-node one). A 2D node stands for its two 3D nodes,
-/// so its area is L t / 2 for each free edge of length L (t: thickness)
-/// through it plus, from the front and back faces, A_e / 2 (quadrilateral) or
-/// 2 A_e / 3 (triangle) for each element of area A_e it belongs to. Linear
-/// plane elements only (ModelError otherwise: CalculiX's shares on quadratic
-/// and axisymmetric faces are not modelled). Measured against ccx 2.20 on two
-/// CPE4 blocks: the same displacements as with these areas given by hand.
-std::map<int, double> calculix_node_areas(const Model& model, const Surface& slave, const std::string& where) {
-  std::map<std::pair<int, int>, std::pair<int, double>> edges;  // corner pair -> (count, L t / 2)
-  std::map<int, double> area;
-  for (int n : slave.nodes) area[n] = 0;
-  for (const Element& e : model.elements) {
-    const int corners = n_corners(e.type.shape);
-    const bool uses_slave = std::any_of(e.nodes.begin(), e.nodes.end(), [&](int n) { return area.count(n) > 0; });
-    if (uses_slave && (e.type.family == Family::Axisymmetric || e.type.shape == Shape::Tri6 || e.type.shape == Shape::Quad8))
-      throw ModelError("node-based slave surface " + slave.name + " touches element " + label_text(model.instances, e.id) + " (" +
-                       std::string(e.type.name) + "): in the calculix dialect its nodes take CalculiX's areas, which "
-                       "tether models for linear plane elements only (CPE3/CPE4/CPS3/CPS4); use an element-face "
-                       "surface, or --dialect abaqus (area 1 or as given)" + where);
-    double twice_area = 0;  // shoelace over the corners
-    for (int a = 0; a < corners; ++a) {
-      const Eigen::Vector2d& p = model.coords[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>(a)])];
-      const Eigen::Vector2d& q = model.coords[static_cast<std::size_t>(e.nodes[static_cast<std::size_t>((a + 1) % corners)])];
-      twice_area += p.x() * q.y() - q.x() * p.y();
-      const int i = e.nodes[static_cast<std::size_t>(a)], j = e.nodes[static_cast<std::size_t>((a + 1) % corners)];
-      auto& edge = edges[{std::min(i, j), std::max(i, j)}];
-      edge.first += 1;
-      edge.second = (q - p).norm() * measure(model, e, p) / 2;
-    }
-    for (int a = 0; a < corners; ++a)
-      if (auto it = area.find(e.nodes[static_cast<std::size_t>(a)]); it != area.end())
-        it->second += std::abs(twice_area) / corners;  // 2 faces x A_e / corners
+/// Half the angle of CalculiX's axisymmetric segment [rad]: ccx expands a
+/// CAX element into a wedge of 2π / 180 = 2° about the y axis (gen3dfrom2d.f:
+/// a node at radius r becomes r cos φ, y, ∓r sin φ on the side faces and, for
+/// quadratic elements, r, y, 0 in the mid-layer), so its forces are 1/180 of
+/// the full circle's (kCalculixAxisymmetricSegments).
+constexpr double kCalculixHalfSegment = std::numbers::pi / kCalculixAxisymmetricSegments;
+
+/// The area [length²] CalculiX gives a node-based slave node of a 2D model
+/// that projects at ξ onto the master face with reference nodes `x` (2 or 3,
+/// face_nodes() order) of element `e`. ccx keeps such a node as the 2D node
+/// itself (tied to its expanded mid-layer node, gen3dsurf.f), which lies on no
+/// face of the expanded mesh, so tiefaccont.f finds no face for it and
+/// gencontelem_n2f.f gives it the area 0; springforc_n2f.f then takes the
+/// master face's "representative area" 4 |x_ξ × x_η| (its Jacobian at the
+/// projection, η = 0 on the mid-plane, times 4). On the one-layer faces of
+/// the expansion that is:
+/// - plane (CPE, CPS, thickness t of the master's section): 2 t |y'(ξ)|, the
+///   face length times t on a straight face;
+/// - axisymmetric, per 2° segment: 4 sin φ r(ξ) |(r̃'(ξ), y'(ξ))|, where the
+///   radial slope r̃' = cos φ r' on linear faces (corners at r cos φ) and
+///   r̃' = r'_chord + cos φ (r' - r'_chord) on quadratic ones (their mid-layer
+///   corner nodes sit at r; r'_chord = (r_2 - r_1)/2); times 180 for tether's
+///   full circle.
+/// Reference configuration; ccx evaluates it on the deformed master face
+/// each time it generates the contact element. 0 at the axis (r = 0) of an
+/// axisymmetric master: such a node carries no force, in ccx too.
+double calculix_face_area(const Model& model, const Element& e, std::span<const Eigen::Vector2d> x, double xi) {
+  const int m = static_cast<int>(x.size());
+  Eigen::Vector3d N, dN;
+  face_shape_functions(m, xi, N, dN);
+  Eigen::Vector2d p(0, 0), dp(0, 0);
+  for (int a = 0; a < m; ++a) p += N[a] * x[static_cast<std::size_t>(a)], dp += dN[a] * x[static_cast<std::size_t>(a)];
+  if (e.type.family != Family::Axisymmetric) return 2 * measure(model, e, p) * dp.norm();
+  const double c = std::cos(kCalculixHalfSegment), s = std::sin(kCalculixHalfSegment);
+  const double chord = (x[1].x() - x[0].x()) / 2;
+  const double radial = (m == 2 ? c : 1.0) * chord + c * (dp.x() - chord);
+  return kCalculixAxisymmetricSegments * 4 * s * p.x() * std::hypot(radial, dp.y());
+}
+
+/// The master face nearest to a point and where on it.
+struct NearestFace {
+  std::size_t face = 0;  ///< index into the master surface's faces
+  double xi = 0;         ///< closest point on the face, clamped to [-1, 1]
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+/// The face of `faces` (node indices) closest to x in the reference
+/// configuration `reference`; the first of equally near ones (a point above
+/// the node two faces share).
+NearestFace nearest_face(const std::vector<std::vector<int>>& faces, const std::vector<Eigen::Vector2d>& reference,
+                         const Eigen::Vector2d& x) {
+  NearestFace best;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    std::vector<Eigen::Vector2d> y;
+    for (int n : faces[f]) y.push_back(reference[static_cast<std::size_t>(n)]);
+    const SegmentProjection pr = project(x, y);
+    if (pr.status == ProjectionStatus::degenerate || !(pr.clamped_distance < best.distance)) continue;
+    best = {f, pr.clamped_xi, pr.clamped_distance};
   }
-  for (const auto& [key, edge] : edges)
-    if (edge.first == 1)
-      for (int n : {key.first, key.second})
-        if (auto it = area.find(n); it != area.end()) it->second += edge.second;
-  for (const auto& [n, a] : area)
-    if (!(a > 0))
-      throw ModelError("node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(n)]) + " of node-based slave "
-                       "surface " + slave.name + " belongs to no element, so it has no area in the calculix dialect" +
-                       where);
+  return best;
+}
+
+/// For each node of `nodes`: 1 when the elements through it are
+/// axisymmetric, 0 when they are plane, -1 when it belongs to no element.
+/// Throws ModelError for a node that joins both kinds.
+std::map<int, int> axisymmetric_nodes(const Model& model, const std::vector<int>& nodes, const std::string& where) {
+  std::map<int, int> kind;
+  for (int n : nodes) kind[n] = -1;
+  for (const Element& e : model.elements)
+    for (int n : e.nodes) {
+      const auto it = kind.find(n);
+      if (it == kind.end()) continue;
+      const int k = e.type.family == Family::Axisymmetric ? 1 : 0;
+      if (it->second >= 0 && it->second != k)
+        throw ModelError("node " + label_text(model.instances, model.node_ids[static_cast<std::size_t>(n)]) +
+                         " of a node-based slave surface joins axisymmetric and plane elements" + where);
+      it->second = k;
+    }
+  return kind;
+}
+
+/// Throws ModelError when the element faces of `slave` and `master` mix
+/// axisymmetric and plane elements (dialect calculix): ccx's contact spring
+/// then acts on one 2° segment of the axisymmetric side and on the whole
+/// thickness of the plane one, forces 180-fold apart that no 2D model
+/// reproduces.
+void refuse_mixed_faces(const Model& model, const Surface& slave, const Surface& master, const std::string& where) {
+  const auto axisymmetric = [&](const ElementFace& f) {
+    return model.elements[static_cast<std::size_t>(f.element)].type.family == Family::Axisymmetric;
+  };
+  const bool slave_axi = std::any_of(slave.faces.begin(), slave.faces.end(), axisymmetric);
+  const bool slave_plane = !std::all_of(slave.faces.begin(), slave.faces.end(), axisymmetric);
+  const bool master_axi = std::any_of(master.faces.begin(), master.faces.end(), axisymmetric);
+  const bool master_plane = !std::all_of(master.faces.begin(), master.faces.end(), axisymmetric);
+  if ((slave_axi || master_axi) && (slave_plane || master_plane))
+    throw ModelError("contact surfaces " + slave.name + " and " + master.name + " mix axisymmetric and plane "
+                     "elements: CalculiX's contact spring acts on one 2-degree segment of the axisymmetric side and on "
+                     "the whole thickness of the plane one, forces 180-fold apart that no 2D model reproduces" + where);
+}
+
+/// The area CalculiX gives each node of the node-based slave surface `slave`
+/// against the master surface `master` (dialect calculix): the area of the
+/// master face the node projects onto, at that point (calculix_face_area),
+/// found in the reference configuration. Measured against ccx 2.20 on two
+/// blocks under CalculiX's LINEAR law (tests/verification/dialect_ccx_test.cpp):
+/// CPE4, CPE8, CAX4, CAX8. ModelError for a slave node in no element (ccx
+/// would keep it a free 3D node) and for a pair that joins plane slave nodes
+/// to axisymmetric master faces or the reverse: ccx's contact spring then acts
+/// on the full thickness on one side and on one 2° segment on the other,
+/// forces that differ 180-fold and no 2D model reproduces.
+std::map<int, double> calculix_node_areas(const Model& model, const Surface& slave, const Surface& master,
+                                          const std::vector<Eigen::Vector2d>& reference, const std::string& where) {
+  std::vector<std::vector<int>> faces;
+  for (const ElementFace& f : master.faces) faces.push_back(face_node_indices(model, f));
+  const std::map<int, int> kinds = axisymmetric_nodes(model, slave.nodes, where);
+  std::map<int, double> area;
+  for (int n : slave.nodes) {
+    const std::string node = label_text(model.instances, model.node_ids[static_cast<std::size_t>(n)]);
+    const int kind = kinds.at(n);
+    if (kind < 0)
+      throw ModelError("node " + node + " of node-based slave surface " + slave.name + " belongs to no element: in the "
+                       "calculix dialect tether models only nodes of 2D elements, whose area is CalculiX's (from the "
+                       "master face)" + where);
+    const NearestFace near = nearest_face(faces, reference, reference[static_cast<std::size_t>(n)]);
+    if (!std::isfinite(near.distance))
+      throw ModelError("master surface " + master.name + " has only faces of zero length, so node " + node +
+                       " of node-based slave surface " + slave.name + " has no area in the calculix dialect" + where);
+    const Element& e = model.elements[static_cast<std::size_t>(master.faces.at(near.face).element)];
+    if (kind != (e.type.family == Family::Axisymmetric ? 1 : 0))
+      throw ModelError("node " + node + " of node-based slave surface " + slave.name + " (" +
+                       (kind ? "axisymmetric" : "plane") + " elements) faces master element " +
+                       label_text(model.instances, e.id) + " (" + std::string(e.type.name) + "): CalculiX's contact "
+                       "spring acts on one 2-degree segment of its axisymmetric side and on the whole thickness of the "
+                       "plane one, forces 180-fold apart that no 2D model reproduces" + where);
+    std::vector<Eigen::Vector2d> y;
+    for (int m : faces[near.face]) y.push_back(reference[static_cast<std::size_t>(m)]);
+    area[n] = calculix_face_area(model, e, y, near.xi);
+  }
   return area;
 }
 
@@ -136,12 +233,13 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
         throw ModelError("node-based slave surface " + slave.name + " gives node areas (" + slave.where.str() +
                          "): CalculiX's *SURFACE, TYPE=NODE has no area field, and in the calculix dialect each "
                          "node's area is CalculiX's (from the free faces at the node)" + where);
-      area = calculix_node_areas(model, slave, where);
+      area = calculix_node_areas(model, slave, master, reference, where);
     } else {
       for (std::size_t i = 0; i < slave.nodes.size(); ++i) area[slave.nodes[i]] = slave.node_areas.at(i);
     }
     for (const Element& e : model.elements) stiffness = std::max(stiffness, modulus(model, e) * measure(model, e, {1, 0}));
   } else {
+    if (model.dialect == Dialect::Calculix) refuse_mixed_faces(model, slave, master, where);
     for (const ElementFace& f : slave.faces) {
       const Element& e = model.elements[static_cast<std::size_t>(f.element)];
       const std::vector<int> nodes = face_node_indices(model, f);

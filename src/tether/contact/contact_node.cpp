@@ -249,7 +249,8 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     // A force law without multiplier: soft pressure-overclosure, or HARD by
     // penalty N = ρ<-g> / augmented Lagrangian N = <λ̄ - ρ g>.
     if (!hard) {
-      const ContactPressure p = contact_pressure(setup.law, -gap.g, calculix_linear_reach(setup.law, s.area));
+      const double reach = setup.node_based_slave ? kCalculixNodeSlaveReach : calculix_linear_reach(setup.law, s.area);
+      const ContactPressure p = contact_pressure(setup.law, -gap.g, reach);
       N = s.area * p.p;
       dN.head(nu) = -s.area * p.dp_dh * gap.gradient;
     } else {

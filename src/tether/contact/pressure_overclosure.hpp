@@ -52,4 +52,11 @@ ContactPressure calculix_linear_pressure(double stiffness, double sigma_inf, dou
 /// nodes that share its area: A = tether's node area / 2.
 double calculix_linear_reach(const PressureOverclosure& law, double tether_node_area);
 
+/// The reach of CalculiX's LINEAR law at a node of a node-based slave surface
+/// of a 2D model [length]: ccx finds no face of its expanded mesh through such
+/// a node, so it gives it the area 0 when it generates contact elements and
+/// then the clearance limit 1e-10 instead of c0 sqrt(area) (gencontelem_n2f.f);
+/// the force uses the master face's area (contact_builder.cpp).
+inline constexpr double kCalculixNodeSlaveReach = 1e-10;
+
 }  // namespace tether

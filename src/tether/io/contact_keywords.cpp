@@ -229,6 +229,13 @@ void handle_contact_output(DeckState& state, const KeywordBlock& block, const Pa
   OutputRequest r = in_block ? state.output_schedule : OutputRequest{};
   r.kind = block.keyword == "CONTACT PRINT" ? OutputRequest::Kind::ContactPrint : OutputRequest::Kind::ContactFile;
   r.where = block.where;
+  if (params.given("SET")) {  // *CONTACT PRINT only: CalculiX's test deck thread.inp writes it
+    if (state.model.dialect != Dialect::Calculix)
+      throw InputError(block.where, "*CONTACT PRINT has no parameter SET (its rows are all slave nodes of all "
+                                    "pairs); ccx warns and ignores it: so does the calculix dialect");
+    state.warn(block.where, "SET=" + params.text("SET") + " on *CONTACT PRINT is ignored, as ccx does: the rows "
+                            "are all slave nodes of all contact pairs");
+  }
   if (!in_block) r.frequency = params.integer("FREQUENCY"), r.schedule_given = params.given("FREQUENCY");
   if (r.frequency < 0) throw InputError(block.where, "FREQUENCY must be >= 0");
   if (r.kind == OutputRequest::Kind::ContactPrint && params.given("FREQUENCY")) note_print_frequency(state, r.frequency);

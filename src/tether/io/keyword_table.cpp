@@ -502,7 +502,10 @@ std::vector<KeywordSpec> build_table() {
         name("FILE", "ABAQUS: temperatures from a results file (refused).")},
        handle_temperature, ""},
       {"CONTACT PRINT", kAnyStep, "Contact output in the .dat report.", "variables: CSTR, CDIS (CalculiX), CSTRESS, CDISP, CFN, CFS (ABAQUS)",
-       {frequency_param()}, handle_contact_output, ""},
+       {frequency_param(),
+        name("SET", "Not a parameter of either program: ccx 2.20 warns and ignores it, so does the calculix dialect; "
+                    "refused in the abaqus dialect.")},
+       handle_contact_output, ""},
       {"CONTACT FILE", kAnyStep, "Contact output in the result files.", "variables: CSTR, CDIS",
        {frequency_param()}, handle_contact_output, ""},
       {"CONTACT OUTPUT", kAnyStep, "Contact output request (ABAQUS).", "variables: CSTRESS, CDISP, CFN, CFS",

@@ -24,4 +24,10 @@ constexpr std::optional<Dialect> parse_dialect(std::string_view name) {
   return std::nullopt;
 }
 
+/// CalculiX expands an axisymmetric model to a 2° segment (a wedge of 2π/180
+/// about the y axis) and prints its forces for that segment: full-circle
+/// totals / 180 (dialect calculix: DatWriter, and the areas of node-based
+/// slave nodes in contact_builder.cpp).
+inline constexpr double kCalculixAxisymmetricSegments = 180;
+
 }  // namespace tether

@@ -16,10 +16,6 @@
 
 namespace tether {
 
-/// CalculiX expands an axisymmetric model to a 2° segment and prints its
-/// forces for that segment: full-circle totals / 180 (dialect calculix).
-inline constexpr double kCalculixAxisymmetricSegments = 180;
-
 /// Writes print requests the way ccx 2.20 does, so one parser reads both
 /// programs' files. Each block is a blank line, a header, a blank line and
 /// rows, e.g.
