@@ -1,7 +1,8 @@
 // libFuzzer target: the deck reader and model builder, i.e. what `tether check`
 // does before any solve (app/main.cpp, check()):
 //
-//   read_deck(path, &warnings)   lexing, *INCLUDE, keyword table, handlers, model checks
+//   read_deck(path, &warnings, dialect)   lexing, *INCLUDE, keyword table, handlers, model
+//                                         checks; once in each dialect (abaqus, calculix)
 //   Discretization(model)        materials, elements, constraint functions and elements
 //
 // A deck that is rejected with InputError (file:line message) or ModelError is
@@ -112,20 +113,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::abort();
   }
 
-  try {
-    std::vector<tether::DeckWarning> warnings;
-    const tether::Model model = tether::read_deck(g_deck_path, &warnings);
-    const tether::Discretization discretization(model);
-    // Touch the results as `tether check` prints them.
-    if (discretization.dofs().n_dofs() < 0) std::abort();
-  } catch (const tether::InputError&) {
-    // a bad deck, reported with file:line: the expected outcome
-  } catch (const tether::ModelError&) {
-    // a deck that reads but cannot be discretized (e.g. *CONTACT PAIR, a missing library)
-  } catch (const std::exception& e) {
-    fail("exception", e.what());
-  } catch (...) {
-    fail("non-standard exception", "(no message)");
+  // Both dialects: where ABAQUS and CalculiX read the same data differently
+  // (`tether run --dialect`), each reading has its own code.
+  for (const tether::Dialect dialect : {tether::Dialect::Abaqus, tether::Dialect::Calculix}) {
+    try {
+      std::vector<tether::DeckWarning> warnings;
+      const tether::Model model = tether::read_deck(g_deck_path, &warnings, dialect);
+      const tether::Discretization discretization(model);
+      // Touch the results as `tether check` prints them.
+      if (discretization.dofs().n_dofs() < 0) std::abort();
+    } catch (const tether::InputError&) {
+      // a bad deck, reported with file:line: the expected outcome
+    } catch (const tether::ModelError&) {
+      // a deck that reads but cannot be discretized (e.g. *CONTACT PAIR, a missing library)
+    } catch (const std::exception& e) {
+      fail("exception", e.what());
+    } catch (...) {
+      fail("non-standard exception", "(no message)");
+    }
   }
   return 0;
 }
