@@ -30,7 +30,8 @@ bool ConvergenceCriteria::converged(const IterationNorms& n, int iteration, doub
   // A residual at round-off level: the increment is linear, accept it. Not
   // at the predictor (iteration 0) unless it also meets the tolerance: an
   // extrapolated state may be that close without being round-off, and a
-  // tolerance below 1e-8 asks for more.
+  // tolerance below 1e-8 asks for more. (After a solve the rule stays as it
+  // was: a tolerance below round-off would otherwise never be met.)
   if (n.force_residual <= 1e-8 * force_scale &&
       (iteration > 0 || n.force_residual <= controls_.residual_tolerance * force_scale))
     return true;
