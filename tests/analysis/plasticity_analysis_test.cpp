@@ -322,13 +322,20 @@ TEST(FiniteStrainPlasticity, NewtonConvergesQuadraticallyOnCooksMembrane) {
               "increments, %d iterations\n", orders.size(), median, orders.front(), run.summary.increments,
               run.summary.iterations);
   // Three residuals give the order only where the contraction constant C of
-  // r_k+1 = C r_k^2 holds still; near the limit load the tangent is nearly
-  // singular (corrections of 1 for residuals of 4) and C still moves at r_k
-  // ~ 1e-5, so single estimates scatter (1.32 to 2.1 here; estimates from the
-  // corrections scattered from 1.0 to 2.6 before the loading tangent too).
-  // A tangent that is not consistent gives about 1 throughout.
+  // r_k+1 = C r_k^2 holds still. Measured with the predictor (16 increments,
+  // 78 iterations): 10 estimates, sorted 1.13, 1.42, 1.86, 1.97, 2.01, 2.11,
+  // 2.12, 2.52, 2.53, 3.44 (median 2.11). The two low ones are transients of
+  // C, not a lost order: in the pass giving 1.13 the residuals run
+  // 5.8e-2, 1.7e-3, 2.9e-5, 2.1e-10 (C = 0.49, 10.6, 0.24; the last triple,
+  // left out as below 1e-9 r_0, gives 2.94), and in the one giving 1.42
+  // 1.2e-2, 1.1e-4, 1.4e-7, 3.1e-12; the number of points on the plastic
+  // branch stays the same through those iterations (counted by an
+  // instrumented build: 50 and 56), so no point switches between the
+  // elastic and the plastic branch there. Near the limit load the tangent
+  // is nearly singular (corrections of 1 for residuals of 4), which is where
+  // C moves. A tangent that is not consistent gives about 1 throughout.
   EXPECT_GE(median, 1.8);
-  EXPECT_GE(orders.front(), 1.25);
+  EXPECT_GE(orders.front(), 1.1);
 }
 
 namespace {
@@ -430,13 +437,17 @@ TEST(FiniteStrainPlasticity, PlaneStressKinematicBarFollowsTheLogarithmicClosedF
 TEST(FiniteStrainPlasticity, NeckingBarFollowsCalculix) {
   // Simo's necking bar (examples/necking_bar/make_deck.py 5 15: half model,
   // CAX8R, 1.8 % imperfection, saturation hardening), pulled 7 mm: the radius
-  // at the neck against its initial value. CalculiX 2.20 on the same deck:
-  // 0.9885 at 0.525 mm, 0.9392 at 2.485 mm, 0.6714 at 5.005 mm, 0.3230 at 7 mm.
-  // Tolerances: 0.5 % before the neck forms, 2 % at 5 mm and 5 % at 7 mm, where
-  // the neck localizes and the two finite-strain formulations (Hencky and
-  // Kirchhoff yield here, neo-Hookean and Cauchy yield there) part by a lag of
-  // about 0.15 mm of pull; CalculiX's own answer moves by 7 % from this mesh
-  // to 10 x 30 (0.2999).
+  // at the neck against its initial value. CalculiX 2.20 on the same deck
+  // (53 increments): 0.9885 at 0.525 mm, 0.9392 at 2.485 mm, 0.6714 at
+  // 5.005 mm, 0.3230 at 7 mm; tether (57 increments) 0.9885, 0.9390, 0.6706,
+  // 0.3215. Past the force peak (about 2.6 mm) the answer depends on the
+  // increment size more than on the two codes' finite-strain formulations
+  // (Hencky elasticity and yield on the Kirchhoff stress here, neo-Hookean
+  // and Cauchy yield there): with increments of at most 0.005 instead of 0.02
+  // CalculiX gives 0.6780 and 0.3339, tether 0.6776 and 0.3329. Tolerances:
+  // 0.1 % before the neck forms, 0.5 % at 5 mm, 1 % at 7 mm. No published
+  // table of this curve was found (docs/theory/plasticity.md lists the
+  // sources checked), so the reference is CalculiX.
   const tether::testing::Run run = run_deck_text(deck_file("necking_bar_5x15.inp"));
   ASSERT_TRUE(run.summary.completed) << run.summary.message;
   const int neck = run.model.node_sets.at("NECK").front();
@@ -451,18 +462,19 @@ TEST(FiniteStrainPlasticity, NeckingBarFollowsCalculix) {
     return prev_ratio;
   };
   const double at[] = {0.525, 2.485, 5.005, 7.0}, ccx[] = {0.9885, 0.9392, 0.6714, 0.3230};
-  const double tolerance[] = {0.005, 0.005, 0.02, 0.05};
+  const double tolerance[] = {0.001, 0.001, 0.005, 0.01};
   for (int k = 0; k < 4; ++k) {
     const double q = ratio_at(at[k]);
     std::printf("necking bar: pull %.3f mm, neck radius ratio %.4f (CalculiX %.4f, %+.2f %%)\n", at[k], q, ccx[k],
                 100 * (q / ccx[k] - 1));
     EXPECT_NEAR(q, ccx[k], tolerance[k] * ccx[k]) << at[k];
   }
-  // Newton's efficiency (a bound, not an exact count): 717 increments with 41
-  // cut-backs when the first iteration of an increment used the elastic
-  // tangent at points that go on yielding and a growth of the residual near
-  // convergence counted as divergence; 218 with 18 since. CalculiX: 53.
+  // Newton's efficiency (bounds, not exact counts): 57 increments, 158
+  // iterations, 1 cut-back with the linear-extrapolation predictor; 218, 1327
+  // and 18 without it (717, 4320 and 41 before the loading tangent and the
+  // settled-residual rule of docs/theory/newton.md). CalculiX: 53 increments.
   std::printf("necking bar: %d increments, %d iterations, %d cut-backs\n", run.summary.increments,
               run.summary.iterations, run.summary.cutbacks);
-  EXPECT_LT(run.summary.increments, 350);
+  EXPECT_LT(run.summary.increments, 70);
+  EXPECT_LT(run.summary.iterations, 250);
 }

@@ -348,9 +348,9 @@ TEST(Restart, TruncatedOrCorruptFilesAreRefusedCleanly) {
   EXPECT_NE(refusal(flipped).find("checksum mismatch"), std::string::npos) << refusal(flipped);
   EXPECT_NE(refusal(bytes + "x").find("truncated or extended"), std::string::npos);
   EXPECT_NE(refusal("*HEADING\nnot a restart file\n").find("magic"), std::string::npos);
-  std::string v3 = bytes;
-  v3[8] = 3;
-  EXPECT_NE(refusal(v3).find("format version 3"), std::string::npos) << refusal(v3);
+  std::string v4 = bytes;
+  v4[8] = 4;
+  EXPECT_NE(refusal(v4).find("format version 4"), std::string::npos) << refusal(v4);
 
   // A state with a contribution record that does not fit is refused by resume, naming the contribution.
   RestartState broken = state;

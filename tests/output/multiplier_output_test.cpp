@@ -140,7 +140,10 @@ TEST(MultiplierOutput, RigidLinkRunConstraintForceIsMinusTheReaction) {
     EXPECT_EQ(m.nodal_force[0].node, a);
     EXPECT_LT((m.nodal_force[0].force + r.reaction[a]).norm(), 1e-12);
     // At B the link force balances the load P = 3 and the horizontal reaction.
-    EXPECT_NEAR(m.nodal_force[1].force.y(), 3.0, 1e-8);  // Newton force tolerance 1e-10 q~
+    // Newton's tolerance is 1e-10 q~, but a residual below 1e-8 q~ after a
+    // solve is accepted as round-off (q~ is about 3 to 17 here): 1.8e-8 at
+    // one increment since the predictor.
+    EXPECT_NEAR(m.nodal_force[1].force.y(), 3.0, 1e-7);
     EXPECT_NEAR(m.nodal_force[1].force.x(), -r.reaction[b].x(), 1e-8);
   }
   if (!test::python_with_meshio_available()) GTEST_SKIP() << "/usr/bin/python3 with meshio is not installed";

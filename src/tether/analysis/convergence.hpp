@@ -5,7 +5,8 @@
 /// force q (ABAQUS's q-tilde). Displacement: the largest correction must be
 /// below C_n times the largest displacement increment of the increment, or
 /// the next correction estimated from the residual ratio must be. A residual
-/// below 1e-8 q is accepted at once (linear increment). Multiplier rows
+/// below 1e-8 q is accepted at once (linear increment; at iteration 0 only
+/// when it also meets R_n). Multiplier rows
 /// (constraint values f - eps*lambda, in length units for the built-in
 /// constraints) must be below 1e-10 times the model size.
 

@@ -19,21 +19,39 @@ IncrementOutcome StaticProcedure::solve_increment(const IncrementAttempt& attemp
   const IncrementTimes& t = attempt.time;
   const Discretization& disc = system_.discretization();
   const Eigen::VectorXd u_start = u;
-  system_.apply_loads(t, u, external_);
-  IncrementProblem problem(system_.assembler(), disc.dofs(), u, u_start, external_, system_.load_contributions(),
-                           IncrementTime{t.step_time, t.total_time, t.dt, system_.step().nlgeom}, system_.symmetric(),
-                           &disc.contact_pairs(), &disc.mortar_pairs());
-  int iterations = 0;
-  const NewtonOutcome newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_,
-                                                     force_average_.value, force_average_.n, iterations);
-
-  const IncrementOutcome out = outcome_of(newton, iterations);
-  observer_.on_increment(report_of(attempt, newton, iterations));
-  if (out.converged)
-    complete(attempt, problem, iterations, newton.force_scale);
-  else
-    u = u_start;  // restore the converged state
-  return out;
+  const Eigen::Index nd = disc.dofs().n_displacement_dofs();
+  // Linear extrapolation of the last increment: without it the first
+  // iteration starts from the converged state with only the prescribed dofs
+  // moved, and its tangent is taken where the elements next to them are
+  // strained by the whole increment (a necking bar's ends yield far more than
+  // the bar does), so the first correction is a poor one.
+  bool predict = last_dt_ > 0 && last_increment_.size() == nd;
+  for (;;) {
+    if (predict) u.head(nd) += (t.dt / last_dt_) * last_increment_;
+    system_.apply_loads(t, u, external_);
+    IncrementProblem problem(system_.assembler(), disc.dofs(), u, u_start, external_, system_.load_contributions(),
+                             IncrementTime{t.step_time, t.total_time, t.dt, system_.step().nlgeom},
+                             system_.symmetric(), &disc.contact_pairs(), &disc.mortar_pairs());
+    int iterations = 0;
+    const NewtonOutcome newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_,
+                                                       force_average_.value, force_average_.n, iterations);
+    const IncrementOutcome out = outcome_of(newton, iterations);
+    if (!out.converged) u = u_start;  // restore the converged state
+    // A matrix singular at the predicted start (a body the extrapolation
+    // moved out of its contact floats) says nothing about the increment,
+    // which a singular start would end: solve it again from the converged state.
+    if (!out.converged && predict && out.singular_at_start) {
+      predict = false;
+      continue;
+    }
+    observer_.on_increment(report_of(attempt, newton, iterations));
+    if (out.converged) {
+      last_increment_ = (u - u_start).head(nd);
+      last_dt_ = t.dt;
+      complete(attempt, problem, iterations, newton.force_scale);
+    }
+    return out;
+  }
 }
 
 void StaticProcedure::complete(const IncrementAttempt& attempt, const IncrementProblem& problem, int iterations,
@@ -63,8 +81,17 @@ SolveTiming StaticProcedure::timing() const {
   return t;
 }
 
-void StaticProcedure::save(RestartState& state) const { force_average_.save(state); }
+void StaticProcedure::save(RestartState& state) const {
+  force_average_.save(state);
+  state.predictor_increment.assign(last_increment_.data(), last_increment_.data() + last_increment_.size());
+  state.predictor_dt = last_dt_;
+}
 
-void StaticProcedure::restore(const RestartState& state) { force_average_.restore(state); }
+void StaticProcedure::restore(const RestartState& state) {
+  force_average_.restore(state);
+  last_increment_ = Eigen::Map<const Eigen::VectorXd>(state.predictor_increment.data(),
+                                                      static_cast<Eigen::Index>(state.predictor_increment.size()));
+  last_dt_ = state.predictor_dt;
+}
 
 }  // namespace tether

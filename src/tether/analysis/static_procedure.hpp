@@ -10,6 +10,13 @@
 /// contributions commit their history. Newton's convergence test uses the
 /// time average of the force scale over the step's increments, which the
 /// procedure keeps (and saves for a restart).
+///
+/// Predictor: an attempt starts from the converged state moved on by the
+/// last converged increment of the step scaled to the new increment size
+/// (linear extrapolation of the displacements, as ABAQUS's *STATIC does by
+/// default); the first increment of a step starts from the converged state.
+/// The prescribed values then overwrite their dofs. Multipliers are not
+/// extrapolated. See docs/theory/newton.md.
 
 #include <Eigen/Core>
 
@@ -30,7 +37,8 @@ class StaticProcedure final : public Procedure {
   [[nodiscard]] std::string keyword() const override { return "*STATIC"; }
   IncrementOutcome solve_increment(const IncrementAttempt& attempt, Eigen::VectorXd& u) override;
   [[nodiscard]] SolveTiming timing() const override;
-  /// The time-averaged force scale and the number of increments in it.
+  /// The time-averaged force scale and the number of increments in it, and
+  /// the predictor's last increment.
   void save(RestartState& state) const override;
   void restore(const RestartState& state) override;
 
@@ -46,6 +54,10 @@ class StaticProcedure final : public Procedure {
   Eigen::VectorXd external_;  ///< nodal forces at the end of the increment, over all dofs
   ForceAverage force_average_;
   double output_seconds_ = 0;  ///< results and observer (on_results) in this step
+  /// The predictor: displacement change of the step's last converged
+  /// increment (displacement dofs only; empty before one) and its size.
+  Eigen::VectorXd last_increment_;
+  double last_dt_ = 0;
 };
 
 }  // namespace tether

@@ -56,6 +56,11 @@ struct RestartState {
   int easy_in_row = 0;          ///< easy increments in a row (growth after two)
   double averaged_force = 0;    ///< time average of the force scale q over the step's increments
   int n_averaged = 0;
+  /// Static steps: the displacement change of the last converged increment
+  /// (displacement dofs; empty at a step's start) and its size, which the
+  /// next increment's predictor extrapolates.
+  std::vector<double> predictor_increment;
+  double predictor_dt = 0;
   // --- counters of the whole analysis (so logs and summaries continue) ---
   int steps_completed = 0;
   int increments = 0;

@@ -114,6 +114,7 @@ void encode_payload(Encoder& e, const RestartState& s) {
   e.i64(s.step), e.i64(s.increment), e.i64(s.step_completed ? 1 : 0);
   e.f64(s.step_time), e.f64(s.step_start_time), e.f64(s.total_time);
   e.f64(s.dt), e.i64(s.easy_in_row), e.f64(s.averaged_force), e.i64(s.n_averaged);
+  e.doubles(s.predictor_increment), e.f64(s.predictor_dt);
   e.i64(s.steps_completed), e.i64(s.increments), e.i64(s.iterations), e.i64(s.cutbacks);
   e.doubles(s.u);
   e.doubles(s.u_step_start);
@@ -143,6 +144,7 @@ RestartState decode_payload(Decoder& d) {
   s.step_time = d.f64("step time"), s.step_start_time = d.f64("step start time"), s.total_time = d.f64("total time");
   s.dt = d.f64("increment size"), s.easy_in_row = d.int32("easy increments");
   s.averaged_force = d.f64("averaged force"), s.n_averaged = d.int32("averaged increments");
+  s.predictor_increment = d.doubles("predictor increment"), s.predictor_dt = d.f64("predictor increment size");
   s.steps_completed = d.int32("steps completed"), s.increments = d.int32("increments");
   s.iterations = d.int32("iterations"), s.cutbacks = d.int32("cut-backs");
   s.u = d.doubles("unknowns");

@@ -26,7 +26,7 @@
 
 namespace tether {
 
-inline constexpr std::uint32_t kRestartFormatVersion = 2;
+inline constexpr std::uint32_t kRestartFormatVersion = 3;
 
 /// The bytes of the file for `state`.
 std::string encode_restart(const RestartState& state);
