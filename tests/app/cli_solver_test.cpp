@@ -156,3 +156,48 @@ TEST(Cli, MortarCondensationEliminatesTheMultipliersWithTheSameIterations) {
   EXPECT_EQ(iterations(schur_log), 20) << schur_log;  // 25 before the predictor
   EXPECT_EQ(iterations(dual_log), iterations(schur_log)) << dual_log;
 }
+
+/// The ITRS column of each increment's row in a .sta file.
+std::vector<int> sta_iterations(const std::string& sta) {
+  std::vector<int> iterations;
+  std::istringstream in(sta);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    int step = 0, increment = 0, attempt = 0, itrs = 0;
+    if (row >> step >> increment >> attempt >> itrs) iterations.push_back(itrs);
+  }
+  return iterations;
+}
+
+TEST(Cli, StepExtrapolationLinearPredictsALinearRampAndNoStartsFromTheConvergedState) {
+  // kGoodDeck: a linear plate under a ramped load in two increments. With
+  // EXTRAPOLATION=LINEAR (the default) the second increment starts from the
+  // first one doubled, which is its solution: no iteration. With NO it
+  // starts from the first increment's state and takes one.
+  const fs::path dir = scratch("extrapolation");
+  const std::string base = kGoodDeck;
+  std::vector<std::string> dats;
+  for (const auto& [parameter, second] : std::vector<std::pair<std::string, int>>{
+           {"", 0}, {", EXTRAPOLATION=LINEAR", 0}, {", EXTRAPOLATION=NO", 1}}) {
+    std::string text = base;
+    text.replace(text.find("*STEP\n"), 6, "*STEP" + parameter + "\n");
+    write(dir / "plate.inp", text);
+    const auto r = tether("run " + (dir / "plate.inp").string() + " -o " + (dir / "out").string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    const std::vector<int> iterations = sta_iterations(slurp(dir / "out" / "plate.sta"));
+    ASSERT_EQ(iterations.size(), 2u) << parameter;
+    EXPECT_EQ(iterations[0], 1) << parameter;
+    EXPECT_EQ(iterations[1], second) << parameter;
+    dats.push_back(slurp(dir / "out" / "plate.dat"));
+  }
+  // The same answer either way (a linear problem), to the .dat's digits.
+  EXPECT_EQ(dats[0], dats[2]);
+  std::string parabolic = base;
+  parabolic.replace(parabolic.find("*STEP\n"), 6, "*STEP, EXTRAPOLATION=PARABOLIC\n");
+  write(dir / "plate.inp", parabolic);
+  const auto r = tether("check " + (dir / "plate.inp").string());
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("plate.inp:19: error: EXTRAPOLATION=PARABOLIC"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("expected LINEAR (the default) or NO"), std::string::npos) << r.out;
+}

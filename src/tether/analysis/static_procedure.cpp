@@ -25,7 +25,7 @@ IncrementOutcome StaticProcedure::solve_increment(const IncrementAttempt& attemp
   // moved, and its tangent is taken where the elements next to them are
   // strained by the whole increment (a necking bar's ends yield far more than
   // the bar does), so the first correction is a poor one.
-  bool predict = last_dt_ > 0 && last_increment_.size() == nd;
+  bool predict = system_.step().extrapolate && last_dt_ > 0 && last_increment_.size() == nd;
   for (;;) {
     if (predict) u.head(nd) += (t.dt / last_dt_) * last_increment_;
     system_.apply_loads(t, u, external_);

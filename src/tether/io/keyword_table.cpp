@@ -246,6 +246,10 @@ std::vector<KeywordSpec> build_table() {
       {"STEP", kModelData | kBetweenSteps, "Starts a step; ends with *END STEP.", "",
        {choice("NLGEOM", "NO", {"YES", "NO"}, "Geometric nonlinearity (bare NLGEOM means YES). Omitted: as in the previous step (NO in the first); once on, it stays on in every later step, as in ABAQUS (NLGEOM=NO after it is ignored with a warning).", "YES"),
         integer("INC", "100", "Maximum number of increments."), name("NAME", "Name of the step."),
+        choice("EXTRAPOLATION", "LINEAR", {"LINEAR", "NO", "PARABOLIC"},
+               "Start of each static increment: LINEAR (default, as ABAQUS/Standard) extrapolates the step's last "
+               "converged increment to the new increment's size; NO starts from the converged state. PARABOLIC "
+               "(ABAQUS's quadratic extrapolation) is refused."),
         choice("AMPLITUDE", "RAMP", {"RAMP", "STEP"},
                "Loads and prescribed values without an amplitude: RAMP from their previous values over the step "
                "(default of *STATIC) or STEP, applied at the step's start and held (default of *DYNAMIC).")},

@@ -107,6 +107,10 @@ void handle_step(DeckState& state, const KeywordBlock& block, const ParameterVal
   if (s.max_increments <= 0)
     throw InputError(block.where, "INC=" + params.text("INC") + ": expected a positive number of increments");
   s.where = block.where;
+  if (params.name("EXTRAPOLATION") == "PARABOLIC")
+    throw InputError(block.where, "EXTRAPOLATION=PARABOLIC (quadratic extrapolation of the last two increments) "
+                                  "is not implemented: expected LINEAR (the default) or NO");
+  s.extrapolate = params.name("EXTRAPOLATION") != "NO";
   state.step_amplitude_given = params.given("AMPLITUDE");
   s.ramp_loads = params.name("AMPLITUDE") != "STEP";
   if (!block.data.empty())

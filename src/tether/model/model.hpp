@@ -257,6 +257,10 @@ struct Step {
   /// from the dialect (docs/keywords.md, Dialects).
   bool ramp_prescribed = true;
   bool nlgeom = false;
+  /// EXTRAPOLATION=LINEAR (default, as ABAQUS/Standard) or NO: a static
+  /// increment starts from the step's last converged increment scaled to
+  /// its size, or from the converged state (docs/theory/newton.md).
+  bool extrapolate = true;
   int max_increments = 100;           ///< INC=
   double initial_increment = 1;       ///< first increment [time]; 0 = the whole period
   double period = 1;                  ///< step time period
