@@ -215,3 +215,33 @@ TEST(Dual2, ProductOfTheLargestNumberOfVariablesAndNoMore) {
   }
   EXPECT_THROW(Dual2::variable(0.0, 0, n + 1), std::length_error);
 }
+
+// a * b writes the product straight into the result when both carry
+// Hessians; it must give the bits of the in-place product Dual2(a) *= b
+// (which it replaced), and a first-order evaluation the gradient of the
+// second-order one (the term memo serves gradients from Hessian-carrying
+// terms), for products, quotients and square roots of mixed values.
+TEST(Dual2, DirectProductAndFirstOrderAreBitForBitThoseBefore) {
+  const int n = 7;
+  std::vector<Dual2> second, first;
+  for (int i = 0; i < n; ++i) {
+    second.push_back(Dual2::variable(0.3 + 0.17 * i, i, n));
+    first.push_back(Dual2::variable(0.3 + 0.17 * i, i, n, false));
+  }
+  const auto chain_of = [](const std::vector<Dual2>& v) {
+    Dual2 r = v[0] * v[1] - v[2] / v[3];
+    for (std::size_t k = 2; k + 1 < v.size(); ++k) r = r * (v[k] + sqrt(v[k + 1] * v[k + 1] + r * r)) - Dual2(0.25) * v[k];
+    return r;
+  };
+  const Dual2 a = chain_of(second), b = chain_of(first);
+  ASSERT_TRUE(std::isfinite(a.value()));
+  Dual2 in_place = a;
+  in_place *= second[4] * a;
+  const Dual2 direct = a * (second[4] * a);
+  EXPECT_EQ(direct.value(), in_place.value());
+  EXPECT_TRUE(direct.gradient() == in_place.gradient());
+  EXPECT_TRUE(direct.hessian() == in_place.hessian());
+  EXPECT_EQ(a.value(), b.value());
+  EXPECT_TRUE(a.gradient() == b.gradient());
+  EXPECT_FALSE(b.second());
+}

@@ -1,6 +1,7 @@
 #include "tether/contact/mortar_node.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -172,10 +173,52 @@ double round_off(const MortarPair& pair, const MortarSlave& s, const Eigen::Vect
   return 1e-12 * largest * std::abs(D);
 }
 
-/// A weighted gap within round-off of zero is a touch: surfaces that coincide
-/// in the mesh start closed rather than a few ulps open (or overclosed).
+/// Whether slave node j itself lies on the master surface: the ray from x_j
+/// along its nodal normal n_j meets a master face that its faces overlap
+/// (|η| <= 1) within round-off (1e-12 of the largest coordinate) of x_j.
+bool touches_at_node(const MortarPair& pair, const MortarSlave& s, const Eigen::VectorXd& u) {
+  const auto positions = [&](const std::vector<int>& nodes) {
+    std::vector<Vec2T<double>> x;
+    for (int n : nodes) x.push_back(mortar_position(pair, u, n));
+    return x;
+  };
+  std::vector<std::vector<Vec2T<double>>> around;
+  std::vector<int> at;
+  for (const auto& [e, k] : pair.faces_of_node()[static_cast<std::size_t>(s.node)]) {
+    around.push_back(positions(pair.setup().slave_faces[static_cast<std::size_t>(e)]));
+    at.push_back(k);
+  }
+  const Vec2T<double> x = mortar_position(pair, u, s.node), n = nodal_normal<double>(around, at);
+  const double tolerance = round_off(pair, s, u, 1.0);
+  for (const auto& [e, k] : s.faces)
+    for (int f : pair.overlapped(e)) {
+      const std::vector<Vec2T<double>> y = positions(pair.setup().master_faces[static_cast<std::size_t>(f)]);
+      const std::optional<double> eta = project_onto_master<double>(x, n, y);
+      if (!eta || !(std::abs(*eta) <= 1 + 1e-12)) continue;
+      std::array<double, 3> N{}, dN{};
+      segment_shapes(static_cast<int>(y.size()), *eta, N, dN);
+      Vec2T<double> p{0.0, 0.0};
+      for (std::size_t a = 0; a < y.size(); ++a) p = p + N[a] * y[a];
+      if (std::abs(dot(n, p - x)) <= tolerance) return true;
+    }
+  return false;
+}
+
+/// The weighted gap the active set is decided on: zero for a touch.
+/// - A weighted gap within round-off of zero: surfaces that coincide in the
+///   mesh start closed rather than a few ulps open (or overclosed).
+/// - An open weighted gap of a node that itself lies on the master (a point
+///   contact at the node, as between a cylinder and a flat): g̃_j is then the
+///   dual-weighted gap of the faces around the point, which only the
+///   discretisation makes non-zero (with quadratic faces about 1e-11 of the
+///   face length at a cylinder of 8 faces per contact half-width, either
+///   sign). Node-to-segment closes such a node (its gap is zero); so does
+///   this, else a body held by contact alone has no closed node at the first
+///   iteration and its matrix is singular. The NCP is unchanged: closed, the
+///   row asks g̃_j = 0 and the node opens again when λ_j < 0.
 double decisive_gap(const MortarPair& pair, const MortarSlave& s, const Eigen::VectorXd& u, double gap, double D) {
-  return std::abs(gap) <= round_off(pair, s, u, D) ? 0.0 : gap;
+  if (std::abs(gap) <= round_off(pair, s, u, D)) return 0.0;
+  return gap > 0 && touches_at_node(pair, s, u) ? 0.0 : gap;
 }
 
 /// The soft law at the mean overclosure h_j = -g̃_j / D_j of a (decisive) weighted gap.

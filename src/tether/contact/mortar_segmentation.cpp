@@ -238,7 +238,11 @@ SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const 
   const int n = static_cast<int>(x.size());
   out.n_slave = n;
   for (auto& d : out.D) d = T(0.0);
-  out.M.resize(masters.size());
+  // assign() from a default-initialized block, not resize(): value-
+  // initialization would zero the in-place storage of its 9 Dual2 (43 kB).
+  std::array<std::array<T, 3>, 3> blank;
+  for (auto& row : blank) row.fill(T(0.0));
+  out.M.assign(masters.size(), blank);
   out.overlap.assign(masters.size(), {1.0, -1.0});
   std::vector<Vec2T<T>> measure_t;
   for (const Vec2T<double>& p : measure) measure_t.push_back({T(p.x), T(p.y)});

@@ -179,9 +179,16 @@ void MortarTermCache::with_terms(const MortarPair& pair, int e, int f, const Eva
     entry = of_face.end() - 1;
     entry->f = f;
   }
+  const auto holds = [&](const Slot& s) {
+    return s.valid && s.nlgeom == state.nlgeom && s.friction == friction && same(s.x, x) && (!friction || same(s.x0, x0));
+  };
+  // Gradients are wanted (forces, residual-only assemblies) mostly at a state
+  // whose Hessians the tangent's assembly has just computed: the second-order
+  // terms serve, their values and gradients being bit for bit those of a
+  // first-order evaluation (Dual2 computes them by the same operations).
+  if (order == 1 && holds(entry->slots[2])) return use(entry->slots[2].terms);
   Slot& slot = entry->slots[static_cast<std::size_t>(std::clamp(order, 0, 2))];
-  if (!(slot.valid && slot.nlgeom == state.nlgeom && slot.friction == friction && same(slot.x, x) &&
-        (!friction || same(slot.x0, x0)))) {
+  if (!holds(slot)) {
     slot.valid = false;
     slot.terms = compute(pair, e, f, std::move(nodes), x, x0, order, state.nlgeom, friction);
     slot.x = std::move(x), slot.x0 = std::move(x0);

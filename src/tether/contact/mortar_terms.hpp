@@ -38,6 +38,10 @@ class MortarPair;
 /// share of g̃_j.
 template <class T>
 struct MortarTerm {
+  /// User-provided, so that `std::vector<MortarTerm<Dual2>>(n)` does not
+  /// zero every Dual2's in-place storage first (value-initialization of a
+  /// class without one zero-fills it: about 50 kB per term).
+  MortarTerm() {}  // NOLINT(modernize-use-equals-default): see above
   bool overlaps = false;
   T D{};
   std::array<T, 3> M{};
