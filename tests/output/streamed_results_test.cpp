@@ -160,5 +160,47 @@ TEST(StreamedResults, WritersTakeMeansAndASourceInsteadOfPoints) {
   EXPECT_THROW(DatWriter(model, dir / "c.dat").write_increment(streamed, {el_print}, true), std::invalid_argument);
 }
 
+TEST(StreamedResults, StaticIncrementsBuildElementFieldsOnlyWhenTheFilesAreDue) {
+  // The example Hertz deck with result files at every 2nd increment: the
+  // streamed results carry nodal averages and element means exactly then
+  // (equal to the stored run's), else none, and the points always.
+  Model model = read_deck(kSource + "/examples/hertz/hertz.inp");
+  OutputRequest files;
+  files.kind = OutputRequest::Kind::NodeFile;
+  files.variables = {"U", "S"};
+  files.frequency = 2;
+  files.schedule_given = true;
+  for (Step& step : model.steps) step.outputs.push_back(files);
+  const auto stored = run_writing(model, fresh_directory("streamed_results_due_a"), false, VtuEncoding::Base64);
+  std::size_t increment = 0;
+  int with_fields = 0;
+  run_writing(model, fresh_directory("streamed_results_due_b"), true, VtuEncoding::Base64,
+              [&](const IncrementResults& r) {
+                ASSERT_LT(increment, stored.size());
+                const IncrementResults& s = stored[increment++];
+                EXPECT_TRUE(s.element_fields);
+                ASSERT_NE(r.point_source, nullptr);
+                const bool due = r.increment % 2 == 0 || increment == stored.size();
+                EXPECT_EQ(r.element_fields, due) << "increment " << r.increment;
+                if (due) {
+                  ++with_fields;
+                  EXPECT_EQ(r.nodal_stress, s.nodal_stress);
+                  EXPECT_EQ(r.element_stress.size(), model.elements.size());
+                } else {
+                  EXPECT_TRUE(r.nodal_stress.empty());
+                  EXPECT_TRUE(r.element_stress.empty());
+                  std::ostringstream vtu;
+                  EXPECT_THROW(VtuWriter(model, VtuEncoding::Base64).write(r, vtu), std::invalid_argument);
+                }
+                EXPECT_EQ(r.displacement, s.displacement);
+                EXPECT_EQ(r.multipliers.size(), s.multipliers.size());
+                std::vector<PointValues> buffer;
+                for (std::size_t e = 0; e < model.elements.size(); e += 7)
+                  EXPECT_EQ(element_points(r, e, buffer).size(), s.points[e].size()) << e;
+              });
+  EXPECT_EQ(increment, stored.size());
+  EXPECT_GE(with_fields, 1);
+}
+
 }  // namespace
 }  // namespace tether

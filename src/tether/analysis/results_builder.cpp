@@ -2,6 +2,7 @@
 
 #include <Eigen/SparseLU>
 #include <algorithm>
+#include <stdexcept>
 
 #include "tether/solvers/linear_solver.hpp"
 
@@ -40,13 +41,12 @@ double total_plastic_dissipation(const Discretization& discretization, const Eva
   return dissipation;
 }
 
-/// Sizes the plastic arrays of `r` (zeroed) and sums ALLPD over the elements.
-void start_plastic_results(const Discretization& discretization, const EvaluationState& state, IncrementResults& r) {
+/// Sizes the plastic arrays of `r` (zeroed).
+void start_plastic_results(const Discretization& discretization, IncrementResults& r) {
   const auto n_nodes = static_cast<std::size_t>(discretization.dofs().n_nodes());
   r.nodal_peeq.assign(n_nodes, 0.0);
   r.nodal_plastic_strain.assign(n_nodes, Tensor4{});
   r.element_peeq.assign(discretization.elements().size(), 0.0);
-  r.plastic_dissipation = total_plastic_dissipation(discretization, state);
 }
 
 /// Adds element e's PEEQ and PE extrapolations to the nodal sums and sets its mean PEEQ.
@@ -90,31 +90,70 @@ void add_node_values(const Discretization& discretization, const EvaluationState
   if (const StepTemperatures* t = discretization.temperatures()) r.temperature = t->all(state.step_time, state.total_time);
 }
 
+/// The multipliers and constraint values of the constraints, user
+/// constraints and eliminated constraints (`lambda`: eliminated_multipliers()).
+void add_multipliers(const Discretization& discretization, const EvaluationState& state, const Eigen::VectorXd& lambda,
+                     IncrementResults& r) {
+  const DofMap& dofs = discretization.dofs();
+  for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state, dofs));
+  for (const auto& c : discretization.user_constraints()) r.multipliers.push_back(c->values(state));
+  std::size_t k = 0;
+  for (const auto& e : discretization.eliminated()) {
+    MultiplierValues v;
+    v.owner = e.name;
+    v.nodes = e.nodes;
+    for (const auto& row : e.rows) {
+      double f = -row.rhs;
+      for (const auto& [dof, c] : row.terms) f += c * state.u[dof];
+      v.constraint.push_back(f);
+      const double l = lambda[static_cast<Eigen::Index>(k++)];
+      v.value.push_back(l);
+      // Force on dof i: -lambda * df/du_i, accumulated per node (on a rotation:
+      // the moment).
+      for (const auto& [dof, c] : row.terms) {
+        const int node = dofs.node_of(dof), component = dofs.component_of(dof);
+        auto it = std::find_if(v.nodal_force.begin(), v.nodal_force.end(),
+                               [&](const NodalConstraintForce& n) { return n.node == node; });
+        if (it == v.nodal_force.end()) it = v.nodal_force.insert(v.nodal_force.end(), NodalConstraintForce{node, Eigen::Vector2d::Zero(), std::nullopt});
+        if (component < kDofsPerNode)
+          it->force[component] -= l * c;
+        else
+          it->moment = it->moment.value_or(0.0) - l * c;
+      }
+    }
+    r.multipliers.push_back(std::move(v));
+  }
+}
+
+/// Node values (with the reactions of the eliminated constraints' forces),
+/// ALLPD when an element keeps a material history, and the contact values.
+IncrementResults node_results(const Discretization& discretization, const EvaluationState& state,
+                              const Eigen::VectorXd& full_residual, const EquationMap& equations,
+                              const Eigen::VectorXd& lambda) {
+  IncrementResults r;
+  add_node_values(discretization, state, with_eliminated_forces(equations, full_residual, lambda), equations, r);
+  const auto& elements = discretization.elements();
+  if (std::any_of(elements.begin(), elements.end(), [](const auto& e) { return e->has_history(); }))
+    r.plastic_dissipation = total_plastic_dissipation(discretization, state);
+  r.contact = discretization.contact_values(state);
+  return r;
+}
+
 /// Elements whose points are alive at once when the results are streamed.
 constexpr int kPointBlock = 8192;
 
-}  // namespace
-
-void DiscretizationPoints::points(int element, std::vector<PointValues>& out) const {
-  discretization_.elements()[static_cast<std::size_t>(element)]->point_values(state_, out);
-}
-
-IncrementResults build_results(const Discretization& discretization, const EvaluationState& state,
-                               const Eigen::VectorXd& full_residual, const EquationMap& equations,
-                               const ElementPointSource* stream) {
-  const Eigen::VectorXd lambda = eliminated_multipliers(equations, full_residual);
-  const DofMap& dofs = discretization.dofs();
-  const int n_nodes = dofs.n_nodes();
-  IncrementResults r;
-  add_node_values(discretization, state, with_eliminated_forces(equations, full_residual, lambda), equations, r);
-
+/// Adds the element fields to `r` (see IncrementResults::element_fields):
+/// the nodal averages of each element's extrapolation, per-element PEEQ and,
+/// when streamed, the mean stresses; without `stream` every element's points.
+void add_element_fields(const Discretization& discretization, const EvaluationState& state,
+                        const ElementPointSource* stream, IncrementResults& r) {
+  const int n_nodes = discretization.dofs().n_nodes();
   const auto& elements = discretization.elements();
   const int n_elements = static_cast<int>(elements.size());
   const DiscretizationPoints own_source(discretization, state);
   const ElementPointSource& source = stream ? *stream : own_source;
   std::vector<std::vector<PointValues>> block;
   if (stream) {
-    r.point_source = stream;
     r.element_stress.resize(static_cast<std::size_t>(n_elements));
     block.resize(static_cast<std::size_t>(std::min(n_elements, kPointBlock)));
   } else {
@@ -126,7 +165,7 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   r.nodal_stress.assign(n_nodes, Tensor4{});
   r.nodal_strain.assign(n_nodes, Tensor4{});
   const bool plastic = std::any_of(elements.begin(), elements.end(), [](const auto& e) { return e->has_history(); });
-  if (plastic) start_plastic_results(discretization, state, r);
+  if (plastic) start_plastic_results(discretization, r);
   const bool thermal = !r.temperature.empty();
   if (thermal) r.nodal_thermal_strain.assign(n_nodes, Tensor4{});
   std::vector<int> count(n_nodes, 0);
@@ -168,47 +207,33 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
       r.nodal_peeq[i] /= count[i];
       for (int k = 0; k < 4; ++k) r.nodal_plastic_strain[i][k] /= count[i];
     }
-  for (const auto& c : discretization.constraints()) r.multipliers.push_back(c->values(state, dofs));
-  for (const auto& c : discretization.user_constraints()) r.multipliers.push_back(c->values(state));
-  r.contact = discretization.contact_values(state);
-  std::size_t k = 0;
-  for (const auto& e : discretization.eliminated()) {
-    MultiplierValues v;
-    v.owner = e.name;
-    v.nodes = e.nodes;
-    for (const auto& row : e.rows) {
-      double f = -row.rhs;
-      for (const auto& [dof, c] : row.terms) f += c * state.u[dof];
-      v.constraint.push_back(f);
-      const double l = lambda[static_cast<Eigen::Index>(k++)];
-      v.value.push_back(l);
-      // Force on dof i: -lambda * df/du_i, accumulated per node (on a rotation:
-      // the moment).
-      for (const auto& [dof, c] : row.terms) {
-        const int node = dofs.node_of(dof), component = dofs.component_of(dof);
-        auto it = std::find_if(v.nodal_force.begin(), v.nodal_force.end(),
-                               [&](const NodalConstraintForce& n) { return n.node == node; });
-        if (it == v.nodal_force.end()) it = v.nodal_force.insert(v.nodal_force.end(), NodalConstraintForce{node, Eigen::Vector2d::Zero(), std::nullopt});
-        if (component < kDofsPerNode)
-          it->force[component] -= l * c;
-        else
-          it->moment = it->moment.value_or(0.0) - l * c;
-      }
-    }
-    r.multipliers.push_back(std::move(v));
-  }
+}
+
+}  // namespace
+
+void DiscretizationPoints::points(int element, std::vector<PointValues>& out) const {
+  discretization_.elements()[static_cast<std::size_t>(element)]->point_values(state_, out);
+}
+
+IncrementResults build_results(const Discretization& discretization, const EvaluationState& state,
+                               const Eigen::VectorXd& full_residual, const EquationMap& equations,
+                               const ElementPointSource* stream, bool element_fields) {
+  if (!element_fields && !stream)
+    throw std::logic_error("build_results: results without element fields must stream their points");
+  const Eigen::VectorXd lambda = eliminated_multipliers(equations, full_residual);
+  IncrementResults r = node_results(discretization, state, full_residual, equations, lambda);
+  r.point_source = stream;
+  r.element_fields = element_fields;
+  if (element_fields) add_element_fields(discretization, state, stream, r);
+  add_multipliers(discretization, state, lambda, r);
   return r;
 }
 
 IncrementResults build_node_results(const Discretization& discretization, const EvaluationState& state,
                                     const Eigen::VectorXd& full_residual, const EquationMap& equations) {
-  const Eigen::VectorXd lambda = eliminated_multipliers(equations, full_residual);
-  IncrementResults r;
-  add_node_values(discretization, state, with_eliminated_forces(equations, full_residual, lambda), equations, r);
-  const auto& elements = discretization.elements();
-  if (std::any_of(elements.begin(), elements.end(), [](const auto& e) { return e->has_history(); }))
-    r.plastic_dissipation = total_plastic_dissipation(discretization, state);
-  r.contact = discretization.contact_values(state);
+  IncrementResults r = node_results(discretization, state, full_residual, equations,
+                                    eliminated_multipliers(equations, full_residual));
+  r.element_fields = false;
   return r;
 }
 

@@ -31,14 +31,19 @@ class DiscretizationPoints final : public ElementPointSource {
 /// streamed: no `points`, but `element_stress` and `point_source = stream`
 /// (see IncrementResults). Element values are computed in blocks of elements,
 /// so streaming never holds more than one block's points.
+/// Without `element_fields` (streamed results only, else std::logic_error)
+/// no element value is computed here: the nodal averages and element means
+/// are left empty (IncrementResults::element_fields false) and the `.dat`'s
+/// element prints take their elements' points from `stream`. The rule of
+/// when to ask for them is the caller's (see StaticProcedure::complete).
 IncrementResults build_results(const Discretization& discretization, const EvaluationState& state,
                                const Eigen::VectorXd& residual, const EquationMap& equations,
-                               const ElementPointSource* stream = nullptr);
+                               const ElementPointSource* stream = nullptr, bool element_fields = true);
 
 /// The nodal part of build_results() alone: displacements, reactions and
 /// temperatures per node, ALLPD (when an element keeps a material history)
-/// and the contact values; no element values (for reports where no output
-/// request is due).
+/// and the contact values; no element values and no multipliers (for the
+/// explicit reports where no output request is due; element_fields false).
 IncrementResults build_node_results(const Discretization& discretization, const EvaluationState& state,
                                     const Eigen::VectorXd& residual, const EquationMap& equations);
 

@@ -5,6 +5,7 @@
 #include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/core/error.hpp"
+#include "tether/output/output_schedule.hpp"
 
 namespace tether {
 
@@ -65,9 +66,21 @@ void StaticProcedure::complete(const IncrementAttempt& attempt, const IncrementP
   // after commit(): an element with material history then reads the records
   // commit() stamped with s.u (ContinuumElement::point_values), so both are
   // the converged trial state of s.u, bit for bit.
+  // What the results hold follows what is written (see IncrementResults::element_fields):
+  // stored results (a Job keeping its increments, Python) hold everything; streamed ones
+  // (the writers of `tether run`) build the element fields -- every element's
+  // extrapolation and nodal averages -- only when the result files are due, the one
+  // output that reads them. The .dat's element prints take their own elements' points
+  // from the point source; the node, contact, multiplier, energy and restart output
+  // read node and contact values, which are always built.
+  IncrementResults when;
+  stamp(when, attempt, iterations);
+  const bool element_fields =
+      !stream_results_ ||
+      files_due(system_.step().outputs, StepProcedure::Static, when, attempt.time.ends_step);
   const DiscretizationPoints point_source(disc, s);
   IncrementResults results = build_results(disc, s, problem.full_residual(), system_.equations(),
-                                           stream_results_ ? &point_source : nullptr);
+                                           stream_results_ ? &point_source : nullptr, element_fields);
   for (Contribution* c : system_.contributions()) c->commit(s);
   force_average_.add(force_scale);
   stamp(results, attempt, iterations);

@@ -144,6 +144,13 @@ struct IncrementResults {
   /// Only the nodal values, the contact values and the energies: an explicit
   /// report at which no output request is due (no element values at all).
   bool energies_only = false;
+  /// False when the element fields were not built: nodal_stress,
+  /// nodal_strain, nodal_thermal_strain, nodal_peeq, nodal_plastic_strain,
+  /// element_stress and element_peeq are empty (the points are still given
+  /// by point_source when streamed). A streamed `*STATIC` increment builds
+  /// them only when the result files are due (see files_due()); the `.dat`
+  /// reads points only. The VtuWriter refuses such results.
+  bool element_fields = true;
   std::vector<Eigen::Vector2d> displacement;  ///< per node
   std::vector<Eigen::Vector2d> reaction;      ///< per node: internal minus applied force at constrained dofs
                                               ///< (plus inertia and damping forces in a dynamic step)

@@ -107,4 +107,13 @@ StepProcedure procedure_of(const IncrementResults& results) {
   return results.energy ? StepProcedure::ImplicitDynamic : StepProcedure::Static;
 }
 
+bool files_due(const std::vector<OutputRequest>& requests, StepProcedure procedure, const IncrementResults& results,
+               bool last_in_step) {
+  if (std::none_of(requests.begin(), requests.end(), is_file_request))
+    return is_due(default_file_request(procedure), results, last_in_step);
+  return std::any_of(requests.begin(), requests.end(), [&](const OutputRequest& r) {
+    return is_file_request(r) && is_due(r, results, last_in_step);
+  });
+}
+
 }  // namespace tether

@@ -52,4 +52,12 @@ OutputRequest default_file_request(StepProcedure procedure);
 /// their span, dynamic increments their energies).
 StepProcedure procedure_of(const IncrementResults& results);
 
+/// True when the result files (a `.vtu` and its `.pvd` entry) are written
+/// for the increment of `results` in a step of `procedure` with `requests`:
+/// when one of its file requests is due, or, without any, when
+/// default_file_request(procedure) is. The only output that reads the
+/// element fields (nodal averages, element means) of IncrementResults.
+bool files_due(const std::vector<OutputRequest>& requests, StepProcedure procedure, const IncrementResults& results,
+               bool last_in_step);
+
 }  // namespace tether

@@ -41,14 +41,6 @@ std::filesystem::path prepared(const std::filesystem::path& directory, const std
   return directory;
 }
 
-bool vtu_due(const std::vector<OutputRequest>& requests, const IncrementResults& results, bool last_in_step) {
-  if (std::none_of(requests.begin(), requests.end(), is_file_request))
-    return is_due(default_file_request(procedure_of(results)), results, last_in_step);
-  return std::any_of(requests.begin(), requests.end(), [&](const OutputRequest& r) {
-    return is_file_request(r) && is_due(r, results, last_in_step);
-  });
-}
-
 }  // namespace
 
 ResultWriter::ResultWriter(const Model& model, const std::filesystem::path& directory, const std::string& job,
@@ -69,7 +61,7 @@ void ResultWriter::write_increment(const IncrementResults& results, const std::v
                                    bool last_in_step) {
   dat_.write_increment(results, requests, last_in_step);
   if (results.energy) write_energy_row(results);
-  if (!options_.write_vtu || !vtu_due(requests, results, last_in_step)) return;
+  if (!options_.write_vtu || !files_due(requests, procedure_of(results), results, last_in_step)) return;
   const auto file = vtu_path(results.step, results.increment);
   vtu_.write(results, file);
   pvd_.add(results.total_time, file.filename().string());

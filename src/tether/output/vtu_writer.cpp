@@ -287,6 +287,9 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (r.displacement.size() != n_nodes)
     throw std::invalid_argument(fmt::format("VtuWriter: IncrementResults::displacement has {} entries, the mesh needs {}",
                                             r.displacement.size(), n_nodes));
+  if (!r.element_fields)
+    throw std::invalid_argument(fmt::format(
+        "VtuWriter: the results of step {} increment {} were built without element fields", r.step, r.increment));
   check_size(r.reaction.size(), n_nodes, "reaction");
   check_size(r.nodal_stress.size(), n_nodes, "nodal_stress");
   check_size(r.nodal_strain.size(), n_nodes, "nodal_strain");
