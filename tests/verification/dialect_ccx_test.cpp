@@ -200,7 +200,8 @@ TEST(DialectAgainstCcx, AxisymmetricReactionsAre180TimesCalculixsSegment) {
 // slave's data line (CalculiX has no such field), a slave (node-based or
 // element faces) of plane elements against axisymmetric master faces (ccx's
 // spring acts on one 2° segment of the master and the whole thickness of the
-// slave), a node-based slave node in no element.
+// slave), a node-based slave node in no element, SMOOTH on a pair with a
+// node-based slave.
 TEST(DialectAgainstCcx, UnmodelledCalculixCasesAreRefused) {
   std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/tests/verification/dialect/contact_node_slave_calculix.inp");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -235,4 +236,7 @@ TEST(DialectAgainstCcx, UnmodelledCalculixCasesAreRefused) {
   const std::string lone = edit(edit(text, "*NSET, NSET=SLAVEN\n1, 2, 3, 4", "*NSET, NSET=SLAVEN\n1, 2, 3, 4, 77"), "*NODE\n1001, 0, 0\n",
                                 "*NODE\n77, 0.5, 1.1\n*NODE\n1001, 0, 0\n");
   EXPECT_NE(outcome(lone).find("belongs to no element"), std::string::npos) << outcome(lone);
+  // SMOOTH would replace the master faces whose area the node takes by other segments.
+  const std::string smooth = edit(text, "TYPE=NODE TO SURFACE", "TYPE=NODE TO SURFACE, SMOOTH=0.2");
+  EXPECT_NE(outcome(smooth).find("SMOOTH on a pair whose slave surface"), std::string::npos) << outcome(smooth);
 }
