@@ -25,6 +25,10 @@ using testing::tangent_error;
 /// Kink: the SmoothCorner geometry without SMOOTH (a convex kink at node 2).
 enum class Master { Linear, Quadratic, QuadraticPair, SmoothCorner, SmoothStraight, Kink };
 enum class Friction { None, Exact, Slope, ElasticSlip };
+/// The slave node's area: fixed (0.7), or CalculiX's on the current master
+/// face (dialect calculix, node-based slave): plane with thickness 0.8, or
+/// axisymmetric (the whole fixture moved to x + 3, so r > 0).
+enum class NodeArea { Fixed, Plane, Axisymmetric };
 
 /// A slave node (node 0) over a master surface: two straight segments
 /// (nodes 1-2-3, top faces of a body below y = 0), one curved 3-node segment,
@@ -37,7 +41,8 @@ struct Fixture {
   int n_disp = 0;
   double x0 = 0.3;  ///< slave x at the start of the increment
 
-  Fixture(Master master, PressureOverclosure law, Friction friction, double mu = 0.3) {
+  Fixture(Master master, PressureOverclosure law, Friction friction, double mu = 0.3,
+          NodeArea area = NodeArea::Fixed) {
     ContactPairSetup setup;
     setup.name = "TEST";
     if (master == Master::Linear) {
@@ -61,6 +66,16 @@ struct Fixture {
     }
     setup.slave_nodes = {0};
     setup.slave_area = {0.7};
+    if (area != NodeArea::Fixed) {
+      setup.node_based_slave = true;
+      const bool axisymmetric = area == NodeArea::Axisymmetric;
+      const MasterFaceArea rule{axisymmetric ? MasterFaceArea::Kind::axisymmetric : MasterFaceArea::Kind::plane, 0.8};
+      setup.calculix_face_areas.assign(setup.master_faces.size(), rule);
+      if (axisymmetric) {
+        for (Eigen::Vector2d& x : reference) x.x() += 3;
+        x0 += 3;
+      }
+    }
     setup.law = law;
     if (friction != Friction::None) {
       FrictionData f;

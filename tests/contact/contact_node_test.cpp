@@ -7,10 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "contact_fixture.hpp"
+#include "tether/contact/calculix_area.hpp"
 
 namespace tether {
 namespace {
@@ -286,6 +288,115 @@ TEST(ContactNode, ForceOnTheSlaveIsNormalForceAlongTheOutwardNormal) {
   EXPECT_NEAR(v.force.y(), v.normal_force, 1e-12);
   EXPECT_NEAR(v.force.x(), 0, 1e-14);
   EXPECT_EQ(v.master_element, 1);
+}
+
+}  // namespace
+}  // namespace tether
+
+namespace tether {
+namespace {
+
+using namespace contact_test;
+
+/// Positions of the slave's segment (the current master face) at the fixture's state.
+std::vector<Eigen::Vector2d> current_face(const Fixture& f) {
+  const ContactSlave& s = f.pair->slave(0);
+  std::vector<Eigen::Vector2d> y;
+  for (std::size_t a = 1; a < s.nodes.size(); ++a) {
+    const int n = s.nodes[a];
+    y.push_back(f.reference[static_cast<std::size_t>(n)] + f.u.segment<2>(2 * n));
+  }
+  return y;
+}
+
+// CalculiX's area of a node-based slave (dialect calculix) at random states:
+// slave over the face, penetrating, master nodes moved by up to 0.02; plane
+// and axisymmetric rules, linear and curved faces, with and without a
+// penalty-stick friction whose stiffness is per area. The tangent, with
+// ∇N = -A p' ∇g + p ∇A through the master nodes and ξ*, against central
+// differences; the pressure is N over the area on the current face.
+TEST(ContactNode, CalculixAreaOnTheCurrentFaceHasAConsistentTangentAtRandomStates) {
+  std::mt19937 random(20261126);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int checked = 0;
+  double worst = 0;
+  for (const NodeArea area : {NodeArea::Plane, NodeArea::Axisymmetric})
+    for (const Master master : {Master::Linear, Master::Quadratic, Master::QuadraticPair})
+      for (const Friction friction : {Friction::None, Friction::Slope})
+        for (int trial = 0; trial < 8; ++trial) {
+          Fixture f(master, calculix_linear_law(), friction, 0.3, area);
+          // Penetrating by 0.01 to 0.07 wherever the master nodes are.
+          const bool dome = master == Master::Quadratic;  // face y = 0.15 (1 - x²) before moving
+          const double x = f.x0 + (dome ? 0.3 : 0.6) * unit(random);
+          const double y = (dome ? 0.05 : -0.05) + 0.01 * unit(random);
+          f.place(f.x0, y, x, y);
+          for (int k = 2; k < f.n_disp; ++k) f.u[k] = 0.02 * unit(random);
+          f.pair->update_connectivity(f.state());
+          const ContactNodeValues v = f.node().values(f.state());
+          ASSERT_GT(v.normal_force, 0) << "trial " << trial;
+          // The area on the current face at the current ξ* (at a convex corner, which
+          // the moved master nodes may make, at the face's end).
+          const ContactSlave& s = f.pair->slave(0);
+          const double xi = s.pairing.at_corner ? (s.pairing.xi < 0 ? -1.0 : 1.0) : v.xi;
+          const FaceArea a = calculix_face_area(f.pair->setup().calculix_face_areas[0], current_face(f), xi);
+          EXPECT_NEAR(v.pressure * a.area, v.normal_force, 1e-12 * v.normal_force)
+              << "area " << static_cast<int>(area) << " master " << static_cast<int>(master) << " trial " << trial
+              << " xi " << v.xi << " corner " << s.pairing.at_corner << " segment " << s.pairing.segment;
+          EXPECT_GT(std::abs(a.area / s.area - 1), 1e-4) << "the area moved with the master";
+          const double err = tangent_error(f.node(), f.state(), 1e-7);
+          EXPECT_LT(err, 2e-6) << "area " << static_cast<int>(area) << " master " << static_cast<int>(master)
+                               << " friction " << static_cast<int>(friction) << " trial " << trial;
+          worst = std::max(worst, err), ++checked;
+        }
+  std::printf("[ contact ] CalculiX's current area: %d random states, worst tangent error %.2e\n", checked, worst);
+}
+
+// The area's derivatives against differences of calculix_face_area itself
+// (∂A/∂y_a at fixed ξ, ∂A/∂ξ), on a curved face, for both rules; and its
+// closed forms on a straight face: 2 t |y'| = L t (plane), 180 · 4 sin 1° r
+// |(cos 1° r', y')| (axisymmetric, linear face).
+TEST(ContactNode, CalculixFaceAreaDerivativesAndClosedForms) {
+  const std::vector<Eigen::Vector2d> curved = {{3.2, 0.1}, {1.1, -0.05}, {2.0, 0.3}};
+  for (const auto kind : {MasterFaceArea::Kind::plane, MasterFaceArea::Kind::axisymmetric}) {
+    const MasterFaceArea rule{kind, 0.8};
+    const double xi = 0.37, h = 1e-6;
+    const FaceArea a = calculix_face_area(rule, curved, xi);
+    EXPECT_NEAR(a.d_xi, (calculix_face_area(rule, curved, xi + h).area - calculix_face_area(rule, curved, xi - h).area) / (2 * h),
+                1e-7 * a.area);
+    for (std::size_t n = 0; n < curved.size(); ++n)
+      for (int c = 0; c < 2; ++c) {
+        std::vector<Eigen::Vector2d> up = curved, down = curved;
+        up[n][c] += h, down[n][c] -= h;
+        const double fd = (calculix_face_area(rule, up, xi).area - calculix_face_area(rule, down, xi).area) / (2 * h);
+        EXPECT_NEAR(a.d_nodes[n][c], fd, 1e-7 * a.area) << "node " << n << " component " << c;
+      }
+  }
+  const std::vector<Eigen::Vector2d> straight = {{2.0, 1.0}, {1.0, 1.2}};
+  const double length = std::hypot(1.0, 0.2);
+  EXPECT_NEAR(calculix_face_area({MasterFaceArea::Kind::plane, 0.8}, straight, 0.3).area, 0.8 * length, 1e-14);
+  const double phi = std::numbers::pi / 180, r = 0.35 * 2.0 + 0.65 * 1.0;  // r at ξ = 0.3
+  EXPECT_NEAR(calculix_face_area({MasterFaceArea::Kind::axisymmetric, 0}, straight, 0.3).area,
+              180 * 4 * std::sin(phi) * r * std::hypot(std::cos(phi) * 0.5, 0.1), 1e-13);
+}
+
+// At a convex corner (node-to-node contact with the kink node) the area is
+// the face's at its end, ξ = ±1, fixed: its gradient goes through the face's
+// nodes only, and the tangent stays consistent.
+TEST(ContactNode, CalculixAreaAtAConvexCornerIsTheFaceEndsAndConsistent) {
+  Fixture f(Master::Kink, exponential_law(), Friction::None, 0.3, NodeArea::Plane);
+  f.place(0.05, 0.08, 0.0, 0.065);
+  const Eigen::Vector2d kink = f.reference[2] + f.u.segment<2>(4);
+  f.u[0] = kink.x() - f.reference[0].x(), f.u[1] = kink.y() + 0.012 - f.reference[0].y();
+  f.pair->update_connectivity(f.state());
+  ASSERT_TRUE(f.pair->slave(0).pairing.at_corner);
+  const ContactNodeValues v = f.node().values(f.state());
+  ASSERT_GT(v.normal_force, 0);
+  const double xi_end = f.pair->slave(0).pairing.xi < 0 ? -1.0 : 1.0;
+  const FaceArea a = calculix_face_area(f.pair->setup().calculix_face_areas[0], current_face(f), xi_end);
+  EXPECT_NEAR(v.pressure * a.area, v.normal_force, 1e-12 * v.normal_force);
+  const double err = tangent_error(f.node(), f.state(), 1e-7);
+  std::printf("[ contact ] CalculiX's area at a convex corner: tangent error %.2e\n", err);
+  EXPECT_LT(err, 2e-6);
 }
 
 }  // namespace

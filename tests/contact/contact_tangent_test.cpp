@@ -28,6 +28,7 @@ struct Case {
   double slave_y;   ///< slave height at the end (penetration < 0)
   double slip;      ///< x-motion of the slave over the increment
   ContactStatus expected;
+  NodeArea area = NodeArea::Fixed;
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
@@ -36,7 +37,7 @@ class ContactTangent : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ContactTangent, MatchesFiniteDifferences) {
   const Case& c = GetParam();
-  Fixture f(c.master, c.law, c.friction);
+  Fixture f(c.master, c.law, c.friction, 0.3, c.area);
   f.place(f.x0, c.slave_y, f.x0 + c.slip, c.slave_y);
   int k = f.n_disp;
   if (c.law.law == PressureOverclosure::Law::Hard && c.law.enforcement.method == Enforcement::Method::Lagrange)
@@ -95,7 +96,26 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"soft_law_friction_slip", Master::Linear, linear_law(), Friction::Slope, 0, 0, -0.03, 0.3,
              ContactStatus::Slip},
         Case{"soft_law_friction_stick", Master::Quadratic, exponential_law(), Friction::ElasticSlip, 0, 0, 0.12,
-             0.001, ContactStatus::Stick}),
+             0.001, ContactStatus::Stick},
+        // CalculiX's area of a node-based slave: the master face's on the current face.
+        Case{"calculix_area_plane_linear", Master::Linear, calculix_linear_law(), Friction::None, 0, 0, -0.04, 0.02,
+             ContactStatus::Slip, NodeArea::Plane},
+        Case{"calculix_area_plane_quadratic", Master::Quadratic, calculix_linear_law(), Friction::None, 0, 0, 0.1,
+             0.02, ContactStatus::Slip, NodeArea::Plane},
+        Case{"calculix_area_axisymmetric_linear", Master::Linear, calculix_linear_law(), Friction::None, 0, 0, -0.04,
+             0.02, ContactStatus::Slip, NodeArea::Axisymmetric},
+        Case{"calculix_area_axisymmetric_quadratic", Master::Quadratic, calculix_linear_law(), Friction::None, 0, 0,
+             0.1, 0.02, ContactStatus::Slip, NodeArea::Axisymmetric},
+        Case{"calculix_area_axisymmetric_quadratic_pair", Master::QuadraticPair, calculix_linear_law(),
+             Friction::None, 0, 0, -0.04, 0.02, ContactStatus::Slip, NodeArea::Axisymmetric},
+        Case{"calculix_area_slope_stick", Master::Linear, calculix_linear_law(), Friction::Slope, 0, 0, -0.04, 0.001,
+             ContactStatus::Stick, NodeArea::Axisymmetric},
+        Case{"calculix_area_slope_slip", Master::Quadratic, calculix_linear_law(), Friction::Slope, 0, 0, 0.05, 0.3,
+             ContactStatus::Slip, NodeArea::Plane},
+        Case{"calculix_area_elastic_slip", Master::Quadratic, calculix_linear_law(), Friction::ElasticSlip, 0, 0, 0.05,
+             0.3, ContactStatus::Slip, NodeArea::Axisymmetric},
+        Case{"calculix_area_hard_slope_stick", Master::Linear, hard(), Friction::Slope, 0.8, 0, -0.04, 0.001,
+             ContactStatus::Stick, NodeArea::Plane}),
     [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
 
 // The same branches on the smoothed surface (kink height 0.05: the slave at

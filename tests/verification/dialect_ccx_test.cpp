@@ -88,25 +88,27 @@ TEST(DialectAgainstCcx, LinearContactLawIsCalculixsSmoothLaw) {
 }
 
 // A node-based slave surface in the calculix dialect: each node's area is the
-// one CalculiX gives it, the area of the master face it projects onto (ccx's
-// springforc_n2f.f: the 2D node lies on no face of its expanded mesh). Here
-// every master face is 0.5 long, so 1/2 for each of the four slave nodes
-// (against 1/6, 1/3, 1/3, 1/6 on the element faces and 1 each in the abaqus
-// dialect). Reference: ccx 2.20 on
-// tests/verification/dialect/contact_node_slave_calculix.inp, u_y of nodes
-// 1-4 at t = 1; tether is 5.4e-6 to 6.4e-6 (4e-4 of u) below: ccx evaluates
-// the area on the deformed master face when it generates a contact element,
-// tether on the undeformed one.
+// one CalculiX gives it, the area of the master face it projects onto, on the
+// current face (ccx's springforc_n2f.f: the 2D node lies on no face of its
+// expanded mesh; co + vold, no NLGEOM here). The master faces are 0.5 long
+// before loading, so about 1/2 for each of the four slave nodes (against 1/6,
+// 1/3, 1/3, 1/6 on the element faces and 1 each in the abaqus dialect).
+// Reference: ccx 2.20 on tests/verification/dialect/contact_node_slave_calculix.inp,
+// u_y of nodes 1-4 at t = 1; tether agrees to 2e-11 (1e-9 of u; it was 6.4e-6
+// with the area on the undeformed face).
 TEST(DialectAgainstCcx, NodeBasedSlaveTakesCalculixsNodeAreas) {
   const auto calculix = run_in(Dialect::Calculix, "/tests/verification/dialect/contact_node_slave_calculix.inp");
   ASSERT_TRUE(calculix.summary.completed) << calculix.summary.message;
   const std::vector<std::pair<int, double>> ccx = {
       {1, -1.579518e-2}, {2, -1.674203e-2}, {3, -1.674308e-2}, {4, -1.579818e-2}};
   for (const auto& [node, uy] : ccx)
-    EXPECT_NEAR(calculix.last().displacement[static_cast<std::size_t>(calculix.node(node))].y(), uy, 1e-5) << node;
+    EXPECT_NEAR(calculix.last().displacement[static_cast<std::size_t>(calculix.node(node))].y(), uy, 2e-8) << node;
   const auto& pair = calculix.last().contact.at(0);
   ASSERT_EQ(pair.nodes.size(), 4u);
-  for (const auto& n : pair.nodes) EXPECT_NEAR(n.normal_force / n.pressure, 0.5, 1e-12);
+  for (const auto& n : pair.nodes) {
+    EXPECT_NEAR(n.normal_force / n.pressure, 0.5, 5e-3 * 0.5);  // the face, moved by the load
+    EXPECT_GT(std::abs(n.normal_force / n.pressure - 0.5), 1e-6);
+  }
 }
 
 namespace {
@@ -118,8 +120,9 @@ struct NodeSlaveCase {
   const char* deck;
   std::vector<double> uy;        ///< ccx's u_y of slave nodes 1.. [length]
   std::vector<double> pressure;  ///< ccx's contact pressure of slave nodes 1.. [stress]
-  double (*area)(double r);      ///< CalculiX's area at a slave node at x = r [length²], tether's full circle for CAX
+  double (*area)(double r);      ///< CalculiX's area at a slave node at x = r on the undeformed face [length²], tether's full circle for CAX
   double tolerance_uy;           ///< |tether - ccx| allowed in u_y
+  double tolerance_p;            ///< |tether - ccx| / ccx allowed in each pressure
 };
 
 const double kSin1 = std::sin(std::numbers::pi / 180), kCos1 = std::cos(std::numbers::pi / 180);
@@ -131,28 +134,30 @@ const std::vector<NodeSlaveCase> kNodeSlaveCases = {
     {"contact_node_slave_cpe8_calculix.inp",
      {-9.312345e-3, -1.151782e-2, -1.190572e-2, -1.241312e-2, -1.190387e-2, -1.151329e-2, -9.304962e-3},
      {2.441934, 3.201945, 2.850967, 3.082334, 2.850357, 3.202124, 2.442323},
-     [](double) { return 0.5; }, 2e-5},
+     [](double) { return 0.5; }, 2e-8, 1e-5},
     {"contact_node_slave_cax4_calculix.inp",
      {-1.315247e-2, -1.445623e-2, -1.371847e-2, -1.080153e-2},
      {5.013518, 5.640321, 5.445703, 4.200263},
-     [](double r) { return 180 * kSin1 * kCos1 * r; }, 5e-6},
+     [](double r) { return 180 * kSin1 * kCos1 * r; }, 8e-6, 5e-4},
     {"contact_node_slave_cax8_calculix.inp",
      {-1.026738e-2, -1.213189e-2, -1.223135e-2, -1.251170e-2, -1.178785e-2, -1.117065e-2, -8.739308e-3},
      {2.561666, 3.265329, 2.893333, 3.100187, 2.838078, 3.156061, 2.345257},
-     [](double r) { return 180 * kSin1 * r; }, 2e-5},
+     [](double r) { return 180 * kSin1 * r; }, 2e-8, 1e-5},
 };
 
 }  // namespace
 
 // Quadratic and axisymmetric elements: each slave node of the node-based
-// surface takes the area of the master face it projects onto, as in ccx 2.20
-// on the same decks (its figures in each case above). Measured |tether - ccx|
-// in u_y: CPE8 1.2e-5, CAX4 2.3e-6, CAX8 1.1e-5 (9e-4, 1.6e-4, 9e-4 of the
-// largest u_y); in the contact pressure 0.36 %, 0.06 %, 0.33 %. ccx takes the
-// master face's area on the deformed mesh when it generates a contact element:
-// the master's top shortens by 0.3-0.4 % under the slave here (u_x of its
-// nodes), tether takes it undeformed. The former rule (the free faces of the
-// expanded mesh shared among their nodes) refused these decks.
+// surface takes the area of the master face it projects onto, on the current
+// face, as in ccx 2.20 on the same decks (its figures in each case above).
+// Measured |tether - ccx| in u_y: CPE8 2e-9, CAX8 1e-9 (ccx's last printed
+// digit: they were 1.2e-5 and 1.1e-5 with the area on the undeformed face),
+// CAX4 5.9e-6 (4.1e-4 of u: ccx's C3D8 wedge of straight chords, whose
+// applied load is 2.0e-4 below the ring's and whose u_x differs by 0.5 %;
+// 2.3e-6 before, by a cancellation); in the pressures 9.4e-7, 6.1e-7 and
+// 3.9e-4 of the largest. Each node's area (N / p) is within 0.5 % of the
+// closed form on the undeformed face and not equal to it: the master face
+// moved (its exact value on the current face: tests/contact/contact_node_test.cpp).
 TEST(DialectAgainstCcx, NodeBasedSlaveOnQuadraticAndAxisymmetricElements) {
   for (const NodeSlaveCase& c : kNodeSlaveCases) {
     SCOPED_TRACE(c.deck);
@@ -167,8 +172,9 @@ TEST(DialectAgainstCcx, NodeBasedSlaveOnQuadraticAndAxisymmetricElements) {
     for (std::size_t k = 0; k < pair.nodes.size(); ++k) {
       const auto& n = pair.nodes[k];
       const double r = run.model.coords[static_cast<std::size_t>(run.node(static_cast<int>(k) + 1))].x();
-      EXPECT_NEAR(n.normal_force / n.pressure, c.area(r), 1e-12 * c.area(r)) << k + 1;
-      EXPECT_NEAR(n.pressure, c.pressure[k], 5e-3 * c.pressure[k]) << k + 1;
+      EXPECT_NEAR(n.normal_force / n.pressure, c.area(r), 5e-3 * c.area(r)) << k + 1;
+      EXPECT_GT(std::abs(n.normal_force / n.pressure - c.area(r)), 1e-6 * c.area(r)) << k + 1;
+      EXPECT_NEAR(n.pressure, c.pressure[k], c.tolerance_p * c.pressure[k]) << k + 1;
     }
   }
 }
@@ -194,7 +200,8 @@ TEST(DialectAgainstCcx, AxisymmetricReactionsAre180TimesCalculixsSegment) {
 // slave's data line (CalculiX has no such field), a slave (node-based or
 // element faces) of plane elements against axisymmetric master faces (ccx's
 // spring acts on one 2° segment of the master and the whole thickness of the
-// slave), a node-based slave node in no element.
+// slave), a node-based slave node in no element, SMOOTH on a pair with a
+// node-based slave.
 TEST(DialectAgainstCcx, UnmodelledCalculixCasesAreRefused) {
   std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/tests/verification/dialect/contact_node_slave_calculix.inp");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -229,4 +236,7 @@ TEST(DialectAgainstCcx, UnmodelledCalculixCasesAreRefused) {
   const std::string lone = edit(edit(text, "*NSET, NSET=SLAVEN\n1, 2, 3, 4", "*NSET, NSET=SLAVEN\n1, 2, 3, 4, 77"), "*NODE\n1001, 0, 0\n",
                                 "*NODE\n77, 0.5, 1.1\n*NODE\n1001, 0, 0\n");
   EXPECT_NE(outcome(lone).find("belongs to no element"), std::string::npos) << outcome(lone);
+  // SMOOTH would replace the master faces whose area the node takes by other segments.
+  const std::string smooth = edit(text, "TYPE=NODE TO SURFACE", "TYPE=NODE TO SURFACE, SMOOTH=0.2");
+  EXPECT_NE(outcome(smooth).find("SMOOTH on a pair whose slave surface"), std::string::npos) << outcome(smooth);
 }

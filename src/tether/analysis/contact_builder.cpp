@@ -8,6 +8,7 @@
 #include <set>
 #include <span>
 
+#include "tether/contact/calculix_area.hpp"
 #include "tether/contact/segment_geometry.hpp"
 #include "tether/core/error.hpp"
 #include "tether/fem/quadrature.hpp"
@@ -51,43 +52,12 @@ void resolve_calculix_linear(const Model& model, const SurfaceInteraction& inter
   if (!(law.sigma_inf > 0)) law.sigma_inf = young / 70000;
 }
 
-/// Half the angle of CalculiX's axisymmetric segment [rad]: ccx expands a
-/// CAX element into a wedge of 2π / 180 = 2° about the y axis (gen3dfrom2d.f:
-/// a node at radius r becomes r cos φ, y, ∓r sin φ on the side faces and, for
-/// quadratic elements, r, y, 0 in the mid-layer), so its forces are 1/180 of
-/// the full circle's (kCalculixAxisymmetricSegments).
-constexpr double kCalculixHalfSegment = std::numbers::pi / kCalculixAxisymmetricSegments;
-
-/// The area [length²] CalculiX gives a node-based slave node of a 2D model
-/// that projects at ξ onto the master face with reference nodes `x` (2 or 3,
-/// face_nodes() order) of element `e`. ccx keeps such a node as the 2D node
-/// itself (tied to its expanded mid-layer node, gen3dsurf.f), which lies on no
-/// face of the expanded mesh, so tiefaccont.f finds no face for it and
-/// gencontelem_n2f.f gives it the area 0; springforc_n2f.f then takes the
-/// master face's "representative area" 4 |x_ξ × x_η| (its Jacobian at the
-/// projection, η = 0 on the mid-plane, times 4). On the one-layer faces of
-/// the expansion that is:
-/// - plane (CPE, CPS, thickness t of the master's section): 2 t |y'(ξ)|, the
-///   face length times t on a straight face;
-/// - axisymmetric, per 2° segment: 4 sin φ r(ξ) |(r̃'(ξ), y'(ξ))|, where the
-///   radial slope r̃' = cos φ r' on linear faces (corners at r cos φ) and
-///   r̃' = r'_chord + cos φ (r' - r'_chord) on quadratic ones (their mid-layer
-///   corner nodes sit at r; r'_chord = (r_2 - r_1)/2); times 180 for tether's
-///   full circle.
-/// Reference configuration; ccx evaluates it on the deformed master face
-/// each time it generates the contact element. 0 at the axis (r = 0) of an
-/// axisymmetric master: such a node carries no force, in ccx too.
-double calculix_face_area(const Model& model, const Element& e, std::span<const Eigen::Vector2d> x, double xi) {
-  const int m = static_cast<int>(x.size());
-  Eigen::Vector3d N, dN;
-  face_shape_functions(m, xi, N, dN);
-  Eigen::Vector2d p(0, 0), dp(0, 0);
-  for (int a = 0; a < m; ++a) p += N[a] * x[static_cast<std::size_t>(a)], dp += dN[a] * x[static_cast<std::size_t>(a)];
-  if (e.type.family != Family::Axisymmetric) return 2 * measure(model, e, p) * dp.norm();
-  const double c = std::cos(kCalculixHalfSegment), s = std::sin(kCalculixHalfSegment);
-  const double chord = (x[1].x() - x[0].x()) / 2;
-  const double radial = (m == 2 ? c : 1.0) * chord + c * (dp.x() - chord);
-  return kCalculixAxisymmetricSegments * 4 * s * p.x() * std::hypot(radial, dp.y());
+/// The rule of CalculiX's area (calculix_area.hpp) on the faces of element
+/// `e`: the thickness of its section for plane elements, CalculiX's 2° wedge
+/// for axisymmetric ones.
+MasterFaceArea calculix_area_rule(const Model& model, const Element& e) {
+  if (e.type.family == Family::Axisymmetric) return {MasterFaceArea::Kind::axisymmetric, 0};
+  return {MasterFaceArea::Kind::plane, measure(model, e, {0, 0})};
 }
 
 /// The master face nearest to a point and where on it.
@@ -152,9 +122,11 @@ void refuse_mixed_faces(const Model& model, const Surface& slave, const Surface&
 }
 
 /// The area CalculiX gives each node of the node-based slave surface `slave`
-/// against the master surface `master` (dialect calculix): the area of the
-/// master face the node projects onto, at that point (calculix_face_area),
-/// found in the reference configuration. Measured against ccx 2.20 on two
+/// against the master surface `master` (dialect calculix) in the reference
+/// configuration: the area of the master face the node projects onto, at that
+/// point (calculix_face_area). The contact element re-evaluates it on the
+/// current face (ContactPairSetup::calculix_face_areas); this one serves the
+/// reach and the checks below. Measured against ccx 2.20 on two
 /// blocks under CalculiX's LINEAR law (tests/verification/dialect_ccx_test.cpp):
 /// CPE4, CPE8, CAX4, CAX8. ModelError for a slave node in no element (ccx
 /// would keep it a free 3D node) and for a pair that joins plane slave nodes
@@ -187,7 +159,7 @@ std::map<int, double> calculix_node_areas(const Model& model, const Surface& sla
                        "plane one, forces 180-fold apart that no 2D model reproduces" + where);
     std::vector<Eigen::Vector2d> y;
     for (int m : faces[near.face]) y.push_back(reference[static_cast<std::size_t>(m)]);
-    area[n] = calculix_face_area(model, e, y, near.xi);
+    area[n] = calculix_face_area(calculix_area_rule(model, e), y, near.xi).area;
   }
   return area;
 }
@@ -233,7 +205,14 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
         throw ModelError("node-based slave surface " + slave.name + " gives node areas (" + slave.where.str() +
                          "): CalculiX's *SURFACE, TYPE=NODE has no area field, and in the calculix dialect each "
                          "node's area is CalculiX's (from the free faces at the node)" + where);
+      if (data.smoothing > 0)
+        throw ModelError("SMOOTH on a pair whose slave surface " + slave.name + " is node-based: in the calculix "
+                         "dialect each node's area is CalculiX's, that of the master face under it, which SMOOTH would "
+                         "replace by other segments (CalculiX has no SMOOTH)" + where);
       area = calculix_node_areas(model, slave, master, reference, where);
+      for (const ElementFace& f : master.faces)
+        setup.calculix_face_areas.push_back(
+            calculix_area_rule(model, model.elements[static_cast<std::size_t>(f.element)]));
     } else {
       for (std::size_t i = 0; i < slave.nodes.size(); ++i) area[slave.nodes[i]] = slave.node_areas.at(i);
     }

@@ -119,6 +119,36 @@ Gap gap_of(const ContactSlave& s, std::span<const Eigen::Vector2d> y, bool need_
   return gap;
 }
 
+/// The area of a slave node at the state and its gradient over [slave,
+/// segment]: CalculiX's (dialect calculix, node-based slave) is the master
+/// face's at the projection on the current face, A(y, ξ*(y)), so ∇A =
+/// ∂A/∂y + ∂A/∂ξ ∇ξ* (at a convex corner ξ is the end's, fixed); otherwise
+/// the fixed tributary area (gradient 0, `varies` false).
+struct Area {
+  double value = 0;
+  bool varies = false;
+  ContactVector gradient;
+};
+
+Area area_of(const ContactPair& pair, const ContactSlave& s, std::span<const Eigen::Vector2d> y, const Gap& gap) {
+  const ContactPairSetup& setup = pair.setup();
+  Area area;
+  area.value = s.area;
+  if (setup.calculix_face_areas.empty() || !s.pairing.found()) return area;
+  const MasterSegment& segment = pair.segments().segment(s.pairing.segment);
+  const bool corner = s.pairing.at_corner;
+  const double xi = corner ? (s.pairing.xi < 0 ? -1.0 : 1.0) : gap.geometry.projection.xi;
+  const int face = segment.face_at(xi);
+  const FaceArea a = calculix_face_area(setup.calculix_face_areas[static_cast<std::size_t>(face)], y.subspan(1), xi);
+  const int nu = 2 * static_cast<int>(y.size());
+  area.value = a.area;
+  area.varies = true;
+  area.gradient = ContactVector::Zero(nu);
+  for (std::size_t k = 0; k < a.d_nodes.size(); ++k) area.gradient.segment<2>(2 + 2 * static_cast<int>(k)) = a.d_nodes[k];
+  if (!corner) area.gradient += a.d_xi * gap.geometry.xi_gradient;
+  return area;
+}
+
 /// T of r_real = Tᵀ r_v, K_real = Tᵀ K_v T: the local unknowns of compute()
 /// [slave, current segment's virtual nodes, committed segment's virtual nodes
 /// (after a hand-over), multipliers] as linear functions of the slave's dofs
@@ -154,6 +184,7 @@ struct ContactNode::Point {
   ContactStatus status = ContactStatus::Open;
   double gap = 0, xi = 0;
   double normal_force = 0, tangential_force = 0, slip = 0;
+  double area = 0;  ///< the slave node's area at this state [length × thickness]
   int slip_sign = 0;  ///< slip: the sign the friction force is driven to (of λt + cΔs, or of the trial force)
   bool friction_active = false;  ///< with friction: the friction row is the stick or slip one (not the open one)
   Eigen::Vector2d normal{0, 0}, tangent{0, 0};
@@ -196,6 +227,7 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
   need_tangent = need_tangent && out;
 
   Point point;
+  point.area = s.area;
   if (!s.pairing.found()) {  // free slave: multipliers vanish
     if (out)
       for (int k = ns; k < n_local; ++k) {
@@ -211,6 +243,8 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
   point.xi = gap.geometry.projection.xi;
   point.normal = gap.geometry.normal;
   point.tangent = gap.geometry.tangent;
+  const Area area = area_of(pair_, s, y, gap);
+  point.area = area.value;
 
   // ---- normal contact: N and dN (over the local unknowns)
   Vec dN = Vec::Zero(n_local);
@@ -251,8 +285,10 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     if (!hard) {
       const double reach = setup.node_based_slave ? kCalculixNodeSlaveReach : calculix_linear_reach(setup.law, s.area);
       const ContactPressure p = contact_pressure(setup.law, -gap.g, reach);
-      N = s.area * p.p;
-      dN.head(nu) = -s.area * p.dp_dh * gap.gradient;
+      // N = A p(-g): dN = -A p' ∇g + p ∇A (∇A = 0 for a fixed area).
+      N = area.value * p.p;
+      dN.head(nu) = -area.value * p.dp_dh * gap.gradient;
+      if (area.varies) dN.head(nu) += p.p * area.gradient;
     } else {
       const double rho = enforcement.penalty;
       const double base = enforcement.method == Enforcement::Method::Augmented ? s.lambda_bar : 0.0;
@@ -360,7 +396,8 @@ ContactNode::Point ContactNode::compute(const EvaluationState& state, LocalSyste
     double k = 0;
     Vec dk = Vec::Zero(n_local);
     if (f.stick_slope > 0) {
-      k = f.stick_slope * s.area;
+      k = f.stick_slope * area.value;
+      if (area.varies) dk.head(nu) = f.stick_slope * area.gradient;
     } else {
       k = mu * N / f.elastic_slip;
       dk = (mu / f.elastic_slip) * dN;
@@ -432,9 +469,10 @@ ContactNodeValues ContactNode::values(const EvaluationState& state) const {
   v.xi = p.xi;
   v.gap = p.gap;
   v.normal_force = p.normal_force;
-  v.pressure = s.area > 0 ? p.normal_force / s.area : 0.0;  // a CAX node on the axis has no area
+  // Per the area at this state (CalculiX's current one, or the fixed one); a CAX node on the axis has none.
+  v.pressure = p.area > 0 ? p.normal_force / p.area : 0.0;
   v.tangential_force = p.tangential_force;
-  v.shear = s.area > 0 ? p.tangential_force / s.area : 0.0;
+  v.shear = p.area > 0 ? p.tangential_force / p.area : 0.0;
   v.slip = p.slip;
   // History up to the last converged increment plus this increment's slip.
   const bool slipping = p.status == ContactStatus::Slip && pair_.mu() > 0;

@@ -90,6 +90,9 @@ ContactPair::ContactPair(ContactPairSetup setup, const std::vector<Eigen::Vector
     throw std::invalid_argument(setup_.name + ": one tributary area per slave node expected");
   if (setup_.master_face_labels.size() != setup_.master_faces.size())
     throw std::invalid_argument(setup_.name + ": one label per master face expected");
+  if (!setup_.calculix_face_areas.empty() &&
+      (setup_.calculix_face_areas.size() != setup_.master_faces.size() || setup_.smoothing != 0))
+    throw std::invalid_argument(setup_.name + ": CalculiX's node areas need one rule per master face and no smoothing");
   if (!(setup_.search_radius > 0)) throw std::invalid_argument(setup_.name + ": search radius must be > 0");
   if (!(setup_.complementarity_stiffness > 0))
     throw std::invalid_argument(setup_.name + ": complementarity stiffness must be > 0");

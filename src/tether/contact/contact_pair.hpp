@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
+#include "tether/contact/calculix_area.hpp"
 #include "tether/contact/contact_node.hpp"
 #include "tether/contact/contact_search.hpp"
 #include "tether/contact/master_segments.hpp"
@@ -45,6 +46,13 @@ struct ContactPairSetup {
   /// The slave surface is node-based (*SURFACE, TYPE=NODE): its areas are the
   /// ones given per node (default 1), so "pressure" is force / that area.
   bool node_based_slave = false;
+  /// Dialect calculix, node-based slave: per master face, the rule of
+  /// CalculiX's area (calculix_area.hpp). Each slave node's area is then the
+  /// master face's at its projection on the current face (slave_area holds
+  /// it in the reference configuration, for the reach and for messages);
+  /// pressure = normal force / that current area. Empty: the areas are
+  /// slave_area, fixed. Needs unsmoothed faces (smoothing 0).
+  std::vector<MasterFaceArea> calculix_face_areas;
   PressureOverclosure law;               ///< HARD: exact (multipliers); else a soft law
   std::optional<FrictionData> friction;  ///< none or mu = 0: frictionless
   bool small_sliding = false;
