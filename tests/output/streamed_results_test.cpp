@@ -13,6 +13,7 @@
 #include "tether/analysis/static_analysis.hpp"
 #include "tether/io/deck_reader.hpp"
 #include "tether/output/dat_writer.hpp"
+#include "tether/output/output_schedule.hpp"
 #include "tether/output/result_writer.hpp"
 #include "tether/output/vtu_writer.hpp"
 
@@ -200,6 +201,43 @@ TEST(StreamedResults, StaticIncrementsBuildElementFieldsOnlyWhenTheFilesAreDue) 
               });
   EXPECT_EQ(increment, stored.size());
   EXPECT_GE(with_fields, 1);
+}
+
+TEST(StreamedResults, ImplicitDynamicIncrementsBuildElementFieldsOnlyWhenTheFilesAreDue) {
+  // The implicit bar-impact example asks for no result file, so its files
+  // follow the implicit default (every 10th increment and the step's last):
+  // the streamed results carry nodal averages and element means exactly then,
+  // equal to the stored run's, and velocities, accelerations, energies and
+  // the points always.
+  const Model model = read_deck(kSource + "/examples/dyn_bar_impact/bar_impact_implicit.inp");
+  const auto stored = run_writing(model, fresh_directory("streamed_results_dyn_a"), false, VtuEncoding::Base64);
+  std::size_t increment = 0;
+  int with_fields = 0;
+  run_writing(model, fresh_directory("streamed_results_dyn_b"), true, VtuEncoding::Base64,
+              [&](const IncrementResults& r) {
+                ASSERT_LT(increment, stored.size());
+                const IncrementResults& s = stored[increment++];
+                EXPECT_TRUE(s.element_fields);
+                ASSERT_TRUE(r.energy.has_value());
+                const bool due = r.increment % kImplicitDynamicDefaultFrequency == 0 || increment == stored.size();
+                EXPECT_EQ(r.element_fields, due) << "increment " << r.increment;
+                if (due) {
+                  ++with_fields;
+                  EXPECT_EQ(r.nodal_stress, s.nodal_stress);
+                  EXPECT_EQ(r.element_stress.size(), model.elements.size());
+                } else {
+                  EXPECT_TRUE(r.nodal_stress.empty());
+                  EXPECT_TRUE(r.element_stress.empty());
+                }
+                EXPECT_EQ(r.displacement, s.displacement);
+                EXPECT_EQ(r.velocity, s.velocity);
+                EXPECT_EQ(r.acceleration, s.acceleration);
+                EXPECT_EQ(r.energy->strain, s.energy->strain);
+                EXPECT_EQ(r.energy->kinetic, s.energy->kinetic);
+              });
+  EXPECT_EQ(increment, stored.size());
+  EXPECT_GE(with_fields, 2);
+  EXPECT_LT(with_fields, static_cast<int>(stored.size()) / 2);
 }
 
 }  // namespace

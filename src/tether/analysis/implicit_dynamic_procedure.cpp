@@ -12,6 +12,7 @@
 #include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/results_builder.hpp"
 #include "tether/contact/contact_pair.hpp"
+#include "tether/output/output_schedule.hpp"
 #include "tether/core/error.hpp"
 
 namespace tether {
@@ -310,9 +311,17 @@ void ImplicitDynamicProcedure::complete(const IncrementAttempt& attempt, const I
                                attempt.time.dt);
   motion_.static_residual = r_new;
 
+  // As in static steps (StaticProcedure::complete), streamed results build the
+  // element fields (extrapolations, nodal averages) only when the result files
+  // are due; the .dat's element prints read their points from the source.
+  IncrementResults when;
+  stamp(when, attempt, iterations);
+  const bool element_fields =
+      !stream_results_ ||
+      files_due(system_.step().outputs, StepProcedure::ImplicitDynamic, when, attempt.time.ends_step);
   const DiscretizationPoints point_source(disc, s);
-  IncrementResults results =
-      build_results(disc, s, reaction, system_.equations(), stream_results_ ? &point_source : nullptr);
+  IncrementResults results = build_results(disc, s, reaction, system_.equations(),
+                                           stream_results_ ? &point_source : nullptr, element_fields);
   results.velocity.resize(static_cast<std::size_t>(dofs.n_nodes()));
   results.acceleration.resize(results.velocity.size());
   for (int i = 0; i < dofs.n_nodes(); ++i)
