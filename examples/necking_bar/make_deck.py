@@ -11,9 +11,15 @@ y(p) = 0.45 + 0.12924 p + (0.715 - 0.45) (1 - exp(-16.93 p)), written as a
 increments. Output: U of NECK (the outer node of the centre plane), RF totals
 of END.
 
-usage: make_deck.py NR NY [--type CAX8R] [--grading 3] > necking.inp
+usage: make_deck.py NR NY [--type CAX8R] [--grading 3] [--fixed N] > necking.inp
+       make_deck.py --vm318 [--type CAX4R] > necking_vm318.inp
   NR x NY elements; element heights grow geometrically away from the centre
-  plane, the last one GRADING times the first.
+  plane, the last one GRADING times the first. --fixed N: N equal increments
+  (*STATIC, DIRECT) instead of automatic ones.
+  --vm318: the mesh and increments of the ANSYS Verification Manual's test
+  VM318 (the same bar; its input deck is public in PyMAPDL, examples/verif/
+  vm318.dat): 6 elements across, 8 equal ones from the centre plane to L/6 and
+  4 equal ones from L/6 to the end, 50 equal increments.
 """
 import argparse
 import math
@@ -40,9 +46,15 @@ def heights(n, grading):
     return ys
 
 
-def write(nr, ny, element, grading, out):
+def vm318_heights():
+    """VM318's element boundaries: 8 equal heights to L/6, 4 equal ones to L/2."""
+    sixth = HALF_LENGTH / 3
+    return [sixth * j / 8 for j in range(8)] + [sixth + (HALF_LENGTH - sixth) * j / 4 for j in range(5)]
+
+
+def write(nr, ny, element, grading, out, ys=None, fixed=0):
     quadratic = element.startswith("CAX8")
-    ys = heights(ny, grading)
+    ys = heights(ny, grading) if ys is None else ys
     if quadratic:  # mid-side rows
         ys = [v for j in range(ny) for v in (ys[j], 0.5 * (ys[j] + ys[j + 1]))] + [ys[-1]]
     mr, my = (2 * nr, 2 * ny) if quadratic else (nr, ny)
@@ -56,7 +68,9 @@ def write(nr, ny, element, grading, out):
             ids[(i, j)] = len(ids) + 1
             lines.append(f"{ids[(i, j)]}, {outer * i / mr:.12g}, {y:.12g}")
     print("** Necking of a circular bar (Simo 1988; Simo and Armero 1992), half model, axisymmetric.", file=out)
-    print(f"** Written by examples/necking_bar/make_deck.py {nr} {ny} --type {element} --grading {grading:g}.", file=out)
+    how = "--vm318" if fixed and ny == 12 and nr == 6 and grading == 0 else f"{nr} {ny} --grading {grading:g}"
+    print(f"** Written by examples/necking_bar/make_deck.py {how} --type {element}"
+          + (f" --fixed {fixed}." if fixed and how != "--vm318" else "."), file=out)
     print("*HEADING", file=out)
     print(f"Necking bar {nr}x{ny} {element}, J2 saturation hardening, NLGEOM, pulled 7 mm", file=out)
     print("*NODE, NSET=NALL", file=out)
@@ -88,17 +102,27 @@ def write(nr, ny, element, grading, out):
         print(f"{yield_stress(p):.10g}, {p:.10g}", file=out)
     print("*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL\n1.", file=out)
     print("*BOUNDARY\nAXIS, 1, 1\nCENTRE, 2, 2\nEND, 1, 1", file=out)
-    print("*STEP, NLGEOM, INC=1000\n*STATIC\n0.01, 1., 1e-5, 0.02", file=out)
+    if fixed:
+        print(f"*STEP, NLGEOM, INC={fixed}\n*STATIC, DIRECT\n{1 / fixed:.12g}, 1.", file=out)
+    else:
+        print("*STEP, NLGEOM, INC=1000\n*STATIC\n0.01, 1., 1e-5, 0.02", file=out)
     print(f"*BOUNDARY\nEND, 2, 2, {PULL:g}", file=out)
     print("*NODE PRINT, NSET=NECK\nU\n*NODE PRINT, NSET=END, TOTALS=ONLY\nRF\n*END STEP", file=out)
 
 
 if __name__ == "__main__":
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("nr", type=int)
-    ap.add_argument("ny", type=int)
+    ap.add_argument("nr", type=int, nargs="?")
+    ap.add_argument("ny", type=int, nargs="?")
     ap.add_argument("--type", default="CAX8R", choices=["CAX4", "CAX4R", "CAX8", "CAX8R"])
     ap.add_argument("--grading", type=float, default=3.0)
+    ap.add_argument("--fixed", type=int, default=0, help="N equal increments instead of automatic ones")
+    ap.add_argument("--vm318", action="store_true", help="VM318's 6 x 12 mesh and 50 equal increments")
     a = ap.parse_args()
     import sys
-    write(a.nr, a.ny, a.type, a.grading, sys.stdout)
+    if a.vm318:
+        write(6, 12, a.type, 0, sys.stdout, ys=vm318_heights(), fixed=50)
+    elif a.nr is None or a.ny is None:
+        ap.error("NR and NY are needed (or --vm318)")
+    else:
+        write(a.nr, a.ny, a.type, a.grading, sys.stdout, fixed=a.fixed)
