@@ -4,6 +4,7 @@
 
 #include "tether/analysis/implicit_attempt.hpp"
 #include "tether/analysis/results_builder.hpp"
+#include "tether/analysis/start_tangent_predictor.hpp"
 #include "tether/core/error.hpp"
 #include "tether/output/output_schedule.hpp"
 
@@ -30,12 +31,24 @@ IncrementOutcome StaticProcedure::solve_increment(const IncrementAttempt& attemp
   for (;;) {
     if (predict) u.head(nd) += (t.dt / last_dt_) * last_increment_;
     system_.apply_loads(t, u, external_);
-    IncrementProblem problem(system_.assembler(), disc.dofs(), u, u_start, external_, system_.load_contributions(),
-                             IncrementTime{t.step_time, t.total_time, t.dt, system_.step().nlgeom},
-                             system_.symmetric(), &disc.contact_pairs(), &disc.mortar_pairs());
+    const IncrementTime time{t.step_time, t.total_time, t.dt, system_.step().nlgeom};
+    // Without an extrapolation (a step's first increment), the free dofs
+    // follow the prescribed values' change by the start tangent, as CalculiX
+    // and ABAQUS start an increment (docs/theory/newton.md).
+    NewtonOutcome newton;
     int iterations = 0;
-    const NewtonOutcome newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_,
-                                                       force_average_.value, force_average_.n, iterations);
+    try {
+      if (!predict && start_tangent_predictor_applies(system_))
+        apply_start_tangent_predictor(system_, time, u_start, external_, u);
+    } catch (const ModelError& e) {
+      newton.status = NewtonOutcome::Status::ElementFailure;
+      newton.message = e.what();
+    }
+    IncrementProblem problem(system_.assembler(), disc.dofs(), u, u_start, external_, system_.load_contributions(),
+                             time, system_.symmetric(), &disc.contact_pairs(), &disc.mortar_pairs());
+    if (newton.status != NewtonOutcome::Status::ElementFailure)
+      newton = solve_with_acceptance(newton_, problem, system_.contributions(), observer_, force_average_.value,
+                                     force_average_.n, iterations);
     const IncrementOutcome out = outcome_of(newton, iterations);
     if (!out.converged) u = u_start;  // restore the converged state
     // A matrix singular at the predicted start (a body the extrapolation

@@ -14,7 +14,9 @@
 /// Predictor: an attempt starts from the converged state moved on by the
 /// last converged increment of the step scaled to the new increment size
 /// (linear extrapolation of the displacements, as ABAQUS's *STATIC does by
-/// default); the first increment of a step starts from the converged state.
+/// default); the first increment of a step starts from the converged state
+/// moved by the start tangent applied to the prescribed values' change
+/// (start_tangent_predictor.hpp).
 /// The prescribed values then overwrite their dofs. Multipliers are not
 /// extrapolated. See docs/theory/newton.md.
 
