@@ -8,6 +8,7 @@
 
 #include "element_fixtures.hpp"
 #include "tether/elements/continuum_element.hpp"
+#include "tether/elements/face_pressure.hpp"
 #include "tether/materials/j2_plasticity.hpp"
 
 using namespace tether;
@@ -161,4 +162,39 @@ TEST(PlasticElement, SavedHistoryLoadsIntoAFreshElement) {
   c.element->save_state(none);
   EXPECT_TRUE(none.empty());
   EXPECT_TRUE(c.element->linear_in_u(false));
+}
+
+TEST(PlasticElement, PlaneStressPressureTangentFollowsTheThicknessOfTheHistory) {
+  // A follower pressure on each face of a plane-stress element with a
+  // committed plastic history: its thickness stretch F33 comes from the
+  // element's points (their history), and dF33/du is the consistent one:
+  // central differences at random states of further loading (plastic
+  // branch) and unloading (elastic branch).
+  for (auto h : {J2Plasticity::Hardening::Isotropic, J2Plasticity::Hardening::Kinematic})
+    for (const ElementType& type : supported_types()) {
+      if (type.family != Family::PlaneStress) continue;
+      const J2Plasticity m = steel(h);
+      PlasticElement pe(type, m);
+      ContinuumElement& e = *pe.element;
+      const Eigen::VectorXd u1 = stretch(e, 0.05, 1);
+      e.commit({u1, u1, 1, 1, 1, true});
+      std::vector<int> nodes(e.nodes());
+      for (int face = 0; face < n_faces(type.shape); ++face) {
+        FacePressure load(3, type, nodes, distorted_element(type.shape), face, 0.5, m, pe.dofs);
+        load.set_pressure(-0.3);
+        EXPECT_THROW(evaluate_at(load, u1, true), ModelError);  // no element: its thickness is unknown
+        load.set_element(e);
+        for (double scale : {1.3, 0.995})
+          for (unsigned seed : {3u, 4u}) {
+            const Eigen::VectorXd u2 = scale * u1 + random_vector(u1.size(), 2e-4, seed);
+            SCOPED_TRACE(load.describe() + " scale " + std::to_string(scale) + " seed " + std::to_string(seed));
+            const LocalSystem sys = evaluate_at(load, u2, true);
+            const Eigen::MatrixXd fd = fd_tangent(load, u2, true, 1e-8);
+            EXPECT_LT(max_abs(fd - sys.tangent), 1e-6 * max_abs(sys.tangent));
+            // The thickness block (the element's nodes off the face) is not zero.
+            EXPECT_GT(max_abs(sys.tangent.rightCols(sys.tangent.cols() - 2 * n_face_nodes(type.shape))),
+                      1e-3 * max_abs(sys.tangent));
+          }
+      }
+    }
 }

@@ -149,6 +149,7 @@ std::vector<std::unique_ptr<FacePressure>> Discretization::make_pressures(const 
                                                  thickness(load.face.element),
                                                  *materials_[model_.sections[e.section].material], dofs_,
                                                  label_text(model_.instances, e.id)));
+    out.back()->set_element(*elements_[static_cast<std::size_t>(load.face.element)]);  // plane-stress thickness
   }
   return out;
 }

@@ -247,6 +247,36 @@ void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool
   }
 }
 
+double ContinuumElement::thickness_stretch(const EvaluationState& s, const Eigen::Vector2d& xi,
+                                           Eigen::VectorXd& dF33_du) const {
+  if (type_.family != Family::PlaneStress || !s.nlgeom)
+    throw ModelError(describe() + ": the thickness stretch is asked of a plane-stress element under NLGEOM only");
+  Eigen::VectorXd ue(2 * n_nodes_);
+  gather(s.u, ue);
+  ShapeVector N;
+  ShapeGradient dN;
+  shape_functions(type_.shape, xi, N, dN);
+  // Weights of the point values at xi: N(xi)^T E, E the extrapolation matrix.
+  const Eigen::RowVectorXd w = N.head(n_nodes_).transpose() * extrapolation_matrix(type_.shape, rule_);
+  MaterialPoint mp;
+  PointGeometry g;
+  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  double F33 = 0;
+  dF33_du.setZero(2 * n_nodes_);
+  try {
+    for (int q = 0; q < n_points_; ++q) {
+      point_geometry(q, g);
+      material_point(q, g, ue.data(), s, mp, trial);
+      F33 += w(q) * mp.F33;
+      const Eigen::Matrix2d d = thickness_stretch_gradient(mp);  // dF33_q / dH, H_ij = sum_a u_ai G_aj
+      for (int a = 0; a < n_nodes_; ++a) dF33_du.segment<2>(2 * a) += w(q) * (d * g.G.row(a).transpose());
+    }
+  } catch (const ModelError& e) {
+    throw ModelError(describe() + ": " + e.what());
+  }
+  return F33;
+}
+
 double ContinuumElement::strain_energy(const EvaluationState& s) const {
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);

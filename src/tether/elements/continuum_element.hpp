@@ -115,6 +115,16 @@ class ContinuumElement final : public Contribution {
   /// results built before and after commit() are the same, bit for bit.
   void point_values(const EvaluationState& s, std::vector<PointValues>& out) const;
 
+  /// Plane stress under NLGEOM: the thickness stretch F33 = h/h0 at the point
+  /// `xi` (reference coordinates of the element), and dF33/du over dofs()
+  /// (local order) into `dF33_du` (resized). The points are evaluated at s.u
+  /// from the committed records, as evaluate() does (so a plastic point's
+  /// thickness follows its history, a thermal one's its temperature), and
+  /// their F33 carried to `xi` by the polynomial that extrapolates point
+  /// values to the nodes (exact for a uniform state). Throws ModelError naming
+  /// the element when the element is not plane stress, or as evaluate().
+  double thickness_stretch(const EvaluationState& s, const Eigen::Vector2d& xi, Eigen::VectorXd& dF33_du) const;
+
   /// Mass matrix over dofs() [mass] (2n x 2n, local dof order; lumped: diagonal),
   /// from the reference configuration, the material's density and the thickness
   /// (totals over 2 pi for axisymmetry): constant, also under NLGEOM. See

@@ -54,6 +54,8 @@ void FacePressure::prepare_thickness_stretch(const std::vector<int>& element_nod
       dofs_.push_back(dofs.displacement(element_nodes[a], 0));
       dofs_.push_back(dofs.displacement(element_nodes[a], 1));
     }
+  element_order_ = order;
+  element_nodes_ = element_nodes;
   Eigen::Vector3d Nf, dNf;
   ShapeVector N;
   ShapeGradient dN;
@@ -61,6 +63,7 @@ void FacePressure::prepare_thickness_stretch(const std::vector<int>& element_nod
     face_shape_functions(nf, lp.s, Nf, dNf);
     Eigen::Vector2d xi = Eigen::Vector2d::Zero();  // the face point in the element's reference coordinates
     for (int k = 0; k < nf; ++k) xi += Nf(k) * reference_node(type_.shape, local[k]);
+    element_points_.push_back(xi);
     shape_functions(type_.shape, xi, N, dN);
     Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // J(i, j) = dX_i / dxi_j
     for (int a = 0; a < nn; ++a) J += element_coords[a] * dN.row(a);
@@ -72,7 +75,23 @@ void FacePressure::prepare_thickness_stretch(const std::vector<int>& element_nod
   }
 }
 
+void FacePressure::set_element(const ContinuumElement& element) {
+  if (element.nodes() != element_nodes_ && !element_nodes_.empty())
+    throw ModelError(describe() + ": set_element() was given another element (" + element.describe() + ")");
+  element_ = &element;
+}
+
 double FacePressure::thickness_stretch(const EvaluationState& s, std::size_t point, Eigen::VectorXd& dF33_du) const {
+  if (element_ != nullptr && dynamic_cast<const ElasticModel*>(material_) == nullptr) {
+    // The element's points, with their history and temperature; dofs() holds
+    // the element's dofs in the order element_order_.
+    Eigen::VectorXd local;
+    const double F33 = element_->thickness_stretch(s, element_points_[point], local);
+    dF33_du.resize(static_cast<Eigen::Index>(dofs_.size()));
+    for (std::size_t k = 0; k < element_order_.size(); ++k)
+      dF33_du.segment<2>(2 * static_cast<Eigen::Index>(k)) = local.segment<2>(2 * element_order_[k]);
+    return F33;
+  }
   const Eigen::MatrixX2d& g = element_gradients_[point];
   Eigen::Matrix2d H = Eigen::Matrix2d::Zero();  // H(i, j) = dU_i / dX_j
   for (Eigen::Index k = 0; k < g.rows(); ++k)

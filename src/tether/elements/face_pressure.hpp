@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tether/assembly/contribution.hpp"
+#include "tether/elements/continuum_element.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/materials/constitutive_model.hpp"
 #include "tether/model/element_type.hpp"
@@ -24,7 +25,10 @@ namespace tether {
 /// plane stress the thickness h0 F33, F33 the element's thickness stretch at
 /// the face point (from its material with S_33 = 0), so that the load acts on
 /// the current area as on a 3D face; a plane-stress load then depends on all
-/// the element's nodes. Plane strain keeps its thickness. Faces are integrated
+/// the element's nodes. An elastic material's F33 is solved at the face point
+/// from the in-plane deformation; any other material's (plastic: F33 follows
+/// the history; thermal: the temperature) is the element's, interpolated from
+/// its integration points (ContinuumElement::thickness_stretch; set_element()). Plane strain keeps its thickness. Faces are integrated
 /// exactly in the reference length (2 Gauss points on 2-node faces, 3 on
 /// 3-node faces).
 class FacePressure final : public Contribution {
@@ -40,6 +44,12 @@ class FacePressure final : public Contribution {
   FacePressure(int element_label, const ElementType& type, std::vector<int> element_node_indices,
                std::vector<Eigen::Vector2d> element_ref_coords, int face, double thickness,
                const ConstitutiveModel& material, const DofMap& dofs, std::string element_name = "");
+
+  /// The loaded element (must outlive the load; same nodes as given to the
+  /// constructor): plane-stress faces of a material that is not purely
+  /// elastic take their thickness stretch from it under NLGEOM. Without it
+  /// such a face throws ModelError when evaluated under NLGEOM.
+  void set_element(const ContinuumElement& element);
 
   /// Sets the current pressure magnitude p [force/area].
   void set_pressure(double p) { pressure_ = p; }
@@ -79,6 +89,13 @@ class FacePressure final : public Contribution {
   /// Plane stress: element shape gradients dN_a/dX at each face Gauss point
   /// (rows in the order of dofs(), node by node).
   std::vector<Eigen::MatrixX2d> element_gradients_;
+  /// Plane stress: the face Gauss points in the element's reference coordinates.
+  std::vector<Eigen::Vector2d> element_points_;
+  /// Plane stress: element-local node of each dof pair of dofs().
+  std::vector<int> element_order_;
+  /// Plane stress with a material that is not an ElasticModel: the element (set_element()).
+  const ContinuumElement* element_ = nullptr;
+  std::vector<int> element_nodes_;  ///< plane stress: all of the element's nodes (checked by set_element())
   double pressure_ = 0;
 };
 

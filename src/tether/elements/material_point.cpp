@@ -15,6 +15,7 @@ void take_response(const MaterialResponse& r, MaterialPoint& mp) {
   mp.D = r.tangent;
   mp.elastic_energy = r.elastic_energy;
   mp.dissipation = r.dissipation;
+  mp.thickness_sensitivity = r.thickness_sensitivity;
 }
 
 }  // namespace
@@ -51,27 +52,28 @@ void finite_strain_point(const ConstitutiveModel& material, Family family, const
 
 double plane_stress_thickness_stretch(const ConstitutiveModel& material, const Eigen::Matrix2d& H,
                                       Eigen::Matrix2d& dF33_dH) {
-  const auto* elastic = dynamic_cast<const ElasticModel*>(&material);
-  if (elastic == nullptr)
-    throw ModelError("a load on the current area of a plane-stress face needs an elastic material (got " +
-                     material.describe() + ")");
+  if (dynamic_cast<const ElasticModel*>(&material) == nullptr)
+    throw ModelError("a load on the current area of a plane-stress face needs its element for the thickness of " +
+                     material.describe());
   MaterialPoint mp;
   finite_strain_point(material, Family::PlaneStress, H, 0, {}, {}, PointContext{}, mp);
-  // S_33(E) = 0 holds for every in-plane E: dE33 = -(D_3k / D_33) dE_k over
-  // k = 11, 22, 12 (engineering shear), with the uncondensed tangent.
-  Vec6 S;
-  Mat6 D;
-  elastic->finite_strain(mp.C, S, D);
-  const double dE33_dE11 = -D(2, 0) / D(2, 2), dE33_dE22 = -D(2, 1) / D(2, 2), dE33_dG12 = -D(2, 3) / D(2, 2);
+  dF33_dH = thickness_stretch_gradient(mp);
+  return mp.F33;
+}
+
+Eigen::Matrix2d thickness_stretch_gradient(const MaterialPoint& mp) {
+  // S_33(E) = 0 holds for every in-plane E: dE33 = s_k dE_k over k = 11, 22,
+  // 12 (engineering shear), s = -D_3k / D_33 of the uncondensed tangent.
   // E11 = (F_i1 F_i1 - 1)/2, E22 = (F_i2 F_i2 - 1)/2, G12 = F_i1 F_i2, F = I + H;
   // E33 = (F33^2 - 1)/2, so dF33 = dE33 / F33.
+  const Eigen::Vector3d& s = mp.thickness_sensitivity;
   const Eigen::Matrix2d& F = mp.F;
+  Eigen::Matrix2d d;
   for (int i = 0; i < 2; ++i) {
-    dF33_dH(i, 0) = dE33_dE11 * F(i, 0) + dE33_dG12 * F(i, 1);
-    dF33_dH(i, 1) = dE33_dE22 * F(i, 1) + dE33_dG12 * F(i, 0);
+    d(i, 0) = s(0) * F(i, 0) + s(2) * F(i, 1);
+    d(i, 1) = s(1) * F(i, 1) + s(2) * F(i, 0);
   }
-  dF33_dH /= mp.F33;
-  return mp.F33;
+  return d / mp.F33;
 }
 
 double strain_energy_density(const ConstitutiveModel& /*material*/, bool /*nlgeom*/, const MaterialPoint& mp) {

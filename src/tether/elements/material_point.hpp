@@ -24,6 +24,9 @@ struct MaterialPoint {
   Mat6 D = Mat6::Zero();         ///< d stress / d strain; plane stress: condensed (row/column 2 zero)
   double elastic_energy = 0;     ///< elastic strain energy density [energy / reference volume]
   double dissipation = 0;        ///< plastic dissipation of the increment [energy / reference volume]
+  /// Plane stress, finite strain: dE33/dE_k (k = 11, 22, 12) along S33 = 0
+  /// (MaterialResponse::thickness_sensitivity); zero otherwise.
+  Eigen::Vector3d thickness_sensitivity = Eigen::Vector3d::Zero();
 };
 
 /// Small strain from the displacement gradient H (H(i,j) = du_i/dx_j) and, for
@@ -50,10 +53,15 @@ void finite_strain_point(const ConstitutiveModel& material, Family family, const
 /// finite_strain_point), and its derivative dF33/dH (2x2, entry (i,j) =
 /// dF33/dH_ij), from the implicit function S_33(C) = 0. Used by loads that act
 /// on the current area of a plane-stress face. Throws ModelError as
-/// finite_strain_point does, and for a material with history (the thickness
-/// would depend on it).
+/// finite_strain_point does, and for a material that is not an ElasticModel
+/// (a plastic point's thickness depends on its history, a thermal one's on
+/// its temperature: ContinuumElement::thickness_stretch knows both).
 double plane_stress_thickness_stretch(const ConstitutiveModel& material, const Eigen::Matrix2d& H,
                                       Eigen::Matrix2d& dF33_dH);
+
+/// dF33/dH (2x2, entry (i,j) = dF33/dH_ij) of an evaluated plane-stress
+/// finite-strain point, from its F, F33 and thickness_sensitivity.
+Eigen::Matrix2d thickness_stretch_gradient(const MaterialPoint& mp);
 
 /// Elastic strain energy density [energy / reference volume] of an evaluated point.
 double strain_energy_density(const ConstitutiveModel& material, bool nlgeom, const MaterialPoint& mp);

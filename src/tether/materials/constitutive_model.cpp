@@ -56,7 +56,7 @@ void ElasticModel::update_small_strain(Vec6& eps, bool plane_stress, std::span<c
 void ElasticModel::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double>,
                                         std::span<double>, const PointContext&, MaterialResponse& out) const {
   if (plane_stress)
-    plane_stress_finite_strain(*this, C, out.stress, out.tangent);
+    plane_stress_finite_strain(*this, C, out.stress, out.tangent, &out.thickness_sensitivity);
   else
     finite_strain(C, out.stress, out.tangent);
   out.elastic_energy = finite_strain_energy(C);

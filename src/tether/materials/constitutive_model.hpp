@@ -34,6 +34,11 @@ struct MaterialResponse {
   Mat6 tangent = Mat6::Zero();
   double elastic_energy = 0;    ///< elastic strain energy density [energy/volume]
   double dissipation = 0;       ///< plastic dissipation of the increment, >= 0 [energy/volume]
+  /// Plane stress under finite strain: the thickness strain's sensitivity
+  /// dE33/dE_k to the in-plane strains k = 11, 22, 12 (engineering shear)
+  /// along S33 = 0, -D_3k / D_33 of the uncondensed consistent tangent [-];
+  /// zero otherwise.
+  Eigen::Vector3d thickness_sensitivity = Eigen::Vector3d::Zero();
 };
 
 /// Where and when a point is updated: what a user material (UMAT) is told.

@@ -83,6 +83,7 @@ void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
   for (int it = 0; it < 50; ++it) {
     finite_strain_return(C, old_state, new_state, loading, out);
     if (last) {
+      out.thickness_sensitivity = thickness_sensitivity(out.tangent);
       condense_out_of_plane(out.tangent);
       return;
     }

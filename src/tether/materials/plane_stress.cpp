@@ -22,6 +22,8 @@ void condense_out_of_plane(Mat6& D) {
   D.col(2).setZero();
 }
 
+Eigen::Vector3d thickness_sensitivity(const Mat6& D) { return Eigen::Vector3d(D(2, 0), D(2, 1), D(2, 3)) / -D(2, 2); }
+
 void plane_stress_small_strain(const ElasticModel& model, Vec6& eps, Vec6& sigma, Mat6& D) {
   for (int it = 0; it < kMaxIterations; ++it) {
     model.small_strain(eps, sigma, D);
@@ -36,13 +38,15 @@ void plane_stress_small_strain(const ElasticModel& model, Vec6& eps, Vec6& sigma
   throw ModelError("plane stress: the out-of-plane strain iteration did not converge");
 }
 
-void plane_stress_finite_strain(const ElasticModel& model, Eigen::Matrix3d& C, Vec6& S, Mat6& D) {
+void plane_stress_finite_strain(const ElasticModel& model, Eigen::Matrix3d& C, Vec6& S, Mat6& D,
+                                Eigen::Vector3d* sensitivity) {
   // Newton on E33 = (C33 - 1)/2; dS33/dE33 = D(2,2). Steps that would make C33 <= 0 are halved.
   for (int it = 0; it < kMaxIterations; ++it) {
     model.finite_strain(C, S, D);
     if (!(D(2, 2) > 0) || !std::isfinite(S(2))) break;
     double step = -S(2) / D(2, 2);  // in E33
     if (converged(step, 0.5 * (C(2, 2) - 1))) {  // remaining step is round-off
+      if (sensitivity != nullptr) *sensitivity = thickness_sensitivity(D);
       condense_out_of_plane(D);
       return;
     }

@@ -66,6 +66,7 @@ void ThermalModel::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
     m.update_finite_strain(mechanical, plane_stress, old_state, new_state, where, out);
   });
   if (plane_stress) C(2, 2) = mechanical(2, 2) * s2;
+  // thickness_sensitivity is the mechanical one: E33 = s^2 E33_m + (s^2 - 1)/2 and E_m = (E - (s^2 - 1)/2 I) / s^2.
   out.stress *= stretch;   // S = 2 dW/dC with W = s^3 W_m(C / s^2)
   out.tangent /= stretch;  // dS/dE = s D_m dE_m/dE, dE_m/dE = 1 / s^2
   out.elastic_energy *= s3;
