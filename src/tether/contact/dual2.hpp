@@ -12,6 +12,14 @@
 /// variables, no heap allocation; a copy moves only the n and n² entries in
 /// use): the mortar kinematics create millions of temporaries per Newton
 /// iteration, and allocating each one took about half of their time.
+///
+/// A Hessian known to be zero (a variable, a constant times one, sums of
+/// such: "flat") is neither stored, copied nor read: products with a flat
+/// operand drop exactly the products that are zero, and hessian() writes the
+/// zeros only when asked (so it is not const in effect: do not call it on one
+/// object from two threads). Each entry computed is the same expression, in
+/// the same order, as in the dense arithmetic, so the results are the same
+/// bits (but for the sign of an entry that is zero either way).
 
 #include <Eigen/Core>
 #include <cmath>
