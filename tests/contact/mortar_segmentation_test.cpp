@@ -245,3 +245,53 @@ TEST(Dual2, DirectProductAndFirstOrderAreBitForBitThoseBefore) {
   EXPECT_TRUE(a.gradient() == b.gradient());
   EXPECT_FALSE(b.second());
 }
+
+// Variables and their linear combinations have zero Hessians, which Dual2
+// neither stores nor reads (docs/theory/mortar.md "Cost"). The results must
+// be the bits of the dense arithmetic all the same: here every operation
+// with such operands (sums, differences, negation, products with constants
+// and with each other, fused accumulation, the chain rule, copies) against
+// the entries written out by hand in the order Dual2 computes them, and
+// the Hessians asked for are zero where they must be.
+TEST(Dual2, ZeroHessiansAreSkippedWithTheSameBits) {
+  const int n = 4;
+  const double xv = 0.7, yv = -1.3, zv = 2.9;
+  const Dual2 x = Dual2::variable(xv, 0, n), y = Dual2::variable(yv, 2, n), z = Dual2::variable(zv, 3, n);
+  Dual2 copy = x;
+  EXPECT_TRUE(copy.hessian() == Dual2::Hessian::Zero(n, n));
+  // linear combinations stay linear
+  const Dual2 l = Dual2(0.3) * x - y + x.affine(5.0, -0.5) + (-z);
+  EXPECT_EQ(l.value(), ((0.3 * xv - yv) + 5.0) + -zv);
+  EXPECT_TRUE(l.hessian() == Dual2::Hessian::Zero(n, n));
+  EXPECT_EQ(l.gradient()[0], 0.3 * 1.0 + 1.0 * -0.5);
+  // a product of two linear values: H = g_a g_bᵀ + g_b g_aᵀ
+  const Dual2 p = l * y;
+  const Dual2::Hessian& h = p.hessian();
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      EXPECT_EQ(h(i, j), l.gradient()[i] * y.gradient()[j] + y.gradient()[i] * l.gradient()[j]) << i << ", " << j;
+  // a curved value times a linear one: ((H_a b + a·0) + g_a g_bᵀ) + g_b g_aᵀ
+  Dual2 q = p;
+  q *= z;
+  Dual2 acc(0.0);
+  acc.add_product(p, z);
+  const Dual2 direct = p * z;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double t = (h(i, j) * zv + p.gradient()[i] * z.gradient()[j]) + z.gradient()[i] * p.gradient()[j];
+      EXPECT_EQ(q.hessian()(i, j), t) << i << ", " << j;
+      EXPECT_EQ(acc.hessian()(i, j), t) << i << ", " << j;
+      EXPECT_EQ(direct.hessian()(i, j), t) << i << ", " << j;
+    }
+  // accumulating onto a linear value, and the chain rule of a linear value
+  Dual2 onto = x + z;
+  onto.add_product(p, z, true);
+  Dual2 s = sqrt(x + Dual2(2.0));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      EXPECT_EQ(onto.hessian()(i, j), -direct.hessian()(i, j)) << i << ", " << j;
+      const double g_i = i == 0 ? 1.0 : 0.0, g_j = j == 0 ? 1.0 : 0.0;
+      const double v = xv + 2.0, root = std::sqrt(v);
+      EXPECT_EQ(s.hessian()(i, j), (-0.25 / (root * v) * g_i) * g_j) << i << ", " << j;
+    }
+}

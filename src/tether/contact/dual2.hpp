@@ -12,6 +12,14 @@
 /// variables, no heap allocation; a copy moves only the n and n² entries in
 /// use): the mortar kinematics create millions of temporaries per Newton
 /// iteration, and allocating each one took about half of their time.
+///
+/// A Hessian known to be zero (a variable, a constant times one, sums of
+/// such: "flat") is neither stored, copied nor read: products with a flat
+/// operand drop exactly the products that are zero, and hessian() writes the
+/// zeros only when asked (so it is not const in effect: do not call it on one
+/// object from two threads). Each entry computed is the same expression, in
+/// the same order, as in the dense arithmetic, so the results are the same
+/// bits (but for the sign of an entry that is zero either way).
 
 #include <Eigen/Core>
 #include <cmath>
@@ -37,6 +45,16 @@ class Dual2 {
   /// memset was a tenth of the mortar kinematics' instructions.
   Dual2() noexcept {}  // NOLINT(modernize-use-equals-default): see above
   Dual2(double value) : v_(value) {}  // NOLINT: constants mix freely with variables
+  /// Copies the Hessian's entries only when they are not known to be zero.
+  Dual2(const Dual2& b) : v_(b.v_), g_(b.g_), flat_(b.flat_) { copy_hessian(b); }
+  Dual2& operator=(const Dual2& b) {
+    if (this == &b) return *this;
+    v_ = b.v_, g_ = b.g_, flat_ = b.flat_;
+    copy_hessian(b);
+    return *this;
+  }
+  ~Dual2() = default;
+
   /// The independent variable `index` of `n` (n <= kDual2MaxVariables,
   /// else std::length_error), with the given value.
   /// `hessian` false: first derivatives only (every result of such
@@ -48,7 +66,7 @@ class Dual2 {
     Dual2 d(value);
     d.g_ = Gradient::Zero(n);
     d.g_[index] = 1;
-    if (hessian) d.h_ = Hessian::Zero(n, n);
+    if (hessian) d.h_.resize(n, n), d.flat_ = true;  // zero: the entries are set when asked for
     return d;
   }
 
@@ -56,16 +74,44 @@ class Dual2 {
   /// Gradient (empty for a constant).
   [[nodiscard]] const Gradient& gradient() const { return g_; }
   /// Hessian (empty for a constant or a first-order value).
-  [[nodiscard]] const Hessian& hessian() const { return h_; }
+  [[nodiscard]] const Hessian& hessian() const {
+    if (flat_) h_.setZero(), flat_ = false;
+    return h_;
+  }
   [[nodiscard]] bool constant() const { return g_.size() == 0; }
+  /// Carries a Hessian (second-order variables).
+  [[nodiscard]] bool second() const { return h_.size() > 0; }
 
   /// f(this) given f, f' and f'' at the value (chain rule to second order).
   [[nodiscard]] Dual2 chain(double f, double df, double ddf) const {
     Dual2 r(f);
     if (constant()) return r;
     r.g_ = df * g_;
-    if (second()) r.h_ = df * h_ + ddf * g_ * g_.transpose();
+    if (!second()) return r;
+    if (flat_)  // df H + (ddf g) gᵀ with H = 0
+      r.h_.noalias() = (ddf * g_) * g_.transpose();
+    else
+      r.h_ = df * h_ + ddf * g_ * g_.transpose();
     return r;
+  }
+
+  /// The value `value` with slope × this Dual2's derivatives, in one pass:
+  /// the derivatives of c + slope x for any c, e.g. 0.5 (1 - x) with slope
+  /// -0.5 (the same products as the expression, so the same bits).
+  [[nodiscard]] Dual2 affine(double value, double slope) const {
+    Dual2 r;
+    r.set_affine(*this, value, slope);
+    return r;
+  }
+  /// *this = x.affine(value, slope), written in place (x is not *this).
+  void set_affine(const Dual2& x, double value, double slope) {
+    v_ = value;
+    if (x.constant()) {
+      g_.resize(0), h_.resize(0, 0), flat_ = false;
+      return;
+    }
+    g_ = x.g_ * slope;
+    scale_hessian_of(x, slope);
   }
 
   Dual2& operator+=(const Dual2& b) {
@@ -73,10 +119,16 @@ class Dual2 {
     if (b.constant()) return *this;
     if (constant()) {
       g_ = b.g_;
-      h_ = b.h_;
+      flat_ = b.flat_;
+      copy_hessian(b);
     } else {
       g_ += b.g_;
-      if (second()) h_ += b.h_;
+      if (second() && !b.flat_) {
+        if (flat_)
+          h_ = b.h_, flat_ = false;
+        else
+          h_ += b.h_;
+      }
     }
     return *this;
   }
@@ -85,37 +137,39 @@ class Dual2 {
     if (b.constant()) return *this;
     if (constant()) {
       g_ = -b.g_;
-      h_ = -b.h_;
+      scale_hessian_of(b, -1.0);
     } else {
       g_ -= b.g_;
-      if (second()) h_ -= b.h_;
+      if (second() && !b.flat_) {
+        if (flat_)
+          h_ = -b.h_, flat_ = false;
+        else
+          h_ -= b.h_;
+      }
     }
     return *this;
   }
   Dual2& operator*=(const Dual2& b) {
     if (b.constant()) {
       v_ *= b.v_;
-      if (!constant()) g_ *= b.v_, h_ *= b.v_;
+      if (!constant()) {
+        g_ *= b.v_;
+        if (!flat_) h_ *= b.v_;
+      }
       return *this;
     }
-    if (constant()) {
+    if (constant()) {  // b a in one pass (the same products as copying b, then scaling)
       const double a = v_;
-      *this = b;
-      v_ *= a;
-      g_ *= a;
-      h_ *= a;
+      v_ = b.v_ * a;
+      g_ = b.g_ * a;
+      scale_hessian_of(b, a);
       return *this;
     }
     if (second()) {
       // h = h b + a H_b + g_a g_bᵀ + g_b g_aᵀ in one pass, the terms added
       // in that order (the same rounding as four separate passes).
-      const Eigen::Index n = g_.size();
-      for (Eigen::Index j = 0; j < n; ++j) {
-        const double ga_j = g_[j], gb_j = b.g_[j];
-        double* h = h_.col(j).data();
-        const double* hb = b.h_.col(j).data();
-        for (Eigen::Index i = 0; i < n; ++i) h[i] = ((h[i] * b.v_ + v_ * hb[i]) + g_[i] * gb_j) + b.g_[i] * ga_j;
-      }
+      product_hessian(*this, b, h_.data(), [](double& h, double t) { h = t; });
+      flat_ = false;
     }
     g_ = v_ * b.g_ + b.v_ * g_;
     v_ *= b.v_;
@@ -143,46 +197,49 @@ class Dual2 {
       const double t = a.v_ * b.g_[i] + b.v_ * a.g_[i];
       g_[i] = fresh ? s * t : g_[i] + s * t;
     }
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const double ga_j = a.g_[j], gb_j = b.g_[j];
-      double* h = h_.col(j).data();
-      const double* ha = a.h_.col(j).data();
-      const double* hb = b.h_.col(j).data();
-      for (Eigen::Index i = 0; i < n; ++i) {
-        const double t = ((ha[i] * b.v_ + a.v_ * hb[i]) + a.g_[i] * gb_j) + b.g_[i] * ga_j;
-        h[i] = fresh ? s * t : h[i] + s * t;
-      }
-    }
+    // A zero Hessian (fresh or flat) takes s t (0 + s t: the same but for
+    // the sign of a zero).
+    if (fresh || flat_)
+      product_hessian(a, b, h_.data(), [s](double& h, double t) { h = s * t; });
+    else
+      product_hessian(a, b, h_.data(), [s](double& h, double t) { h = h + s * t; });
+    flat_ = false;
   }
 
   [[nodiscard]] Dual2 inverse() const { return chain(1 / v_, -1 / (v_ * v_), 2 / (v_ * v_ * v_)); }
-  friend Dual2 operator-(Dual2 a) {
-    a.v_ = -a.v_;
-    if (!a.constant()) a.g_ = -a.g_, a.h_ = -a.h_;
-    return a;
+  friend Dual2 operator-(const Dual2& a) {
+    Dual2 r(-a.v_);
+    if (a.constant()) return r;
+    r.g_ = -a.g_;
+    r.scale_hessian_of(a, -1.0);
+    return r;
   }
-  /// Carries a Hessian (second-order variables).
-  [[nodiscard]] bool second() const { return h_.size() > 0; }
-  friend Dual2 operator+(Dual2 a, const Dual2& b) { return a += b; }
-  friend Dual2 operator-(Dual2 a, const Dual2& b) { return a -= b; }
+  /// a ± b written into the result in one pass (no copy of a first; the
+  /// same operations as `Dual2(a) += b`, so the same bits).
+  friend Dual2 operator+(const Dual2& a, const Dual2& b) { return sum(a, b, false); }
+  friend Dual2 operator-(const Dual2& a, const Dual2& b) { return sum(a, b, true); }
   /// a b, written into the result directly when both carry Hessians over the
   /// same variables (no copy of a first); the same operations in the same
   /// order as `Dual2(a) *= b`, so the same bits.
   friend Dual2 operator*(const Dual2& a, const Dual2& b) {
     const Eigen::Index n = a.g_.size();
     if (!(a.second() && b.second() && b.g_.size() == n)) {
+      // A constant factor scales the other in one pass (no copy first).
+      const bool scale_b = a.constant() && !b.constant(), scale_a = b.constant() && !a.constant();
+      if (scale_a || scale_b) {
+        const Dual2& d = scale_b ? b : a;
+        const double s = scale_b ? a.v_ : b.v_;
+        Dual2 r(d.v_ * s);
+        r.g_ = d.g_ * s;
+        r.scale_hessian_of(d, s);
+        return r;
+      }
       Dual2 r(a);
       return r *= b;
     }
     Dual2 r(a.v_ * b.v_);
     r.h_.resize(n, n);
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const double ga_j = a.g_[j], gb_j = b.g_[j];
-      double* h = r.h_.col(j).data();
-      const double* ha = a.h_.col(j).data();
-      const double* hb = b.h_.col(j).data();
-      for (Eigen::Index i = 0; i < n; ++i) h[i] = ((ha[i] * b.v_ + a.v_ * hb[i]) + a.g_[i] * gb_j) + b.g_[i] * ga_j;
-    }
+    product_hessian(a, b, r.h_.data(), [](double& h, double t) { h = t; });
     r.g_ = a.v_ * b.g_ + b.v_ * a.g_;
     return r;
   }
@@ -193,9 +250,88 @@ class Dual2 {
   friend bool operator>=(const Dual2& a, const Dual2& b) { return a.v_ >= b.v_; }
 
  private:
+  /// put(h_ij, t_ij) for t = ((H_a b + a H_b) + g_a g_bᵀ) + g_b g_aᵀ (both
+  /// second order over the same n variables), into column-major storage h
+  /// (n × n; h may be a's). A flat Hessian is not read: its products are
+  /// zeros, and the sum without them is the same (but for the sign of a zero).
+  template <class Put>
+  static void product_hessian(const Dual2& a, const Dual2& b, double* h, Put put) {
+    if (!a.flat_ && !b.flat_)
+      product_columns<false, false>(a, b, h, put);
+    else if (!a.flat_)
+      product_columns<false, true>(a, b, h, put);
+    else if (!b.flat_)
+      product_columns<true, false>(a, b, h, put);
+    else
+      product_columns<true, true>(a, b, h, put);
+  }
+  template <bool AFlat, bool BFlat, class Put>
+  static void product_columns(const Dual2& a, const Dual2& b, double* h, Put put) {
+    const Eigen::Index n = a.g_.size();
+    const double av = a.v_, bv = b.v_;
+    const double* ga = a.g_.data();
+    const double* gb = b.g_.data();
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const double ga_j = ga[j], gb_j = gb[j];
+      double* hj = h + j * n;
+      const double* ha = a.h_.data() + j * n;
+      const double* hb = b.h_.data() + j * n;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        double t;
+        if constexpr (!AFlat && !BFlat)
+          t = ((ha[i] * bv + av * hb[i]) + ga[i] * gb_j) + gb[i] * ga_j;
+        else if constexpr (!AFlat)
+          t = (ha[i] * bv + ga[i] * gb_j) + gb[i] * ga_j;
+        else if constexpr (!BFlat)
+          t = (av * hb[i] + ga[i] * gb_j) + gb[i] * ga_j;
+        else
+          t = ga[i] * gb_j + gb[i] * ga_j;
+        put(hj[i], t);
+      }
+    }
+  }
+
+  /// The Hessian of b (its storage skipped when flat).
+  void copy_hessian(const Dual2& b) {
+    if (b.flat_)
+      h_.resize(b.h_.rows(), b.h_.cols());
+    else
+      h_ = b.h_;
+  }
+  /// The Hessian of b times s (s = -1: exactly -H_b).
+  void scale_hessian_of(const Dual2& b, double s) {
+    flat_ = b.flat_;
+    if (b.flat_)
+      h_.resize(b.h_.rows(), b.h_.cols());
+    else
+      h_ = b.h_ * s;
+  }
+
+  static Dual2 sum(const Dual2& a, const Dual2& b, bool subtract) {
+    const bool same = !a.constant() && !b.constant() && a.second() == b.second() && a.g_.size() == b.g_.size() &&
+                      !a.flat_ && !b.flat_;
+    if (!same) {
+      Dual2 r(a);
+      return subtract ? r -= b : r += b;
+    }
+    Dual2 r(subtract ? a.v_ - b.v_ : a.v_ + b.v_);
+    if (subtract) {
+      r.g_ = a.g_ - b.g_;
+      if (a.second()) r.h_ = a.h_ - b.h_;
+    } else {
+      r.g_ = a.g_ + b.g_;
+      if (a.second()) r.h_ = a.h_ + b.h_;
+    }
+    return r;
+  }
+
   double v_ = 0;
   Gradient g_;
-  Hessian h_;
+  /// Column-major n × n (n = the gradient's size) when second order. With
+  /// flat_ the Hessian is zero and the stored entries are not set (hessian()
+  /// sets them): variables and their linear combinations skip the n² work.
+  mutable Hessian h_;
+  mutable bool flat_ = false;
 };
 
 inline Dual2 sqrt(const Dual2& a) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "tether/fem/quadrature.hpp"
 
@@ -64,25 +65,56 @@ Vec2T<T> interpolate(std::span<const Vec2T<T>> x, const std::array<T, 3>& N) {
 }
 
 /// f(ξ) = (p - x(ξ)) × n(ξ) and f'(ξ) on a slave segment with nodal normals.
+/// The derivatives x'(ξ) and n'(ξ) of a 2-node segment do not depend on ξ:
+/// they are computed once per projection (`SlaveRay`), bit for bit the same.
 template <class T>
-void slave_ray(const Vec2T<T>& p, std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals, const T& xi, T& f,
-               T& df) {
-  std::array<T, 3> N, dN;
-  segment_shapes(static_cast<int>(x.size()), xi, N, dN);
-  const Vec2T<T> d = p - interpolate(x, N);
-  const Vec2T<T> n = interpolate(normals, N), dn = interpolate(normals, dN), dx = interpolate(x, dN);
-  f = cross(d, n);
-  df = cross(d, dn) - cross(dx, n);
-}
+struct SlaveRay {
+  const Vec2T<T>& p;
+  std::span<const Vec2T<T>> x, normals;
+  std::optional<Vec2T<T>> dx, dn;  ///< x', n' of a 2-node segment
+  SlaveRay(const Vec2T<T>& p_, std::span<const Vec2T<T>> x_, std::span<const Vec2T<T>> normals_)
+      : p(p_), x(x_), normals(normals_) {
+    if (x.size() != 2) return;
+    std::array<T, 3> N, dN;
+    segment_shapes(2, T(0.0), N, dN);
+    dx = interpolate(x, dN), dn = interpolate(normals, dN);
+  }
+  void operator()(const T& xi, T& f, T& df) const {
+    std::array<T, 3> N, dN;
+    segment_shapes(static_cast<int>(x.size()), xi, N, dN);
+    const Vec2T<T> d = p - interpolate(x, N);
+    const Vec2T<T> n = interpolate(normals, N);
+    f = cross(d, n);
+    if (dx) {
+      df = cross(d, *dn) - cross(*dx, n);
+      return;
+    }
+    const Vec2T<T> dn_xi = interpolate(normals, dN), dx_xi = interpolate(x, dN);
+    df = cross(d, dn_xi) - cross(dx_xi, n);
+  }
+};
 
-/// f(η) = (y(η) - p) × d and f'(η) on a master segment.
+/// f(η) = (y(η) - p) × d and f'(η) on a master segment; f' of a 2-node
+/// segment does not depend on η and is computed once per projection.
 template <class T>
-void master_ray(const Vec2T<T>& p, const Vec2T<T>& d, std::span<const Vec2T<T>> y, const T& eta, T& f, T& df) {
-  std::array<T, 3> N, dN;
-  segment_shapes(static_cast<int>(y.size()), eta, N, dN);
-  f = cross(interpolate(y, N) - p, d);
-  df = cross(interpolate(y, dN), d);
-}
+struct MasterRay {
+  const Vec2T<T>& p;
+  const Vec2T<T>& d;
+  std::span<const Vec2T<T>> y;
+  std::optional<T> df2;  ///< f' of a 2-node segment
+  MasterRay(const Vec2T<T>& p_, const Vec2T<T>& d_, std::span<const Vec2T<T>> y_) : p(p_), d(d_), y(y_) {
+    if (y.size() != 2) return;
+    std::array<T, 3> N, dN;
+    segment_shapes(2, T(0.0), N, dN);
+    df2 = cross(interpolate(y, dN), d);
+  }
+  void operator()(const T& eta, T& f, T& df) const {
+    std::array<T, 3> N, dN;
+    segment_shapes(static_cast<int>(y.size()), eta, N, dN);
+    f = cross(interpolate(y, N) - p, d);
+    df = df2 ? *df2 : cross(interpolate(y, dN), d);
+  }
+};
 
 /// Newton on a scalar equation given by `residual(xi, f, df)` for the
 /// double inputs, then kDerivativeSteps on T. None when it does not converge
@@ -108,7 +140,8 @@ std::optional<T> solve_scalar(double start, double limit, DoubleResidual residua
   for (int k = 0; k < kDerivativeSteps; ++k) {
     T f, df;
     residual_t(t, f, df);
-    t = t - f / df;
+    f /= df;  // t - f / df, in place: the same operations
+    t -= f;
   }
   return t;
 }
@@ -139,6 +172,16 @@ std::optional<std::array<T, 2>> overlap_of(std::span<const Vec2T<T>> x, std::spa
 
 template <class T>
 void segment_shapes(int n_nodes, const T& xi, std::array<T, 3>& N, std::array<T, 3>& dN) {
+  if constexpr (std::is_same_v<T, Dual2>) {
+    if (n_nodes == 2) {  // 0.5 (1 ∓ ξ) written in one pass each (the same bits)
+      const double v = xi.value();
+      N[0].set_affine(xi, 0.5 * (1.0 - v), -0.5);
+      N[1].set_affine(xi, 0.5 * (1.0 + v), 0.5);
+      N[2] = T(0.0);
+      dN[0] = T(-0.5), dN[1] = T(0.5), dN[2] = T(0.0);
+      return;
+    }
+  }
   if (n_nodes == 2) {
     N = {0.5 * (1.0 - xi), 0.5 * (1.0 + xi), T(0.0)};
     dN = {T(-0.5), T(0.5), T(0.0)};
@@ -177,10 +220,7 @@ std::optional<T> project_along_slave_normals(const Vec2T<T>& p, std::span<const 
   const double start = 2 * dot(pd - mid, chord) / dot(chord, chord);
   return solve_scalar<T>(
       std::clamp(start, -2.0, 2.0), 3.0,
-      [&](double xi, double& f, double& df) {
-        slave_ray<double>(pd, xd, nd, xi, f, df);
-      },
-      [&](const T& xi, T& f, T& df) { slave_ray<T>(p, x, normals, xi, f, df); });
+      SlaveRay<double>(pd, xd, nd), SlaveRay<T>(p, x, normals));
 }
 
 template <class T>
@@ -188,8 +228,7 @@ std::optional<T> project_onto_master(const Vec2T<T>& p, const Vec2T<T>& d, std::
   const Vec2T<double> pd = values(p), dd = values(d);
   const std::vector<Vec2T<double>> yd = values(y);
   return solve_scalar<T>(
-      0.0, 3.0, [&](double eta, double& f, double& df) { master_ray<double>(pd, dd, yd, eta, f, df); },
-      [&](const T& eta, T& f, T& df) { master_ray<T>(p, d, y, eta, f, df); });
+      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y));
 }
 
 template <class T>
