@@ -120,7 +120,8 @@ struct MasterRay {
 /// double inputs, then kDerivativeSteps on T. None when it does not converge
 /// or leaves |ξ| <= limit.
 template <class T, class DoubleResidual, class TResidual>
-std::optional<T> solve_scalar(double start, double limit, DoubleResidual residual_double, TResidual residual_t) {
+std::optional<T> solve_scalar(double start, double limit, DoubleResidual residual_double, TResidual residual_t,
+                              int derivative_steps = kDerivativeSteps) {
   double xi = start;
   bool converged = false;
   for (int it = 0; it < kMaxNewton; ++it) {
@@ -137,7 +138,7 @@ std::optional<T> solve_scalar(double start, double limit, DoubleResidual residua
   }
   if (!converged) return std::nullopt;
   T t(xi);
-  for (int k = 0; k < kDerivativeSteps; ++k) {
+  for (int k = 0; k < derivative_steps; ++k) {
     T f, df;
     residual_t(t, f, df);
     f /= df;  // t - f / df, in place: the same operations
@@ -228,7 +229,7 @@ std::optional<T> project_onto_master(const Vec2T<T>& p, const Vec2T<T>& d, std::
   const Vec2T<double> pd = values(p), dd = values(d);
   const std::vector<Vec2T<double>> yd = values(y);
   return solve_scalar<T>(
-      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y));
+      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y), y.size() == 2 ? 1 : kDerivativeSteps);
 }
 
 template <class T>
