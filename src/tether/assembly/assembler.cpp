@@ -381,15 +381,16 @@ void Assembler::hold_linear(const EvaluationState* state) {
   // only ones a relocation inside the block can make mixed.
   block_touchers_.clear();
   block_touchers_valid_ = state != nullptr && nonlinear_in_block_;
-  if (block_touchers_valid_)
-    for (int c = 0; c < n_contrib; ++c) {
-      if (!linear_[static_cast<std::size_t>(c)]) continue;
-      equations_of(*contributions_[static_cast<std::size_t>(c)], eqs);
-      if (std::any_of(eqs.begin(), eqs.end(), [&](int e) {
-            return std::binary_search(reserved_block_.begin(), reserved_block_.end(), e);
-          }))
-        block_touchers_.push_back(c);
-    }
+  if (!block_touchers_valid_) return;
+  std::vector<std::uint8_t> reserved(static_cast<std::size_t>(equations_.n_equations()), 0);
+  for (int e : reserved_block_) reserved[static_cast<std::size_t>(e)] = 1;
+  for (int c = 0; c < n_contrib; ++c) {
+    if (!linear_[static_cast<std::size_t>(c)]) continue;
+    bool touches = false;
+    for (int d : contributions_[static_cast<std::size_t>(c)]->dofs())
+      for (const EquationWeight& w : equations_.weights(d)) touches = touches || reserved[static_cast<std::size_t>(w.equation)];
+    if (touches) block_touchers_.push_back(c);
+  }
 }
 
 void Assembler::add_relocated_entries(std::size_t first_new) {
