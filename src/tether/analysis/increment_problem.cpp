@@ -87,14 +87,13 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, bool with_tangent, It
   return changed;
 }
 
-double IncrementProblem::force_scale_of(const EvaluationState& s, int n_disp) {
+double IncrementProblem::force_scale_of(const EvaluationState& s, int n_disp) const {
   // Force scale q: mean magnitude of the nonzero nodal forces (reactions at
   // prescribed dofs, applied forces and pressure resultants elsewhere).
-  // The buffer is kept between calls (one vector of the displacement dofs
-  // less to allocate per evaluation).
+  // (A buffer kept between calls would stay alive through the bulk's
+  // factorization and add a vector of the displacement dofs to the peak memory.)
   const EquationMap& eqs = assembler_.equations();
-  Eigen::VectorXd& magnitude = magnitude_;
-  magnitude = external_.head(n_disp).cwiseAbs();
+  Eigen::VectorXd magnitude = external_.head(n_disp).cwiseAbs();
   LocalSystem local;
   for (const Contribution* load : loads_) {
     const auto dofs = load->dofs();

@@ -78,10 +78,9 @@ class IncrementProblem final : public NewtonProblem {
   const std::vector<std::unique_ptr<ContactPair>>* contact_;
   const std::vector<std::unique_ptr<MortarPair>>* mortar_;
   /// Force scale q of the state `s` from full_ (see evaluate()); `n_disp`: displacement dofs.
-  [[nodiscard]] double force_scale_of(const EvaluationState& s, int n_disp);
+  [[nodiscard]] double force_scale_of(const EvaluationState& s, int n_disp) const;
 
   Eigen::VectorXd full_;
-  Eigen::VectorXd magnitude_;  ///< force_scale_of()'s buffer, kept between calls
   double search_seconds_ = 0, assembly_seconds_ = 0;  ///< of the last evaluate()
 };
 
