@@ -44,20 +44,25 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, bool with_tangent, It
   const EquationMap& eqs = assembler_.equations();
   const int n_disp = dofs_.n_displacement_dofs();
   eqs.reduce(full_, residual);
-  norms.force_residual = 0;
-  norms.multiplier_residual = 0;
+  // Local accumulators: stored through `norms` at every equation, the
+  // maxima were a chain of stores and loads (the compiler cannot keep them
+  // in registers while `residual` might alias them). Same values: a NaN
+  // makes the force residual NaN, as std::max kept it before.
+  double force = 0, multiplier = 0;
+  bool not_a_number = false;
   for (int e = 0; e < eqs.n_equations(); ++e) {
-    const int d = eqs.dof(e);
     const double a = std::abs(residual[e]);
     if (std::isnan(a)) {
-      norms.force_residual = NAN;
+      not_a_number = true;
       continue;
     }
-    if (dofs_.is_multiplier(d))
-      norms.multiplier_residual = std::max(norms.multiplier_residual, a);
+    if (dofs_.is_multiplier(eqs.dof(e)))
+      multiplier = std::max(multiplier, a);
     else
-      norms.force_residual = std::max(norms.force_residual, a);  // forces (and moments at rotations)
+      force = std::max(force, a);  // forces (and moments at rotations)
   }
+  norms.force_residual = not_a_number ? NAN : force;
+  norms.multiplier_residual = multiplier;
   norms.increment = (u_.head(n_disp) - u_start_.head(n_disp)).cwiseAbs().maxCoeff();
   norms.contact_closed = contact_ || mortar_ ? 0 : -1;
   norms.contact_changes = norms.contact_repaired = norms.contact_held = 0;
@@ -78,8 +83,16 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, bool with_tangent, It
       norms.contact_held += c.held;
     }
 
+  force_scale = force_scale_of(s, n_disp);
+  return changed;
+}
+
+double IncrementProblem::force_scale_of(const EvaluationState& s, int n_disp) const {
   // Force scale q: mean magnitude of the nonzero nodal forces (reactions at
   // prescribed dofs, applied forces and pressure resultants elsewhere).
+  // (A buffer kept between calls would stay alive through the bulk's
+  // factorization and add a vector of the displacement dofs to the peak memory.)
+  const EquationMap& eqs = assembler_.equations();
   Eigen::VectorXd magnitude = external_.head(n_disp).cwiseAbs();
   LocalSystem local;
   for (const Contribution* load : loads_) {
@@ -94,10 +107,10 @@ bool IncrementProblem::evaluate(Eigen::VectorXd& residual, bool with_tangent, It
   const double largest = magnitude.size() ? magnitude.maxCoeff() : 0.0;
   double sum = 0;
   int count = 0;
+  const double floor = 1e-10 * largest;
   for (int d = 0; d < n_disp; ++d)
-    if (magnitude[d] > 1e-10 * largest) sum += magnitude[d], ++count;
-  force_scale = count ? sum / count : 0.0;
-  return changed;
+    if (magnitude[d] > floor) sum += magnitude[d], ++count;
+  return count ? sum / count : 0.0;
 }
 
 void IncrementProblem::apply_correction(const Eigen::VectorXd& correction, double alpha) {

@@ -77,6 +77,9 @@ class IncrementProblem final : public NewtonProblem {
   bool symmetric_;
   const std::vector<std::unique_ptr<ContactPair>>* contact_;
   const std::vector<std::unique_ptr<MortarPair>>* mortar_;
+  /// Force scale q of the state `s` from full_ (see evaluate()); `n_disp`: displacement dofs.
+  [[nodiscard]] double force_scale_of(const EvaluationState& s, int n_disp) const;
+
   Eigen::VectorXd full_;
   double search_seconds_ = 0, assembly_seconds_ = 0;  ///< of the last evaluate()
 };

@@ -28,6 +28,7 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
                                   const IterationListener& listener) {
   NewtonOutcome out;
   Eigen::VectorXd residual, correction;
+  Eigen::VectorXd rhs;  // -residual, kept between iterations (no temporary per solve)
   IterationNorms norms;
   double previous = 0;
   int growths = 0;       // consecutive growths of the force residual that count (below)
@@ -125,7 +126,8 @@ NewtonOutcome NewtonSolver::solve(NewtonProblem& problem, double averaged_force,
         timing_.factorize += seconds_since(t0);
       }
       t0 = std::chrono::steady_clock::now();
-      solver_.solve(-residual, correction);
+      rhs = -residual;
+      solver_.solve(rhs, correction);
       timing_.solve += seconds_since(t0);
     } catch (const SolverError& e) {
       out.status = NewtonOutcome::Status::SingularMatrix;

@@ -359,12 +359,14 @@ void Assembler::hold_linear(const EvaluationState* state) {
     for (int e : eqs)
       if (!std::binary_search(reserved_block_.begin(), reserved_block_.end(), e)) nonlinear_in_block_ = false;
   }
+  const std::size_t first_new = nonlinear_entries_.size();  // all of them after a full assembly
   for (int c = 0; c < n_contrib; ++c)
     if (!linear_[static_cast<std::size_t>(c)])
       for_each_entry(c, [&](int p, Eigen::Index, double) {
         if (!nonlinear_entry_[static_cast<std::size_t>(p)])
           nonlinear_entry_[static_cast<std::size_t>(p)] = true, nonlinear_entries_.push_back(p);
       });
+  if (!state && nonlinear_in_block_ && block_touchers_valid_) return add_relocated_entries(first_new);
   mixed_.assign(contributions_.size(), 0);
   if (!nonlinear_entries_.empty())
     for (int c = 0; c < n_contrib; ++c)
@@ -375,6 +377,44 @@ void Assembler::hold_linear(const EvaluationState* state) {
   if (state) held_ = true, held_dt_ = state->dt;
   nonlinear_moved_ = false;
   mark_direct();
+  // The linear contributions with an equation in the reserved block: the
+  // only ones a relocation inside the block can make mixed.
+  block_touchers_.clear();
+  block_touchers_valid_ = state != nullptr && nonlinear_in_block_;
+  if (!block_touchers_valid_) return;
+  std::vector<std::uint8_t> reserved(static_cast<std::size_t>(equations_.n_equations()), 0);
+  for (int e : reserved_block_) reserved[static_cast<std::size_t>(e)] = 1;
+  for (int c = 0; c < n_contrib; ++c) {
+    if (!linear_[static_cast<std::size_t>(c)]) continue;
+    bool touches = false;
+    for (int d : contributions_[static_cast<std::size_t>(c)]->dofs())
+      for (const EquationWeight& w : equations_.weights(d)) touches = touches || reserved[static_cast<std::size_t>(w.equation)];
+    if (touches) block_touchers_.push_back(c);
+  }
+}
+
+void Assembler::add_relocated_entries(std::size_t first_new) {
+  // mixed_ and direct_ only grow: a contribution becomes mixed when it
+  // touches one of the entries added since first_new, and those lie in the
+  // reserved block, so only block_touchers_ can. The result is that of
+  // recomputing both over every contribution (mark_direct()).
+  ++hold_generation_;
+  nonlinear_moved_ = false;
+  if (first_new == nonlinear_entries_.size()) return;
+  const int* outer = tangent_.outerIndexPtr();
+  for (std::size_t k = first_new; k < nonlinear_entries_.size(); ++k)
+    nonlinear_column_[static_cast<std::size_t>(
+        std::upper_bound(outer, outer + tangent_.cols() + 1, nonlinear_entries_[k]) - outer - 1)] = 1;
+  std::vector<bool> added(static_cast<std::size_t>(tangent_.nonZeros()), false);
+  for (std::size_t k = first_new; k < nonlinear_entries_.size(); ++k)
+    added[static_cast<std::size_t>(nonlinear_entries_[k])] = true;
+  for (int c : block_touchers_) {
+    if (mixed_[static_cast<std::size_t>(c)]) continue;
+    for_each_entry(c, [&](int p, Eigen::Index, double) {
+      if (added[static_cast<std::size_t>(p)]) mixed_[static_cast<std::size_t>(c)] = 1;
+    });
+    if (mixed_[static_cast<std::size_t>(c)]) direct_[static_cast<std::size_t>(c)] = 1;
+  }
 }
 
 void Assembler::mark_direct() {

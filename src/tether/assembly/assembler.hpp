@@ -169,6 +169,13 @@ class Assembler {
   void hold_linear(const EvaluationState* state);
   /// direct_ after hold_linear(): the contributions evaluated at every residual update.
   void mark_direct();
+  /// hold_linear(nullptr) when every nonlinear contribution lies in the
+  /// reserved block: marks mixed (and direct) the linear contributions that
+  /// touch the nonlinear entries from index `first_new` of
+  /// nonlinear_entries_ on, looking at block_touchers_ only, instead of
+  /// every contribution. The same mixed_, direct_ and nonlinear_column_ as
+  /// the full recomputation.
+  void add_relocated_entries(std::size_t first_new);
   /// After a relocation (hold_linear(nullptr)) that kept a valid reference:
   /// removes from r_L(u_ref) the contributions that left L (`before`: direct_
   /// before the relocation), evaluated at u_ref, so that the reference serves on.
@@ -235,6 +242,11 @@ class Assembler {
   std::vector<bool> nonlinear_entry_;   ///< per value index: one of nonlinear_entries_
   bool any_nonlinear_ = false;
   bool nonlinear_in_block_ = false;     ///< every nonlinear contribution's equations are reserved ones
+  /// Linear contributions with an equation in the reserved block, found by
+  /// the last hold_linear() after a full assembly (valid when the nonlinear
+  /// ones lay in the block then).
+  std::vector<int> block_touchers_;
+  bool block_touchers_valid_ = false;
   std::uint64_t revision_ = 0, outer_revision_ = 0;
   LinearReuseStatistics reuse_statistics_;
   // Residual updates (enable_residual_updates()).
