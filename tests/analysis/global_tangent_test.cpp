@@ -26,19 +26,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string necking_bar_deck() {
-  std::ifstream in(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/necking_bar_5x15.inp");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string necking_bar_deck() { return tether::testing::analysis_deck("necking_bar_5x15.inp"); }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "deck has no '" << from << "'";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using tether::testing::replaced;
 
 /// The necking bar with elements `type`, NLGEOM or not, 50 fixed increments of 0.14 mm.
 std::string fixed_increment_bar(const std::string& type, bool nlgeom) {

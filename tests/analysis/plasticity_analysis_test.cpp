@@ -21,19 +21,9 @@ namespace {
 
 constexpr double kYield = 240, kA = 10, kB = 20;
 
-std::string cylinder_deck() {
-  std::ifstream in(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/plastic_cylinder.inp");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string cylinder_deck() { return tether::testing::analysis_deck("plastic_cylinder.inp"); }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "deck has no '" << from << "'";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using tether::testing::replaced;
 
 /// Hill: the pressure at which the plastic zone reaches r = c.
 double hill_pressure(double c) {

@@ -35,12 +35,7 @@ std::string slurp(const fs::path& p) {
 
 std::string base_deck() { return slurp(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/restart_friction.inp"); }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "deck has no '" << from << "'";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using tether::testing::replaced;
 
 /// Variants of the deck: as written (HARD by multipliers, exact stick), with
 /// augmented-Lagrangian contact and penalty (elastic-slip) friction, whose

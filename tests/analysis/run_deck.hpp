@@ -1,6 +1,11 @@
 #pragma once
-// Test helper: runs a deck given as text and records what the analysis reports.
+// Test helper: runs a deck given as text and records what the analysis reports;
+// reads the decks of tests/analysis/decks and edits their text.
 
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -69,6 +74,23 @@ inline Run run_deck_file(const std::string& path, AnalysisOptions options = {}) 
   StaticAnalysis analysis(run.model, run.recorder, options);
   run.summary = analysis.run();
   return run;
+}
+
+/// The text of the deck tests/analysis/decks/`name`.
+inline std::string analysis_deck(const std::string& name) {
+  std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/tests/analysis/decks/" + name);
+  EXPECT_TRUE(in.good()) << "no deck tests/analysis/decks/" << name;
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// `text` with its first `from` replaced by `to`; a test failure when it has none.
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "deck has no '" << from << "'";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
 }
 
 }  // namespace tether::testing

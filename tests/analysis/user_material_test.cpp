@@ -16,19 +16,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string cylinder_deck() {
-  std::ifstream in(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/plastic_cylinder.inp");
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string cylinder_deck() { return tether::testing::analysis_deck("plastic_cylinder.inp"); }
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "deck has no '" << from << "'";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using tether::testing::replaced;
 
 /// The plastic cylinder with linear hardening (H = 1000) and tight equilibrium tolerances.
 std::string hardening_cylinder(const std::string& material) {
