@@ -133,3 +133,34 @@ TEST(Cli, NeckingBarOfVm318WithCax4hMatchesThePublishedNeckDisplacement) {
   EXPECT_NEAR(ur, target, 0.025 * std::abs(target));
   EXPECT_NE(dat.find("for set NECK and time  0.1000000E+01"), std::string::npos);  // reached 7 mm
 }
+
+TEST(Cli, OtherHybridTypesAreRefusedWithTheReason) {
+  // The Lame deck with another hybrid type: refused at its *ELEMENT line
+  // (159) with the reason; FAMILY=PLANE STRESS turning CPE4H into CPS4H is
+  // refused when the element is built.
+  const std::string deck = slurp(fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/lame_cpe4h_nu4999.inp");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"CPE8RH", "pressure of its 6- and 8-node hybrid elements"},
+      {"CPE4RH", "hourglass"},
+      {"CPE3H", "one integration point"},
+      {"CPS4H", "plane-stress elements have no hybrid form"},
+      {"CPS8H", "use CPS8 instead"}};
+  for (const auto& [type, reason] : cases) {
+    std::string text = deck;
+    text.replace(text.find("TYPE=CPE4H"), 10, "TYPE=" + type);
+    const fs::path dir = scratch("hybrid_refused_" + type);
+    write(dir / "refused.inp", text);
+    const auto run = tether("run " + (dir / "refused.inp").string() + " -q -o " + (dir / "out").string());
+    EXPECT_NE(run.code, 0) << type;
+    EXPECT_NE(run.out.find("refused.inp:159: error: unsupported element type " + type), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find(reason), std::string::npos) << run.out;
+  }
+  std::string text = deck;
+  const std::string section = "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL";
+  text.replace(text.find(section), section.size(), section + ", FAMILY=PLANE STRESS");
+  const fs::path dir = scratch("hybrid_refused_family");
+  write(dir / "family.inp", text);
+  const auto run = tether("run " + (dir / "family.inp").string() + " -q -o " + (dir / "out").string());
+  EXPECT_NE(run.code, 0);
+  EXPECT_NE(run.out.find("(CPS4H): plane-stress elements have no hybrid form"), std::string::npos) << run.out;
+}
