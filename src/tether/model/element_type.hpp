@@ -28,14 +28,16 @@ struct ElementType {
   bool reduced;           ///< reduced integration (R suffix)
   /// Hybrid (H suffix): mixed displacement-pressure. tether has the
   /// constant-pressure 4-node CPE4H and CAX4H, formulated as mean dilatation
-  /// (elements/mean_dilatation.hpp); the other ABAQUS hybrid names are listed
-  /// so that unsupported_reason() can refuse them.
+  /// (elements/mean_dilatation.hpp); the other ABAQUS hybrid names (and
+  /// CPS4H, which FAMILY=PLANE STRESS makes of a CPE4H) are listed so that
+  /// unsupported_reason() can refuse them.
   bool hybrid = false;
 };
 
 /// Looks up an ABAQUS element name (case-insensitive). Returns nothing for an
-/// unknown name. Reduced-integration 4-node types are listed (so the reader
-/// can refuse them with a clear reason) but flagged by is_supported().
+/// unknown name. Reduced-integration 4-node types and the hybrid types other
+/// than CPE4H and CAX4H are listed (so the reader can refuse them with a
+/// clear reason) but refused by unsupported_reason().
 std::optional<ElementType> find_element_type(std::string_view name);
 
 /// Nodes of a line-element type the reader accepts only to name faces: the
