@@ -12,14 +12,16 @@ increments. Output: U of NECK (the outer node of the centre plane), RF totals
 of END.
 
 usage: make_deck.py NR NY [--type CAX8R] [--grading 3] [--fixed N] > necking.inp
-       make_deck.py --vm318 [--type CAX4R] > necking_vm318.inp
+       make_deck.py --vm318 [--type CAX4H] [--fixed N] > necking_vm318.inp
   NR x NY elements; element heights grow geometrically away from the centre
   plane, the last one GRADING times the first. --fixed N: N equal increments
   (*STATIC, DIRECT) instead of automatic ones.
   --vm318: the mesh and increments of the ANSYS Verification Manual's test
   VM318 (the same bar; its input deck is public in PyMAPDL, examples/verif/
   vm318.dat): 6 elements across, 8 equal ones from the centre plane to L/6 and
-  4 equal ones from L/6 to the end, 50 equal increments.
+  4 equal ones from L/6 to the end, 50 equal increments (--fixed 0: the
+  automatic increments of the other decks instead). Its element is the
+  linear mixed u-P one: --type CAX4H (constant pressure, mean dilatation).
 """
 import argparse
 import math
@@ -52,7 +54,7 @@ def vm318_heights():
     return [sixth * j / 8 for j in range(8)] + [sixth + (HALF_LENGTH - sixth) * j / 4 for j in range(5)]
 
 
-def write(nr, ny, element, grading, out, ys=None, fixed=0):
+def write(nr, ny, element, grading, out, ys=None, fixed=0, vm318=False):
     quadratic = element.startswith("CAX8")
     ys = heights(ny, grading) if ys is None else ys
     if quadratic:  # mid-side rows
@@ -68,9 +70,9 @@ def write(nr, ny, element, grading, out, ys=None, fixed=0):
             ids[(i, j)] = len(ids) + 1
             lines.append(f"{ids[(i, j)]}, {outer * i / mr:.12g}, {y:.12g}")
     print("** Necking of a circular bar (Simo 1988; Simo and Armero 1992), half model, axisymmetric.", file=out)
-    how = "--vm318" if fixed and ny == 12 and nr == 6 and grading == 0 else f"{nr} {ny} --grading {grading:g}"
-    print(f"** Written by examples/necking_bar/make_deck.py {how} --type {element}"
-          + (f" --fixed {fixed}." if fixed and how != "--vm318" else "."), file=out)
+    how = "--vm318" if vm318 else f"{nr} {ny} --grading {grading:g}"
+    fixed_text = "" if (vm318 and fixed == 50) or (not vm318 and not fixed) else f" --fixed {fixed}"
+    print(f"** Written by examples/necking_bar/make_deck.py {how} --type {element}{fixed_text}.", file=out)
     print("*HEADING", file=out)
     print(f"Necking bar {nr}x{ny} {element}, J2 saturation hardening, NLGEOM, pulled 7 mm", file=out)
     print("*NODE, NSET=NALL", file=out)
@@ -114,15 +116,16 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("nr", type=int, nargs="?")
     ap.add_argument("ny", type=int, nargs="?")
-    ap.add_argument("--type", default="CAX8R", choices=["CAX4", "CAX4R", "CAX8", "CAX8R"])
+    ap.add_argument("--type", default="CAX8R", choices=["CAX4", "CAX4H", "CAX4R", "CAX8", "CAX8R"])
     ap.add_argument("--grading", type=float, default=3.0)
-    ap.add_argument("--fixed", type=int, default=0, help="N equal increments instead of automatic ones")
+    ap.add_argument("--fixed", type=int, default=None,
+                    help="N equal increments instead of automatic ones (0: automatic; --vm318: 50 unless given)")
     ap.add_argument("--vm318", action="store_true", help="VM318's 6 x 12 mesh and 50 equal increments")
     a = ap.parse_args()
     import sys
     if a.vm318:
-        write(6, 12, a.type, 0, sys.stdout, ys=vm318_heights(), fixed=50)
+        write(6, 12, a.type, 0, sys.stdout, ys=vm318_heights(), fixed=50 if a.fixed is None else a.fixed, vm318=True)
     elif a.nr is None or a.ny is None:
         ap.error("NR and NY are needed (or --vm318)")
     else:
-        write(a.nr, a.ny, a.type, a.grading, sys.stdout, fixed=a.fixed)
+        write(a.nr, a.ny, a.type, a.grading, sys.stdout, fixed=a.fixed or 0)

@@ -70,7 +70,7 @@ TEST(ContinuumElement, ResidualIsEnergyGradientAndTangentMatchesFiniteDifference
           }
           ++checked;
         }
-  EXPECT_EQ(checked, 15 * 2 * 2 * 3);
+  EXPECT_EQ(checked, 17 * 2 * 2 * 3);
 }
 
 TEST(ContinuumElement, DeclaredSymmetryAndLinearityHoldOnTheTangent) {

@@ -17,11 +17,12 @@
 
 namespace tether::test {
 
-/// All element types tether supports (reduced 4-node types are refused).
+/// All element types tether supports (reduced 4-node types are refused; the
+/// hybrid ones are CPE4H and CAX4H): 17.
 inline std::vector<ElementType> supported_types() {
   std::vector<ElementType> out;
   for (const char* family : {"CPE", "CPS", "CAX"})
-    for (const char* shape : {"3", "4", "6", "8", "8R"}) {
+    for (const char* shape : {"3", "4", "4H", "6", "8", "8R"}) {
       const auto t = find_element_type(std::string(family) + shape);
       if (t && unsupported_reason(*t).empty()) out.push_back(*t);
     }

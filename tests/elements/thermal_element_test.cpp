@@ -52,7 +52,7 @@ TEST(ThermalElement, TangentMatchesFiniteDifferencesUnderATemperatureField) {
       EXPECT_GT(max_abs(at_rest.residual), 0.0) << e.describe();
       ++checked;
     }
-  EXPECT_EQ(checked, 15 * 2);
+  EXPECT_EQ(checked, 17 * 2);
 }
 
 TEST(ThermalElement, UniformFieldExpandsAPlaneStressElementFreely) {

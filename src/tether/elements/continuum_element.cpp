@@ -153,7 +153,7 @@ PointContext ContinuumElement::context(const EvaluationState& s, int q, const Po
 }
 
 void ContinuumElement::material_point(int q, const PointGeometry& g, const double* ue, const EvaluationState& s,
-                                      MaterialPoint& mp, std::span<double> trial) const {
+                                      MaterialPoint& mp, std::span<double> trial, double mean) const {
   const int n = n_nodes_;
   Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
   double ur = 0;
@@ -165,6 +165,7 @@ void ContinuumElement::material_point(int q, const PointGeometry& g, const doubl
     ur += ue[2 * a] * g.N(a);
   }
   const double hoop = ur / g.R;
+  if (type_.hybrid) return hybrid_point(q, g, H, hoop, mean, s, mp, trial);
   if (s.nlgeom)
     finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
   else
@@ -236,6 +237,8 @@ void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool
   Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2 * kMaxElementNodes, 1> ue(2 * n_nodes_);
   gather(s.u, ue);
   try {
+    if (type_.hybrid && s.nlgeom) return evaluate_hybrid_finite(ue.data(), s, out, need_tangent);
+    if (type_.hybrid) return evaluate_hybrid_small(ue.data(), s, out, need_tangent);
     switch (type_.shape) {
       case Shape::Tri3: evaluate_kernel<3>(ue.data(), s, out, need_tangent); break;
       case Shape::Quad4: evaluate_kernel<4>(ue.data(), s, out, need_tangent); break;
@@ -287,13 +290,14 @@ double ContinuumElement::strain_energy(const EvaluationState& s) const {
   std::vector<double> trial(static_cast<std::size_t>(n_state_));
   double energy = 0;
   try {
+    const double mean = element_mean(ue.data(), s.nlgeom);
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
       if (from_records) {
         energy += history_[static_cast<std::size_t>(q * record + kRecordEnergy)] * g.dV;
         continue;
       }
-      material_point(q, g, ue.data(), s, mp, trial);
+      material_point(q, g, ue.data(), s, mp, trial, mean);
       energy += strain_energy_density(*material_, s.nlgeom, mp) * g.dV;
     }
   } catch (const ModelError& e) {
@@ -313,11 +317,12 @@ double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
   std::vector<double> trial(static_cast<std::size_t>(n_state_));
   double total = 0;
   try {
+    const double mean = element_mean(ue.data(), s.nlgeom);
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
       double density = history_[static_cast<std::size_t>(q * record + kRecordDissipation)];
       if (!from_records) {
-        material_point(q, g, ue.data(), s, mp, trial);
+        material_point(q, g, ue.data(), s, mp, trial, mean);
         density += mp.dissipation;
       }
       total += density * g.dV;
@@ -338,9 +343,10 @@ double ContinuumElement::plastic_dissipation_increment(const EvaluationState& s)
   std::vector<double> trial(static_cast<std::size_t>(n_state_));
   double total = 0;
   try {
+    const double mean = element_mean(ue.data(), s.nlgeom);
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
-      material_point(q, g, ue.data(), s, mp, trial);
+      material_point(q, g, ue.data(), s, mp, trial, mean);
       total += mp.dissipation * g.dV;
     }
   } catch (const ModelError& e) {
@@ -360,9 +366,10 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
   std::vector<double> trial(static_cast<std::size_t>(n_state_));
   const auto* thermal = dynamic_cast<const ThermalModel*>(material_);  // THE (none: zero)
   try {
+    const double mean = element_mean(ue.data(), s.nlgeom);
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
-      material_point(q, g, ue.data(), s, mp, trial);
+      material_point(q, g, ue.data(), s, mp, trial, mean);
       std::span<const double> state = trial;
       if (from_records) {  // the committed values of this very state (equal to mp's up to round-off)
         const double* r = history_.data() + static_cast<std::ptrdiff_t>(q * record);
@@ -399,10 +406,11 @@ void ContinuumElement::commit(const EvaluationState& s) {
   MaterialPoint mp;
   PointGeometry g;
   try {
+    const double mean = element_mean(ue.data(), s.nlgeom);
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
       double* r = next.data() + static_cast<std::ptrdiff_t>(q * record);
-      material_point(q, g, ue.data(), s, mp, std::span<double>(r + kRecordState, n_state_));
+      material_point(q, g, ue.data(), s, mp, std::span<double>(r + kRecordState, n_state_), mean);
       Eigen::Map<Vec6>(r + kRecordStress) = mp.stress;
       Eigen::Map<Vec6>(r + kRecordStrain) = mp.strain;
       r[kRecordEnergy] = mp.elastic_energy;

@@ -161,8 +161,21 @@ class ContinuumElement final : public Contribution {
   void gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const;
   /// Evaluates point q (geometry g) from local displacements ue and its
   /// committed history; the trial state goes to `trial` (n_state_ values).
+  /// `mean`: for a hybrid element the element_mean() of ue (ignored otherwise).
   void material_point(int q, const PointGeometry& g, const double* ue, const EvaluationState& s, MaterialPoint& mp,
-                      std::span<double> trial) const;
+                      std::span<double> trial, double mean = 0) const;
+  /// Hybrid (mean-dilatation) element: theta = v/V under NLGEOM, else the
+  /// mean volumetric strain e_bar, at the local displacements ue; 0 for any
+  /// other element. See continuum_element_hybrid.cpp.
+  [[nodiscard]] double element_mean(const double* ue, bool nlgeom) const;
+  /// Residual and tangent of a hybrid element, finite strain (F-bar with the
+  /// element's theta) and small strain (B-bar).
+  void evaluate_hybrid_finite(const double* ue, const EvaluationState& s, LocalSystem& out, bool need_tangent) const;
+  /// material_point() of a hybrid element: the material sees F_bar =
+  /// (theta/J)^(1/3) F, or eps_bar, with theta or e_bar = `mean`.
+  void hybrid_point(int q, const PointGeometry& g, const Eigen::Matrix2d& H, double hoop, double mean,
+                    const EvaluationState& s, MaterialPoint& mp, std::span<double> trial) const;
+  void evaluate_hybrid_small(const double* ue, const EvaluationState& s, LocalSystem& out, bool need_tangent) const;
   /// What the material is told about point q (geometry g) in state s.
   [[nodiscard]] PointContext context(const EvaluationState& s, int q, const PointGeometry& g) const;
   /// Point q's material state in the committed records (empty without history).

@@ -23,8 +23,15 @@ void take_response(const MaterialResponse& r, MaterialPoint& mp) {
 void small_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
                         double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
                         const PointContext& where, MaterialPoint& mp) {
-  mp.strain << H(0, 0), H(1, 1), family == Family::Axisymmetric ? hoop_strain : 0.0,
-      H(0, 1) + H(1, 0), 0, 0;
+  Vec6 strain;
+  strain << H(0, 0), H(1, 1), family == Family::Axisymmetric ? hoop_strain : 0.0, H(0, 1) + H(1, 0), 0, 0;
+  small_strain_point_at(material, family, strain, old_state, new_state, where, mp);
+}
+
+void small_strain_point_at(const ConstitutiveModel& material, Family family, const Vec6& strain,
+                           std::span<const double> old_state, std::span<double> new_state,
+                           const PointContext& where, MaterialPoint& mp) {
+  mp.strain = strain;
   MaterialResponse r;
   material.update_small_strain(mp.strain, family == Family::PlaneStress, old_state, new_state, where, r);
   take_response(r, mp);
@@ -33,9 +40,16 @@ void small_strain_point(const ConstitutiveModel& material, Family family, const 
 void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
                          double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
                          const PointContext& where, MaterialPoint& mp) {
-  mp.F = Eigen::Matrix2d::Identity() + H;
+  finite_strain_point_at(material, family, Eigen::Matrix2d::Identity() + H,
+                         family == Family::Axisymmetric ? 1 + hoop_strain : 1.0, old_state, new_state, where, mp);
+}
+
+void finite_strain_point_at(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& F, double F33,
+                            std::span<const double> old_state, std::span<double> new_state,
+                            const PointContext& where, MaterialPoint& mp) {
+  mp.F = F;
   const double det2 = mp.F.determinant();
-  mp.F33 = family == Family::Axisymmetric ? 1 + hoop_strain : 1.0;
+  mp.F33 = family == Family::PlaneStress ? 1.0 : F33;
   if (!(det2 > 0) || !(mp.F33 > 0))
     throw ModelError(fmt::format("the deformation gradient is not invertible (in-plane det F = {:.3g}, "
                                  "F33 = {:.3g}): the element is inverted",

@@ -39,6 +39,14 @@ void small_strain_point(const ConstitutiveModel& material, Family family, const 
                         double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
                         const PointContext& where, MaterialPoint& mp);
 
+/// Small strain from the strain itself (11, 22, 33, engineering 12, then two
+/// zeros): the point of a mean-dilatation element, whose volumetric part is
+/// the element mean (plane strain then has eps_33 != 0). Histories and
+/// errors as small_strain_point.
+void small_strain_point_at(const ConstitutiveModel& material, Family family, const Vec6& strain,
+                           std::span<const double> old_state, std::span<double> new_state,
+                           const PointContext& where, MaterialPoint& mp);
+
 /// Finite strain (total Lagrangian) from H = dU/dX and, for axisymmetry,
 /// U_r / R (hoop stretch F33 = 1 + U_r/R); histories as in
 /// small_strain_point. Plane strain has F33 = 1; plane stress solves F33 so
@@ -47,6 +55,14 @@ void small_strain_point(const ConstitutiveModel& material, Family family, const 
 void finite_strain_point(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& H,
                          double hoop_strain, std::span<const double> old_state, std::span<double> new_state,
                          const PointContext& where, MaterialPoint& mp);
+
+/// Finite strain from the deformation gradient itself: in-plane F and the
+/// out-of-plane stretch F33 (used as given for plane strain too: a
+/// mean-dilatation element scales F33 = 1 by (theta/J)^(1/3); ignored for
+/// plane stress, which solves it). Histories and errors as finite_strain_point.
+void finite_strain_point_at(const ConstitutiveModel& material, Family family, const Eigen::Matrix2d& F, double F33,
+                            std::span<const double> old_state, std::span<double> new_state,
+                            const PointContext& where, MaterialPoint& mp);
 
 /// Plane stress under finite strain: the thickness stretch F33 = h/h0 at the
 /// in-plane displacement gradient H = dU/dX (S_33 = 0 solved as in

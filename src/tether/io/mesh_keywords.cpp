@@ -144,11 +144,7 @@ void handle_element(DeckState& state, const KeywordBlock& block, const Parameter
   if (const int n = line_element_nodes(type_name); n > 0) return read_line_elements(state, block, params, n);
   const auto type = find_element_type(type_name);
   if (!type)
-    throw InputError(block.where, "unsupported element type " + type_name +
-                                      ": tether has 2D continuum elements only; expected one of CPE3, CPE4, "
-                                      "CPE6, CPE8, CPE8R, CPS3, CPS4, CPS6, CPS8, CPS8R, CAX3, CAX4, CAX6, "
-                                      "CAX8, CAX8R (or the line elements T2D2, T2D3, T3D2, T3D3, which only name "
-                                      "faces)");
+    throw InputError(block.where, "unsupported element type " + type_name + ": " + unknown_element_reason(type_name));
   if (const std::string reason = unsupported_reason(*type); !reason.empty())
     throw InputError(block.where, "unsupported element type " + type_name + ": " + reason);
 

@@ -26,11 +26,18 @@ struct ElementType {
   Shape shape;
   int n_nodes;
   bool reduced;           ///< reduced integration (R suffix)
+  /// Hybrid (H suffix): mixed displacement-pressure. tether has the
+  /// constant-pressure 4-node CPE4H and CAX4H, formulated as mean dilatation
+  /// (elements/mean_dilatation.hpp); the other ABAQUS hybrid names (and
+  /// CPS4H, which FAMILY=PLANE STRESS makes of a CPE4H) are listed so that
+  /// unsupported_reason() can refuse them.
+  bool hybrid = false;
 };
 
 /// Looks up an ABAQUS element name (case-insensitive). Returns nothing for an
-/// unknown name. Reduced-integration 4-node types are listed (so the reader
-/// can refuse them with a clear reason) but flagged by is_supported().
+/// unknown name. Reduced-integration 4-node types and the hybrid types other
+/// than CPE4H and CAX4H are listed (so the reader can refuse them with a
+/// clear reason) but refused by unsupported_reason().
 std::optional<ElementType> find_element_type(std::string_view name);
 
 /// Nodes of a line-element type the reader accepts only to name faces: the
@@ -40,6 +47,10 @@ int line_element_nodes(std::string_view name);
 
 /// Empty when the type is supported, else the reason it is refused.
 std::string unsupported_reason(const ElementType& type);
+
+/// Why find_element_type() knows no type `name`, with the list of the
+/// continuum types tether accepts: the text of the deck reader's error.
+std::string unknown_element_reason(std::string_view name);
 
 /// Number of corner nodes (3 or 4).
 int n_corners(Shape shape);
