@@ -114,6 +114,14 @@ TEST(DeckErrors, UnsupportedAndUnknownElementTypes) {
   expect_deck_error_at(replaced(kDeck, "TYPE=CPE4", "TYPE=B21"), "B21", {"unsupported element type B21", "T3D2"});
 }
 
+TEST(DeckErrors, FamilyThatMakesARefusedHybridType) {
+  // FAMILY=PLANE STRESS would turn a CPE4H into a CPS4H, which ABAQUS does not have.
+  const std::string hybrid = replaced(kDeck, "TYPE=CPE4", "TYPE=CPE4H");
+  expect_deck_error_at(replaced(hybrid, "*SOLID SECTION, ELSET=PLATE, MATERIAL=STEEL",
+                                "*SOLID SECTION, ELSET=PLATE, MATERIAL=STEEL, FAMILY=PLANE STRESS"),
+                       "*SOLID SECTION", {"FAMILY=PLANE STRESS makes element 1 (CPE4H) a CPS4H", "hybrid"});
+}
+
 TEST(DeckErrors, InvertedTriangleAndFoldedQuad) {
   expect_deck_error_at(replaced(kDeck, "1, 1, 2, 5, 4", "1, 1, 4, 5, 2"), "1, 1, 4, 5, 2",
                        {"element 1 (CPE4) is inverted", "counter-clockwise"});

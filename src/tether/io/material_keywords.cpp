@@ -97,12 +97,19 @@ void handle_density(DeckState& state, const KeywordBlock& block, const Parameter
 namespace {
 
 /// FAMILY= of *SOLID SECTION: the set's elements become `family` ("PLANE STRAIN", ...) with the same shape and
-/// integration, e.g. CPS8R -> CPE8R.
-void change_family(Model& m, const std::string& elset, const std::string& family) {
+/// integration, e.g. CPS8R -> CPE8R. A type the new family refuses (a
+/// hybrid element made plane stress: ABAQUS has no CPS4H) is an error at `where`.
+void change_family(Model& m, const std::string& elset, const std::string& family, const SourceLocation& where) {
   const std::string prefix = family == "PLANE STRAIN" ? "CPE" : family == "PLANE STRESS" ? "CPS" : "CAX";
   for (int e : m.element_sets.at(elset)) {
     Element& el = m.elements[static_cast<std::size_t>(e)];
-    el.type = *find_element_type(prefix + std::string(el.type.name.substr(3)));
+    const std::string name = prefix + std::string(el.type.name.substr(3));
+    const auto type = find_element_type(name);
+    if (!type) throw InputError(where, "FAMILY=" + family + " makes element type " + name + ", which tether does not know");
+    if (const std::string why = unsupported_reason(*type); !why.empty())
+      throw InputError(where, "FAMILY=" + family + " makes element " + std::to_string(el.id) + " (" +
+                                  std::string(el.type.name) + ") a " + name + ": " + why);
+    el.type = *type;
   }
 }
 
@@ -124,7 +131,7 @@ void handle_solid_section(DeckState& state, const KeywordBlock& block, const Par
     if (!(s.thickness > 0))
       throw InputError(block.data[0].where(), "thickness " + f[0] + ": expected a thickness > 0");
   }
-  if (params.given("FAMILY")) change_family(state.model, s.elset, params.name("FAMILY"));
+  if (params.given("FAMILY")) change_family(state.model, s.elset, params.name("FAMILY"), block.where);
   state.model.sections.push_back(std::move(s));
   state.section_material.push_back(params.name("MATERIAL"));
 }
