@@ -165,20 +165,24 @@ bool CondensedSolver::factorize_interface(Eigen::MatrixXd s, const SparseMatrix&
     return rcond > kSingularRcond;
   };
   dual_active_ = false;
+  dual_scaled_ = false;
   if (!dual_nodes_.empty()) {
     const DualElimination e = interface_elimination(a);
     if (e.closed + e.diagonal > 0) {
+      // Equilibrated in place (no copy of the |I|² matrix): should the
+      // elimination fail, the plain factorization takes D s D too.
       dual_scale_ = equilibration(s);
-      Eigen::MatrixXd scaled = s;
-      scaled.array().colwise() *= dual_scale_.array();
-      scaled.array().rowwise() *= dual_scale_.transpose().array();
-      const double rcond = dual_.factorize(std::move(scaled), e, symmetric);
+      s.array().colwise() *= dual_scale_.array();
+      s.array().rowwise() *= dual_scale_.transpose().array();
+      dual_scaled_ = true;
+      const double rcond = dual_.factorize(std::move(s), e, symmetric);
       if (record(rcond, dual_.condensed_size(), dual_.cholesky())) {
         dual_active_ = true;
         ++statistics_.dual_eliminations;
         statistics_.dual_closed = e.closed;
         return true;
       }
+      s = dual_.release_matrix();
     }
   }
   const Eigen::Index m = s.rows();
@@ -207,11 +211,11 @@ void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   Eigen::VectorXd y;
   if (dual_active_) {
     dual_.solve(dual_scale_.asDiagonal() * reduced, y);
-    y = dual_scale_.asDiagonal() * y;
   } else {
-    y = std::move(reduced);
+    y = dual_scaled_ ? Eigen::VectorXd(dual_scale_.asDiagonal() * reduced) : std::move(reduced);
     interface_factor_.solve(y);
   }
+  if (dual_scaled_) y = dual_scale_.asDiagonal() * y;
   if (bulk_negligible)
     bulk_->expand_interface(y, x);
   else

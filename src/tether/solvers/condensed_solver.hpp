@@ -139,6 +139,7 @@ class CondensedSolver final : public LinearSolver {
   DenseDualCondensation dual_;
   Eigen::VectorXd dual_scale_;  ///< D of D (A_II + C) D for dual_
   bool dual_active_ = false;    ///< the last factorize() went through dual_
+  bool dual_scaled_ = false;    ///< the last dense system was D (A_II + C) D (dual_scale_), whichever factorized it
   CondensationStatistics statistics_;
 };
 

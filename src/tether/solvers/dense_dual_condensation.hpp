@@ -40,6 +40,10 @@ class DenseDualCondensation {
   /// singular (reciprocal condition below 1e-14) or S_K is exactly; the
   /// caller then solves s otherwise.
   double factorize(Eigen::MatrixXd s, const DualElimination& elimination, bool symmetric);
+  /// S as given to the last factorize() (unchanged by it), moved out: for
+  /// the caller's other factorization when this one failed. solve() may not
+  /// be called afterwards.
+  [[nodiscard]] Eigen::MatrixXd release_matrix() { return std::move(s_); }
   /// x = S⁻¹ b (condensed solve, then one step of iterative refinement on S).
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// |K|: the size of the dense system factorized.

@@ -68,16 +68,26 @@ double DenseFactor::factorize(Eigen::MatrixXd a, bool try_cholesky, bool scale) 
   int info = 0;
   double rcond = 0;
   if (try_cholesky) {
-    factors_.triangularView<Eigen::StrictlyUpper>() = factors_.transpose();  // the lower triangle, mirrored
-    const double norm1 = factors_.cwiseAbs().colwise().sum().maxCoeff();
-    Eigen::MatrixXd lower = factors_;
-    dpotrf_("L", &size, lower.data(), &size, &info, 1);
+    // The 1-norm of the symmetric matrix from its lower triangle; dpotrf
+    // overwrites that triangle and the diagonal, which are restored from
+    // the (untouched) upper triangle and a copy of the diagonal should it fail.
+    Eigen::VectorXd column_sums = Eigen::VectorXd::Zero(size);
+    for (Eigen::Index j = 0; j < size; ++j)
+      for (Eigen::Index i = j; i < size; ++i) {
+        const double v = std::abs(factors_(i, j));
+        column_sums[j] += v;
+        if (i != j) column_sums[i] += v;
+      }
+    const double norm1 = column_sums.maxCoeff();
+    const Eigen::VectorXd diagonal = factors_.diagonal();
+    dpotrf_("L", &size, factors_.data(), &size, &info, 1);
     if (info == 0 && std::isfinite(norm1)) {
-      dpocon_("L", &size, lower.data(), &size, &norm1, &rcond, work.data(), iwork.data(), &info, 1);
-      factors_ = std::move(lower);
+      dpocon_("L", &size, factors_.data(), &size, &norm1, &rcond, work.data(), iwork.data(), &info, 1);
       cholesky_ = true;
       return info == 0 ? rcond : 0.0;
     }
+    factors_.diagonal() = diagonal;
+    factors_.triangularView<Eigen::StrictlyLower>() = factors_.transpose();
   }
   const double norm1 = factors_.cwiseAbs().colwise().sum().maxCoeff();
   pivots_.resize(static_cast<std::size_t>(size));

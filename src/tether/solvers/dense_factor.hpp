@@ -23,9 +23,10 @@ namespace tether {
 class DenseFactor {
  public:
   /// Factorizes `a` (square; taken over, its storage becomes the factors).
-  /// `try_cholesky`: `a` is symmetric (only its lower triangle is read then)
-  /// and probably positive definite: Cholesky is tried first, LU when it
-  /// meets a non-positive pivot. `scale`: equilibrate (false when the caller
+  /// `try_cholesky`: `a` is symmetric and probably positive definite:
+  /// Cholesky of its lower triangle is tried first; when it meets a
+  /// non-positive pivot, LU of the matrix whose lower triangle is the
+  /// mirror of the upper. `scale`: equilibrate (false when the caller
   /// already did and D would be 1). Returns the reciprocal condition number
   /// estimate of the equilibrated matrix in the 1-norm (dpocon / dgecon),
   /// 0 for an exactly singular or non-finite one.
