@@ -171,8 +171,8 @@ fs::path output_directory(const std::string& deck, const std::string& output_dir
 
 /// What `tether run` was asked to do (its command line).
 struct RunRequest {
-  std::string deck, output_dir, solver = "auto", restart;
-  bool condense = true, ascii = false, quiet = false, reuse = true, plot = true, mortar_condensation = false;
+  std::string deck, output_dir, solver = "auto", restart, mortar_condensation = "dense";
+  bool condense = true, ascii = false, quiet = false, reuse = true, plot = true;
   double memory_mb = 0;
   Dialect dialect = Dialect::Abaqus;
 };
@@ -186,7 +186,7 @@ AnalysisOptions analysis_options(const RunRequest& request) {
     check_out_of_core_directory();
   options.condense_contact = request.condense;
   options.reuse_linear_bulk = request.reuse;
-  options.mortar_dual_condensation = request.mortar_condensation;
+  options.mortar_condensation = parse_mortar_condensation(request.mortar_condensation);
   options.memory_budget_mb = request.memory_mb;
   options.stream_element_results = true;  // the writer does not keep the results
   return options;
@@ -262,7 +262,8 @@ int main(int argc, char** argv) {
   const std::string dialect_help =
       "Where ABAQUS and CalculiX give the same deck data different meanings, read it as abaqus (default) or "
       "calculix means it (docs/keywords.md, section Dialects)";
-  bool ascii = false, quiet = false, no_condense = false, no_reuse = false, no_plot = false, mortar_condensation = false;
+  bool ascii = false, quiet = false, no_condense = false, no_reuse = false, no_plot = false;
+  std::string mortar_condensation = "dense";
   double memory_mb = 0;
   auto* run_cmd = app.add_subcommand("run", "Read an ABAQUS/CalculiX .inp deck, solve it and write the results");
   run_cmd->add_option("deck", deck, "Input deck (.inp)")->required();
@@ -282,10 +283,14 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--no-reuse", no_reuse,
                     "Assemble the tangent of a linear bulk (small strain, elastic) and factorize it at every "
                     "iteration instead of once per step and increment size (for comparison; same answer)");
-  run_cmd->add_flag("--mortar-condensation", mortar_condensation,
-                    "With mortar contact: eliminate its multipliers exactly through the dual basis and factorize "
-                    "the condensed matrix at every iteration instead of condensing onto the contact equations (for "
-                    "comparison; same answer to round-off; docs/theory/mortar.md)");
+  run_cmd
+      ->add_flag("--mortar-condensation{sparse}", mortar_condensation,
+                 "With mortar contact, how its multipliers are eliminated (all give the same answer to round-off; "
+                 "docs/theory/mortar.md): =dense (default) from the dense system of the contact equations when "
+                 "the solver condenses onto them, the rest factorized by Cholesky when it can be; =kept: not "
+                 "eliminated, the dense system factorized by LU; without a value or =sparse: from the whole "
+                 "matrix, which is then factorized at every iteration (no condensation onto the contact equations)")
+      ->check(CLI::IsMember({"dense", "kept", "sparse"}, CLI::ignore_case));
   run_cmd->add_option("--memory", memory_mb,
                       "Memory the run may use, in MB (e.g. 480, 2000): MUMPS factors (the condensed contact solver, "
                       "--solver mumps, symmetric indefinite systems) that would not fit are kept on disk in the "

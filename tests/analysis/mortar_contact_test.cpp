@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -387,7 +388,7 @@ TEST(MortarCondensation, SameIterationsAndResultsAsTheFullSystem) {
   deck.replace(deck.find(from), from.size(), "TYPE=SURFACE TO SURFACE");
   const auto plain = run_deck_text(deck);
   AnalysisOptions options;
-  options.mortar_dual_condensation = true;
+  options.mortar_condensation = MortarCondensation::Sparse;
   const auto condensed = run_deck_text(deck, options);
   ASSERT_TRUE(plain.summary.completed) << plain.summary.message;
   ASSERT_TRUE(condensed.summary.completed) << condensed.summary.message;
@@ -410,6 +411,112 @@ TEST(MortarCondensation, SameIterationsAndResultsAsTheFullSystem) {
     closed += a.nodes[k].status != ContactNodeValues::Status::Open ? 1 : 0;
   }
   EXPECT_GT(closed, 0);
+}
+
+}  // namespace
+
+namespace {
+
+// The dual multipliers eliminated from the dense interface system of the
+// condensed solver (MortarCondensation::Dense, the default) against the same
+// system with them kept (Kept: LU of the whole interface system), both
+// condensed onto the contact equations also on the decks too small for it
+// by default (condense_any_size). The elimination is exact, so the runs take
+// the same increments and iterations and agree to round-off: displacements
+// within `tolerance` of the largest, contact pressures within `tolerance` of
+// the largest; `iteration_slack` for the frictional decks, whose stick/slip
+// decisions at the cone's edge rest on round-off.
+void expect_same_as_kept(const std::string& what, const std::string& deck, double tolerance,
+                         int iteration_slack = 0) {
+  AnalysisOptions kept;
+  kept.condense_any_size = true;
+  kept.mortar_condensation = MortarCondensation::Kept;
+  AnalysisOptions dense = kept;
+  dense.mortar_condensation = MortarCondensation::Dense;
+  const auto a = run_deck_text(deck, kept);
+  const auto b = run_deck_text(deck, dense);
+  ASSERT_TRUE(a.summary.completed) << what << ": " << a.summary.message;
+  ASSERT_TRUE(b.summary.completed) << what << ": " << b.summary.message;
+  const auto condensation = [](const tether::testing::Run& run) {
+    std::string all;
+    for (const std::string& m : run.recorder.messages)
+      if (m.find("condensed onto") != std::string::npos) all += m + "\n";
+    return all;
+  };
+  const std::string a_log = condensation(a), b_log = condensation(b);
+  EXPECT_NE(a_log.find(", LU"), std::string::npos) << what << ": " << a_log;
+  EXPECT_EQ(a_log.find("dual elimination"), std::string::npos) << what << ": " << a_log;
+  EXPECT_NE(b_log.find("after the dual elimination"), std::string::npos) << what << ": " << b_log;
+  EXPECT_EQ(b.summary.increments, a.summary.increments) << what;
+  EXPECT_NEAR(b.summary.iterations, a.summary.iterations, iteration_slack) << what;
+  ASSERT_EQ(b.recorder.results.size(), a.recorder.results.size()) << what;
+  double largest = 0, difference = 0;
+  for (std::size_t i = 0; i < a.recorder.results.size(); ++i)
+    for (std::size_t n = 0; n < a.recorder.results[i].displacement.size(); ++n) {
+      largest = std::max(largest, a.recorder.results[i].displacement[n].cwiseAbs().maxCoeff());
+      difference = std::max(difference, (a.recorder.results[i].displacement[n] -
+                                         b.recorder.results[i].displacement[n]).cwiseAbs().maxCoeff());
+    }
+  double largest_pressure = 0, pressure_difference = 0;
+  for (std::size_t p = 0; p < a.last().contact.size(); ++p) {
+    const ContactPairValues& x = a.last().contact[p];
+    const ContactPairValues& y = b.last().contact.at(p);
+    ASSERT_EQ(x.nodes.size(), y.nodes.size());
+    for (std::size_t k = 0; k < x.nodes.size(); ++k) {
+      largest_pressure = std::max(largest_pressure, std::abs(x.nodes[k].pressure));
+      pressure_difference = std::max(pressure_difference, std::abs(x.nodes[k].pressure - y.nodes[k].pressure));
+    }
+  }
+  std::printf("[ dual elimination ] %s: %d increments, %d iterations (kept %d); max |du| / max |u| %.1e, "
+              "max |dp| / max |p| %.1e\n%s",
+              what.c_str(), b.summary.increments, b.summary.iterations, a.summary.iterations, difference / largest,
+              pressure_difference / largest_pressure, b_log.c_str());
+  EXPECT_LT(difference, tolerance * largest) << what;
+  EXPECT_LT(pressure_difference, tolerance * largest_pressure) << what;
+}
+
+std::string surface_to_surface(std::string deck) {
+  const std::string from = "TYPE=NODE TO SURFACE";
+  return deck.replace(deck.find(from), from.size(), "TYPE=SURFACE TO SURFACE");
+}
+
+std::string source_file(const std::string& path) {
+  std::ifstream in(std::string(TETHER_SOURCE_DIR) + "/" + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(MortarDenseElimination, HertzSameAsWithTheMultipliersKept) {
+  expect_same_as_kept("Hertz 5k", surface_to_surface(source_file("examples/hertz_mortar/hertz.inp")), 1e-10);
+}
+
+TEST(MortarDenseElimination, PatchTestsSameAsWithTheMultipliersKept) {
+  expect_same_as_kept("patch flat 3/7", patch_deck(PatchCase{3, 7, false, 0.0}), 1e-10);
+  expect_same_as_kept("patch inclined quadratic 3/4", patch_deck(PatchCase{3, 4, true, 0.25}), 1e-10);
+}
+
+TEST(MortarDenseElimination, SlidingBlockSameAsWithTheMultipliersKept) {
+  expect_same_as_kept("sliding block", surface_to_surface(tether::testing::block_on_foundation(
+                                           0.5123, "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n", "", 0.3)),
+                      1e-10);
+  expect_same_as_kept("sliding block, friction 0.3",
+                      surface_to_surface(tether::testing::block_on_foundation(
+                          0.5123, "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n*FRICTION\n0.3\n")),
+                      1e-8, 2);
+}
+
+TEST(MortarDenseElimination, Cgs4WithAndWithoutFrictionSameAsWithTheMultipliersKept) {
+  const std::string g04 = source_file("tests/verification/decks/cgs4_mortar_g0.4.inp");
+  const std::string friction = "*FRICTION\n";
+  const auto at = g04.find(friction);
+  ASSERT_NE(at, std::string::npos);
+  std::string frictionless = g04;
+  frictionless.erase(at, g04.find('\n', at + friction.size()) + 1 - at);  // the keyword and its data line
+  expect_same_as_kept("CGS-4 G 0.4, frictionless", frictionless, 1e-10);
+  expect_same_as_kept("CGS-4 G 0.4, friction 0.3", g04, 1e-8, 2);
+  expect_same_as_kept("CGS-4 G 40, friction 0.3", source_file("tests/verification/decks/cgs4_mortar_g40.inp"), 1e-8,
+                      2);
 }
 
 }  // namespace

@@ -213,3 +213,87 @@ TEST(Cli, StepExtrapolationLinearPredictsALinearRampAndNoStartsFromTheConvergedS
   EXPECT_NE(r.out.find("plate.inp:19: error: EXTRAPOLATION=PARABOLIC"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("expected LINEAR (the default) or NO"), std::string::npos) << r.out;
 }
+
+namespace {
+
+/// The numbers of a text file (every token that parses whole as a double), in order.
+std::vector<double> numbers_of(const std::string& text) {
+  std::vector<double> out;
+  std::istringstream in(text);
+  std::string token;
+  while (in >> token) {
+    char* end = nullptr;
+    const double v = std::strtod(token.c_str(), &end);
+    if (end != token.c_str() && *end == '\0') out.push_back(v);
+  }
+  return out;
+}
+
+/// The values of the ascii Float64 DataArray `name` of a .vtu.
+std::vector<double> vtu_array(const std::string& vtu, const std::string& name) {
+  const auto at = vtu.find("Name=\"" + name + "\"");
+  if (at == std::string::npos) return {};
+  const auto from = vtu.find('>', at) + 1;
+  return numbers_of(vtu.substr(from, vtu.find("</DataArray>", from) - from));
+}
+
+}  // namespace
+
+TEST(Cli, MortarMultipliersEliminatedFromTheDenseInterfaceSystemWithAllWriters) {
+  // The Hertz example (5k dofs) with its pair made mortar, run with every
+  // writer (.dat with node and contact prints, .sta, .msg, .pvd and ASCII
+  // .vtu per increment): by default the mortar multipliers are eliminated
+  // from the dense system of the contact equations (the .msg says so and
+  // gives its size, 2 × (slave + master nodes) less the closed nodes);
+  // --mortar-condensation=kept factorizes the whole interface system by LU.
+  // The same increments and iterations, the .dat's printed values the same
+  // to their printed digits (1e-6 relative; 1e-9 of the file's largest
+  // value for those near zero), the last .vtu's displacements within 1e-10
+  // of the largest. A wrong mode is refused.
+  const fs::path dir = scratch("mortar_dense");
+  std::string deck = slurp(fs::path(TETHER_SOURCE_DIR) / "examples/hertz_mortar/hertz.inp");
+  const std::string from = "TYPE=NODE TO SURFACE";
+  ASSERT_NE(deck.find(from), std::string::npos);
+  deck.replace(deck.find(from), from.size(), "TYPE=SURFACE TO SURFACE");
+  write(dir / "hertz.inp", deck);
+  const std::string path = (dir / "hertz.inp").string();
+  const auto dense = tether("run " + path + " -q --ascii -o " + (dir / "dense").string());
+  const auto kept = tether("run " + path + " -q --ascii --mortar-condensation=kept -o " + (dir / "kept").string());
+  ASSERT_EQ(dense.code, 0) << dense.out;
+  ASSERT_EQ(kept.code, 0) << kept.out;
+  const auto bad = tether("run " + path + " -q --mortar-condensation=diagonal -o " + (dir / "bad").string());
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.out.find("--mortar-condensation"), std::string::npos) << bad.out;
+  for (const char* file : {"hertz.dat", "hertz.sta", "hertz.msg", "hertz.pvd", "hertz_1_1.vtu"}) {
+    EXPECT_TRUE(fs::exists(dir / "dense" / file)) << file;
+    EXPECT_TRUE(fs::exists(dir / "kept" / file)) << file;
+  }
+  const std::string dense_log = slurp(dir / "dense" / "hertz.msg"), kept_log = slurp(dir / "kept" / "hertz.msg");
+  EXPECT_NE(dense_log.find("after the dual elimination of the mortar multipliers"), std::string::npos) << dense_log;
+  EXPECT_NE(dense_log.find(", Cholesky, reciprocal condition"), std::string::npos) << dense_log;
+  EXPECT_EQ(kept_log.find("dual elimination"), std::string::npos) << kept_log;
+  EXPECT_NE(kept_log.find(", LU, reciprocal condition"), std::string::npos) << kept_log;
+  const std::vector<int> its = sta_iterations(slurp(dir / "dense" / "hertz.sta"));
+  EXPECT_FALSE(its.empty());
+  EXPECT_EQ(its, sta_iterations(slurp(dir / "kept" / "hertz.sta")));
+  const std::vector<double> a = numbers_of(slurp(dir / "dense" / "hertz.dat"));
+  const std::vector<double> b = numbers_of(slurp(dir / "kept" / "hertz.dat"));
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GT(a.size(), 100u);
+  double largest = 0;
+  for (double v : b) largest = std::max(largest, std::abs(v));
+  for (std::size_t k = 0; k < a.size(); ++k)
+    EXPECT_NEAR(a[k], b[k], 1e-6 * std::abs(b[k]) + 1e-9 * largest) << "number " << k << " of the .dat";
+  // The last increment's .vtu: the last file the .pvd lists.
+  const std::string pvd = slurp(dir / "dense" / "hertz.pvd");
+  const auto at = pvd.rfind("file=\"");
+  ASSERT_NE(at, std::string::npos) << pvd;
+  const std::string last = pvd.substr(at + 6, pvd.find('"', at + 6) - at - 6);
+  const std::vector<double> u = vtu_array(slurp(dir / "dense" / last), "U");
+  const std::vector<double> v = vtu_array(slurp(dir / "kept" / last), "U");
+  ASSERT_FALSE(u.empty()) << last;
+  ASSERT_EQ(u.size(), v.size());
+  double umax = 0, du = 0;
+  for (std::size_t k = 0; k < u.size(); ++k) umax = std::max(umax, std::abs(v[k])), du = std::max(du, std::abs(u[k] - v[k]));
+  EXPECT_LT(du, 1e-10 * umax) << last;
+}

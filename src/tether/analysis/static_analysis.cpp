@@ -1,6 +1,8 @@
 #include "tether/analysis/static_analysis.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 #include "tether/analysis/amplitude.hpp"
 #include "tether/analysis/increment_controller.hpp"
@@ -71,6 +73,20 @@ std::unique_ptr<Procedure> make_procedure(StepSystem& system, AnalysisObserver& 
 /// At every exit of a step (completed, stopped, or a thrown error): adds the
 /// step's timing to the summary and says how the linear solver went (factors
 /// kept on disk; the condensed solver's statistics).
+/// "; dense system ..." for the step's condensation message: the size of the
+/// last dense system factorized, how, and the smallest reciprocal condition
+/// number estimate of the step's (equilibrated, 1-norm).
+std::string dense_system(const CondensationStatistics& c) {
+  if (c.dense_equations == 0) return "";
+  char rcond[32];
+  std::snprintf(rcond, sizeof rcond, "%.1e", c.smallest_dense_rcond);
+  return "; dense system " + std::to_string(c.dense_equations) + " equations" +
+         (c.dual_eliminations > 0 ? " after the dual elimination of the mortar multipliers (" +
+                                        std::to_string(c.dual_eliminations) + " factorizations)"
+                                  : "") +
+         ", " + (c.dense_cholesky ? "Cholesky" : "LU") + ", reciprocal condition >= " + rcond;
+}
+
 class StepEndReport {
  public:
   StepEndReport(AnalysisSummary& summary, const Procedure& procedure, const StepSystem& system,
@@ -109,6 +125,7 @@ class StepEndReport {
                          " full factorization(s); bulk factors " +
                          std::to_string(static_cast<long long>(c.factor_entries)) + " entries, " +
                          std::to_string(c.factor_memory_mb) + " MB" + (c.out_of_core ? " in core, the factors on disk" : "") +
+                         dense_system(c) +
                          (c.gave_up ? " (stopped condensing: the matrix outside the contact equations changed twice in a row or is singular)"
                                     : ""));
   }
@@ -186,7 +203,8 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
       resumed ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(resumed->u_step_start.data(), u_.size())) : u_;
   StepSystem system(disc, step, make_step_loads(step, disc.dofs(), u_step_start, cload_end_, pressure_end_), u_,
                     total_time_, SolverSettings{options_.solver, options_.condense_contact, options_.memory_budget_mb,
-                                   options_.reuse_linear_bulk, options_.mortar_dual_condensation},
+                                   options_.reuse_linear_bulk, options_.mortar_condensation,
+                                   options_.condense_any_size},
                     [&](const std::string& m) {
                       if (index == 0) observer_.on_message(m);
                     });

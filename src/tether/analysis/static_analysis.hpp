@@ -20,6 +20,7 @@
 #include "tether/analysis/discretization.hpp"
 #include "tether/analysis/motion_state.hpp"
 #include "tether/analysis/newton.hpp"
+#include "tether/solvers/dual_condensation.hpp"
 #include "tether/solvers/linear_solver.hpp"
 
 namespace tether {
@@ -39,9 +40,11 @@ struct AnalysisOptions {
   /// (SolverSettings::reuse_linear_bulk); off: at every iteration. The
   /// results are the same bit for bit.
   bool reuse_linear_bulk = true;
-  /// Mortar pairs' multipliers eliminated exactly through the dual basis
-  /// (SolverSettings::mortar_dual_condensation; `tether run --mortar-condensation`).
-  bool mortar_dual_condensation = false;
+  /// How mortar pairs' multipliers are eliminated (MortarCondensation;
+  /// `tether run --mortar-condensation`).
+  MortarCondensation mortar_condensation = MortarCondensation::Dense;
+  /// Condense onto the contact equations whatever their number (tests; SolverSettings::condense_any_size).
+  bool condense_any_size = false;
   /// Streamed results: the IncrementResults handed to the observer carry no
   /// integration-point values (`points` empty) but each element's mean stress
   /// and a source that computes an element's points during on_results (see

@@ -179,7 +179,8 @@ std::vector<int> StepSystem::condensation_interface(const EquationMap& equations
   const auto& pairs = discretization_.contact_pairs();
   const auto& mortar = discretization_.mortar_pairs();
   if (settings_.solver != SolverKind::Auto || !settings_.condense_contact || step_.nlgeom ||
-      (pairs.empty() && mortar.empty()) || (settings_.mortar_dual_condensation && !mortar.empty()))
+      (pairs.empty() && mortar.empty()) ||
+      (settings_.mortar_condensation == MortarCondensation::Sparse && !mortar.empty()))
     return {};
   std::vector<int> interface = contact_equations(pairs, discretization_.dofs(), equations);
   if (!mortar.empty()) {
@@ -189,20 +190,24 @@ std::vector<int> StepSystem::condensation_interface(const EquationMap& equations
     interface.erase(std::unique(interface.begin(), interface.end()), interface.end());
   }
   const auto m = static_cast<int>(interface.size());
-  if (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()) interface.clear();
+  if (!settings_.condense_any_size &&
+      (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()))
+    interface.clear();
   return interface;
 }
 
 void StepSystem::make_solver(std::vector<int> interface) {
   solver_ = make_linear_solver(settings_.solver, settings_.memory_budget_mb);
-  if (settings_.mortar_dual_condensation && !discretization_.mortar_pairs().empty()) {
+  const auto& mortar = discretization_.mortar_pairs();
+  if (settings_.mortar_condensation == MortarCondensation::Sparse && !mortar.empty()) {
     solver_ = std::make_unique<DualCondensedSolver>(
-        mortar_dual_equations(discretization_.mortar_pairs(), discretization_.dofs(), equations()),
-        std::move(solver_));
+        mortar_dual_equations(mortar, discretization_.dofs(), equations()), std::move(solver_));
     return;
   }
   if (interface.empty()) return;
   auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver_), settings_.memory_budget_mb);
+  if (settings_.mortar_condensation == MortarCondensation::Dense && !mortar.empty())
+    c->eliminate_dual_multipliers(mortar_dual_equations(mortar, discretization_.dofs(), equations()));
   condensed_ = c.get();
   solver_ = std::move(c);
 }

@@ -23,6 +23,7 @@
 #include "tether/analysis/step_loads.hpp"
 #include "tether/assembly/assembler.hpp"
 #include "tether/elements/element_inertia.hpp"
+#include "tether/solvers/dual_condensation.hpp"
 #include "tether/solvers/linear_solver.hpp"
 
 namespace tether {
@@ -41,10 +42,12 @@ struct SolverSettings {
   /// factorization of an unchanged tangent. Off: every iteration assembles
   /// and factorizes everything (the results are the same bit for bit).
   bool reuse_linear_bulk = true;
-  /// With mortar pairs: eliminate their multipliers exactly through the dual
-  /// basis (DualCondensedSolver) instead of condensing onto the contact
-  /// equations; the inner solver then factorizes the condensed matrix.
-  bool mortar_dual_condensation = false;
+  /// With mortar pairs: how their multipliers are treated (MortarCondensation).
+  MortarCondensation mortar_condensation = MortarCondensation::Dense;
+  /// Condense onto the contact equations however few the other equations
+  /// are (the size limits of the choice are for speed only): for tests of
+  /// the condensed paths on small decks.
+  bool condense_any_size = false;
 };
 
 class StepSystem {

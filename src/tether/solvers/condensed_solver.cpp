@@ -8,24 +8,12 @@
 
 #include "tether/core/error.hpp"
 
-// LAPACK (Fortran interface): LU with partial pivoting, its solve, and the
-// reciprocal condition number in the 1-norm.
-extern "C" {
-void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
-void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
-             double* b, const int* ldb, int* info, std::size_t trans_len);
-void dgecon_(const char* norm, const int* n, const double* a, const int* lda, const double* anorm, double* rcond,
-             double* work, int* iwork, int* info, std::size_t norm_len);
-}
-
 namespace tether {
 
 namespace {
 /// Reciprocal condition number of the equilibrated interface matrix below
 /// which it counts as singular and the fallback decides.
 constexpr double kSingularRcond = 1e-12;
-/// A diagonal below this fraction of the largest counts as absent for the scaling.
-constexpr double kNegligibleDiagonal = 1e-14;
 /// A right-hand side whose entries outside the interface are all at most
 /// this fraction of the largest such entry since the bulk factorization is
 /// solved as if they were zero (see CondensedSolver::solve).
@@ -137,53 +125,69 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
     }
   }
 
-  // Dense interface matrix A_II + C, equilibrated: D (A_II + C) D with
-  // D = 1/sqrt|diag| on rows with a diagonal, and for rows without one (a
-  // closed HARD multiplier) 1/(largest entry of the row already scaled), so
-  // that the condition test does not depend on the units (1/(E t) otherwise).
-  const auto m = static_cast<Eigen::Index>(interface_.size());
-  lu_ = bulk_->schur();  // becomes A_II + C, equilibrated, then its LU, in place
-  Eigen::MatrixXd& s = lu_;
+  // Dense interface matrix A_II + C.
+  Eigen::MatrixXd s = bulk_->schur();
   for (int j : interface_)
     for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
       const int i = a.innerIndexPtr()[k];
       if (in_interface_[static_cast<std::size_t>(i)])
         s(position_[static_cast<std::size_t>(i)], position_[static_cast<std::size_t>(j)]) += a.valuePtr()[k];
     }
-  scale_.resize(m);
-  double largest_diagonal = 0;
-  for (Eigen::Index k = 0; k < m; ++k)
-    if (std::isfinite(s(k, k))) largest_diagonal = std::max(largest_diagonal, std::abs(s(k, k)));
-  std::vector<Eigen::Index> without_diagonal;
-  for (Eigen::Index k = 0; k < m; ++k) {
-    const double d = std::abs(s(k, k));
-    if (d > kNegligibleDiagonal * largest_diagonal && std::isfinite(d)) {
-      scale_[k] = 1.0 / std::sqrt(d);
-    } else {
-      scale_[k] = 0.0;
-      without_diagonal.push_back(k);
+  if (!factorize_interface(std::move(s), a, symmetric)) return use_fallback(a, symmetric);
+  if (reused) ++statistics_.reuses, statistics_.promised += keep;  // served by the interface system alone
+}
+
+DualElimination CondensedSolver::interface_elimination(const SparseMatrix& a) const {
+  DualElimination e = choose_dual_elimination(a, dual_nodes_, &interface_);
+  const auto at = [&](int& equation) {
+    equation = position_[static_cast<std::size_t>(equation)];
+    return equation >= 0;
+  };
+  for (int& equation : e.eliminated)
+    if (!at(equation)) return {};
+  for (auto& [equation, diagonal] : e.apart)
+    if (!at(equation)) return {};
+  return e;
+}
+
+bool CondensedSolver::factorize_interface(Eigen::MatrixXd s, const SparseMatrix& a, bool symmetric) {
+  // The matrix is equilibrated (DenseFactor: D s D, D = 1/sqrt|diag|, rows
+  // without a diagonal by their largest entry) so that the condition test
+  // does not depend on the units; a reciprocal condition number below
+  // kSingularRcond (also NaN) counts as singular.
+  const auto record = [&](double rcond, Eigen::Index size, bool cholesky) {
+    statistics_.dense_rcond = rcond;
+    statistics_.dense_equations = static_cast<int>(size);
+    statistics_.dense_cholesky = cholesky;
+    if (rcond > kSingularRcond)
+      statistics_.smallest_dense_rcond =
+          statistics_.smallest_dense_rcond > 0 ? std::min(statistics_.smallest_dense_rcond, rcond) : rcond;
+    return rcond > kSingularRcond;
+  };
+  dual_active_ = false;
+  dual_scaled_ = false;
+  if (!dual_nodes_.empty()) {
+    const DualElimination e = interface_elimination(a);
+    if (e.closed + e.diagonal > 0) {
+      // Equilibrated in place (no copy of the |I|² matrix): should the
+      // elimination fail, the plain factorization takes D s D too.
+      dual_scale_ = equilibration(s);
+      s.array().colwise() *= dual_scale_.array();
+      s.array().rowwise() *= dual_scale_.transpose().array();
+      dual_scaled_ = true;
+      const double rcond = dual_.factorize(std::move(s), e, symmetric);
+      if (record(rcond, dual_.condensed_size(), dual_.cholesky())) {
+        dual_active_ = true;
+        ++statistics_.dual_eliminations;
+        statistics_.dual_closed = e.closed;
+        return true;
+      }
+      s = dual_.release_matrix();
     }
   }
-  for (Eigen::Index k : without_diagonal) {
-    const double row = (s.row(k).cwiseAbs().transpose().cwiseProduct(scale_)).maxCoeff();
-    scale_[k] = row > 0 && std::isfinite(row) ? 1.0 / row : 1.0;
-  }
-  lu_.array().colwise() *= scale_.array();  // D s D: row i times d_i, then column j times d_j
-  lu_.array().rowwise() *= scale_.transpose().array();
-  const int size = static_cast<int>(m);
-  const double norm1 = lu_.cwiseAbs().colwise().sum().maxCoeff();
-  pivots_.resize(interface_.size());
-  int info = 0;
-  dgetrf_(&size, &size, lu_.data(), &size, pivots_.data(), &info);
-  // info > 0: an exactly zero pivot. Otherwise the condition estimate decides.
-  double rcond = 0;
-  if (info == 0 && std::isfinite(norm1)) {
-    std::vector<double> work(4 * interface_.size());
-    std::vector<int> iwork(interface_.size());
-    dgecon_("1", &size, lu_.data(), &size, &norm1, &rcond, work.data(), iwork.data(), &info, 1);
-  }
-  if (info != 0 || !(rcond > kSingularRcond)) return use_fallback(a, symmetric);  // also NaN
-  if (reused) ++statistics_.reuses, statistics_.promised += keep;  // served by the interface system alone
+  const Eigen::Index m = s.rows();
+  const double rcond = interface_factor_.factorize(std::move(s), false);
+  return record(rcond, m, false);
 }
 
 void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
@@ -204,12 +208,14 @@ void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   }
   for (std::size_t k = 0; k < interface_.size(); ++k)
     reduced[static_cast<Eigen::Index>(k)] += b[interface_[k]];
-  Eigen::VectorXd y = scale_.asDiagonal() * reduced;
-  const int size = static_cast<int>(interface_.size()), one = 1;
-  int info = 0;
-  dgetrs_("N", &size, &one, lu_.data(), &size, pivots_.data(), y.data(), &size, &info, 1);
-  if (info != 0) throw SolverError("condensed solver: LAPACK dgetrs failed (info " + std::to_string(info) + ")");
-  y = scale_.asDiagonal() * y;
+  Eigen::VectorXd y;
+  if (dual_active_) {
+    dual_.solve(dual_scale_.asDiagonal() * reduced, y);
+  } else {
+    y = dual_scaled_ ? Eigen::VectorXd(dual_scale_.asDiagonal() * reduced) : std::move(reduced);
+    interface_factor_.solve(y);
+  }
+  if (dual_scaled_) y = dual_scale_.asDiagonal() * y;
   if (bulk_negligible)
     bulk_->expand_interface(y, x);
   else
@@ -218,8 +224,12 @@ void CondensedSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
 
 std::string CondensedSolver::name() const {
   if (fallback_active_) return fallback_->name();
-  return std::string("MUMPS ") + (bulk_symmetric_ ? "LDLT" : "LU") + " + dense interface (" +
-         std::to_string(interface_.size()) + " equations)";
+  std::string dense = "dense interface (" + std::to_string(interface_.size()) + " equations)";
+  if (dual_active_)
+    dense = "dense interface (" + std::to_string(interface_.size()) + " equations, " +
+            std::to_string(statistics_.dense_equations) + " after the dual elimination, " +
+            (statistics_.dense_cholesky ? "Cholesky" : "LU") + ")";
+  return std::string("MUMPS ") + (bulk_symmetric_ ? "LDLT" : "LU") + " + " + dense;
 }
 
 }  // namespace tether

@@ -20,10 +20,21 @@
 /// interface matrix is (a floating body, an overconstrained contact): it then
 /// decides and names the singular equation as it would have without
 /// condensation.
+///
+/// With mortar pairs (eliminate_dual_multipliers()), the dense interface
+/// system is not factorized as it is: its closed dual multipliers are
+/// eliminated exactly with their pivot displacements and the open ones
+/// solved apart (DenseDualCondensation), and the remaining system — the
+/// interface displacements only, for frictionless HARD contact —
+/// factorized by Cholesky (LU with friction or soft laws). The bulk
+/// factorization is the same; the answer is the same to round-off.
 
 #include <memory>
 #include <vector>
 
+#include "tether/solvers/dense_dual_condensation.hpp"
+#include "tether/solvers/dense_factor.hpp"
+#include "tether/solvers/dual_condensation.hpp"
 #include "tether/solvers/linear_solver.hpp"
 #include "tether/solvers/mumps_schur.hpp"
 
@@ -42,6 +53,14 @@ struct CondensationStatistics {
   int factor_memory_mb = 0;       ///< MUMPS' memory for the last factorization [MB] (INFOG(22))
   bool out_of_core = false;       ///< the last sparse factors were kept on disk (memory budget)
   int out_of_core_factorizations = 0;  ///< sparse factorizations whose factors were kept on disk
+  int dense_equations = 0;        ///< size of the last dense system factorized: |I|, or |K| after the dual elimination
+  bool dense_cholesky = false;    ///< the last one was factorized by Cholesky (else LU)
+  /// Reciprocal condition number estimate (1-norm, equilibrated) of the
+  /// last dense system factorized, and the smallest since construction.
+  double dense_rcond = 0;
+  double smallest_dense_rcond = 0;
+  int dual_eliminations = 0;      ///< factorize() calls whose dense system was condensed by the dual elimination
+  int dual_closed = 0;            ///< closed multipliers eliminated with a pivot in the last one
 };
 
 class CondensedSolver final : public LinearSolver {
@@ -59,6 +78,12 @@ class CondensedSolver final : public LinearSolver {
   /// The next factorize() takes the entries outside the interface as those of
   /// the previous call without comparing them (statistics().promised).
   void note_outer_unchanged() override { outer_unchanged_ = true; }
+  /// The mortar slave nodes' equations (mortar_dual_equations): from the
+  /// next factorize() on, their multipliers are eliminated from the dense
+  /// interface system (DenseDualCondensation); where that elimination finds
+  /// its block singular, the dense system is factorized as it is. Every
+  /// equation named must be in the interface.
+  void eliminate_dual_multipliers(std::vector<DualNodeEquations> nodes) { dual_nodes_ = std::move(nodes); }
   /// One forward and one backward sweep over the bulk factors and the dense
   /// interface solve. When every entry of b outside the interface (b_R) is at
   /// most 1e-10 times the largest such entry of the solves since the bulk
@@ -87,6 +112,12 @@ class CondensedSolver final : public LinearSolver {
   /// True when the entries of `a` outside the interface block are symmetric.
   [[nodiscard]] bool outer_symmetric(const SparseMatrix& a) const;
   void use_fallback(const SparseMatrix& a, bool symmetric);
+  /// Factorizes the dense interface system `s` = A_II + C, with the dual
+  /// elimination when it applies; false when it is (numerically) singular.
+  [[nodiscard]] bool factorize_interface(Eigen::MatrixXd s, const SparseMatrix& a, bool symmetric);
+  /// choose_dual_elimination on the interface columns of `a`, in interface
+  /// positions; empty when a named equation is outside the interface.
+  [[nodiscard]] DualElimination interface_elimination(const SparseMatrix& a) const;
 
   std::vector<int> interface_;
   std::vector<char> in_interface_;  ///< per equation (sized at the first factorize)
@@ -101,11 +132,14 @@ class CondensedSolver final : public LinearSolver {
   bool outer_unchanged_ = false;  ///< note_outer_unchanged() before this factorize()
   bool system_symmetric_ = false;  ///< the last factorize() was of a matrix declared symmetric
   double bulk_scale_ = 0;         ///< largest |b_i| outside the interface in the solves since the bulk factorization
-  // Dense interface system (A_II + C), equilibrated: D (A_II + C) D, D = 1/sqrt|diag|,
-  // LU-factorized in place by LAPACK (dgetrf: blocked, multithreaded BLAS).
-  Eigen::VectorXd scale_;
-  Eigen::MatrixXd lu_;
-  std::vector<int> pivots_;
+  // Dense interface system (A_II + C), equilibrated and factorized by LAPACK
+  // (DenseFactor), or, with mortar pairs, D (A_II + C) D condensed by the dual elimination.
+  DenseFactor interface_factor_;
+  std::vector<DualNodeEquations> dual_nodes_;
+  DenseDualCondensation dual_;
+  Eigen::VectorXd dual_scale_;  ///< D of D (A_II + C) D for dual_
+  bool dual_active_ = false;    ///< the last factorize() went through dual_
+  bool dual_scaled_ = false;    ///< the last dense system was D (A_II + C) D (dual_scale_), whichever factorized it
   CondensationStatistics statistics_;
 };
 

@@ -1,7 +1,10 @@
 #include "tether/solvers/dual_condensation.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "tether/core/error.hpp"
@@ -23,26 +26,28 @@ std::vector<int> unique_sorted(std::vector<int> v) {
 
 }  // namespace
 
-DualCondensedSolver::DualCondensedSolver(std::vector<DualNodeEquations> nodes, std::unique_ptr<LinearSolver> inner)
-    : nodes_(std::move(nodes)), inner_(std::move(inner)) {}
-
-void DualCondensedSolver::analyze(const SparseMatrix& /*a*/) {
-  analysed_r_.clear();  // the inner solver analyses at the next factorize
-  analysed_outer_.resize(0);
+MortarCondensation parse_mortar_condensation(const std::string& name) {
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (lower == "dense") return MortarCondensation::Dense;
+  if (lower == "kept") return MortarCondensation::Kept;
+  if (lower == "sparse") return MortarCondensation::Sparse;
+  throw std::invalid_argument("unknown mortar condensation '" + name + "' (dense, kept or sparse)");
 }
 
-std::string DualCondensedSolver::name() const { return "dual condensation + " + inner_->name(); }
-
-void DualCondensedSolver::choose_eliminated(const SparseMatrix& a) {
+DualElimination choose_dual_elimination(const SparseMatrix& a, const std::vector<DualNodeEquations>& nodes,
+                                        const std::vector<int>* columns) {
   const auto n = static_cast<int>(a.rows());
   // Off-diagonal entries of each mortar multiplier's row and column.
   std::vector<int> node_of(static_cast<std::size_t>(n), -1);
-  for (std::size_t k = 0; k < nodes_.size(); ++k)
-    if (nodes_[k].multiplier >= 0) node_of[static_cast<std::size_t>(nodes_[k].multiplier)] = static_cast<int>(k);
-  std::vector<std::vector<std::pair<int, double>>> row(nodes_.size());
-  std::vector<double> diagonal(nodes_.size(), 0.0);
-  std::vector<bool> coupled(nodes_.size(), false);
-  for (int col = 0; col < n; ++col)
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    if (nodes[k].multiplier >= 0) node_of[static_cast<std::size_t>(nodes[k].multiplier)] = static_cast<int>(k);
+  std::vector<std::vector<std::pair<int, double>>> row(nodes.size());
+  std::vector<double> diagonal(nodes.size(), 0.0);
+  std::vector<bool> coupled(nodes.size(), false);
+  const auto n_columns = columns ? static_cast<int>(columns->size()) : n;
+  for (int c = 0; c < n_columns; ++c) {
+    const int col = columns ? (*columns)[static_cast<std::size_t>(c)] : c;
     for (SparseMatrix::InnerIterator it(a, col); it; ++it) {
       if (it.value() == 0) continue;
       const int r = static_cast<int>(it.row());
@@ -52,21 +57,20 @@ void DualCondensedSolver::choose_eliminated(const SparseMatrix& a) {
       if (by_row >= 0) row[static_cast<std::size_t>(by_row)].emplace_back(col, it.value()), coupled[static_cast<std::size_t>(by_row)] = true;
       if (by_col >= 0) coupled[static_cast<std::size_t>(by_col)] = true;
     }
-  z_.clear();
-  decoupled_.clear();
+  }
+  DualElimination out;
   std::vector<bool> taken(static_cast<std::size_t>(n), false);
-  statistics_ = {};
-  for (std::size_t k = 0; k < nodes_.size(); ++k) {
-    const DualNodeEquations& node = nodes_[k];
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const DualNodeEquations& node = nodes[k];
     if (node.multiplier < 0) continue;
     if (diagonal[k] != 0 && !coupled[k]) {  // open: λ_j = b_j / a_jj, apart from B (its -1/c_j is tiny)
-      decoupled_.emplace_back(node.multiplier, diagonal[k]);
-      ++statistics_.diagonal;
+      out.apart.emplace_back(node.multiplier, diagonal[k]);
+      ++out.diagonal;
       continue;
     }
     if (diagonal[k] != 0) {  // a soft law: the row solves for λ_j itself
-      z_.push_back(node.multiplier);
-      ++statistics_.diagonal;
+      out.eliminated.push_back(node.multiplier);
+      ++out.diagonal;
       continue;
     }
     if (!coupled[k]) continue;
@@ -79,10 +83,30 @@ void DualCondensedSolver::choose_eliminated(const SparseMatrix& a) {
         pivot = col, largest = std::abs(value);
     if (pivot < 0) continue;
     taken[static_cast<std::size_t>(pivot)] = true;
-    z_.push_back(pivot);
-    z_.push_back(node.multiplier);
-    ++statistics_.closed;
+    out.eliminated.push_back(pivot);
+    out.eliminated.push_back(node.multiplier);
+    ++out.closed;
   }
+  return out;
+}
+
+DualCondensedSolver::DualCondensedSolver(std::vector<DualNodeEquations> nodes, std::unique_ptr<LinearSolver> inner)
+    : nodes_(std::move(nodes)), inner_(std::move(inner)) {}
+
+void DualCondensedSolver::analyze(const SparseMatrix& /*a*/) {
+  analysed_r_.clear();  // the inner solver analyses at the next factorize
+  analysed_outer_.resize(0);
+}
+
+std::string DualCondensedSolver::name() const { return "dual condensation + " + inner_->name(); }
+
+void DualCondensedSolver::choose_eliminated(const SparseMatrix& a) {
+  DualElimination e = choose_dual_elimination(a, nodes_);
+  z_ = std::move(e.eliminated);
+  decoupled_ = std::move(e.apart);
+  statistics_ = {};
+  statistics_.closed = e.closed;
+  statistics_.diagonal = e.diagonal;
 }
 
 void DualCondensedSolver::build_condensed(const SparseMatrix& a) {

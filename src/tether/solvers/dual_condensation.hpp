@@ -31,6 +31,7 @@
 /// of A. Theory: docs/theory/mortar.md ("Condensation").
 
 #include <array>
+#include <string>
 #include <utility>
 #include <memory>
 #include <vector>
@@ -41,6 +42,27 @@
 
 namespace tether {
 
+/// How the linear solver treats the multipliers of mortar pairs
+/// (`tether run --mortar-condensation`; docs/theory/mortar.md,
+/// "Condensation of the multipliers"). Every choice gives the answer of the
+/// full system to round-off.
+enum class MortarCondensation {
+  /// Where the solver condenses onto the contact equations (CondensedSolver),
+  /// the multipliers are eliminated from its dense interface system and the
+  /// rest factorized by Cholesky when it can be; elsewhere they stay in the matrix.
+  Dense,
+  /// The multipliers stay in the dense interface system (or the matrix),
+  /// factorized by LU.
+  Kept,
+  /// The multipliers are eliminated from the whole sparse matrix
+  /// (DualCondensedSolver), whose condensed matrix the inner solver
+  /// factorizes at every iteration (no condensation onto the contact equations).
+  Sparse,
+};
+
+/// "dense", "kept", "sparse" (any case); throws std::invalid_argument otherwise.
+[[nodiscard]] MortarCondensation parse_mortar_condensation(const std::string& name);
+
 /// The reduced equations of one mortar slave node: its normal multiplier and
 /// its two displacement components (-1 where the dof is not a free equation
 /// of weight 1, e.g. prescribed or eliminated by *EQUATION: never a pivot).
@@ -48,6 +70,35 @@ struct DualNodeEquations {
   int multiplier = -1;
   std::array<int, 2> displacement{-1, -1};
 };
+
+/// The equations a dual elimination takes out of a matrix
+/// (choose_dual_elimination): what DualCondensedSolver eliminates from the
+/// whole sparse matrix and CondensedSolver from its dense interface system.
+struct DualElimination {
+  /// The block B, in order: (pivot, multiplier) for each closed HARD node,
+  /// the multiplier alone for each node whose row has a diagonal and
+  /// off-diagonal entries (a soft law).
+  std::vector<int> eliminated;
+  /// Open multipliers (a diagonal and nothing else in row and column):
+  /// equation and diagonal, solved apart as λ_j = b_j / a_jj.
+  std::vector<std::pair<int, double>> apart;
+  int closed = 0;    ///< nodes eliminated with a pivot
+  int diagonal = 0;  ///< nodes eliminated alone (apart, or in B with their diagonal)
+};
+
+/// Classifies the mortar multiplier rows of `a` (every nonzero entry read;
+/// explicit zeros, such as a reserved block's, count as absent) and pairs
+/// each closed multiplier (a row with no diagonal) with its pivot: the
+/// displacement equation of its own node with the largest |a_jk|, not yet
+/// taken by another node. A node whose row and column are empty (no
+/// segment overlaps it) or whose displacements are no free equations of
+/// weight 1 is left alone (its equations stay in the kept part).
+/// `columns`: the columns of `a` to read, all when null; otherwise they must
+/// hold the multipliers' columns and every column with an entry in a
+/// multiplier's row (CondensedSolver passes its interface: the rest of a
+/// 230k-dof matrix need not be read at every iteration).
+[[nodiscard]] DualElimination choose_dual_elimination(const SparseMatrix& a, const std::vector<DualNodeEquations>& nodes,
+                                                      const std::vector<int>* columns = nullptr);
 
 /// Work of the last factorize().
 struct DualCondensationStatistics {
