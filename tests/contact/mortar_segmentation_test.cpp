@@ -299,3 +299,26 @@ TEST(Dual2, ZeroHessiansAreSkippedWithTheSameBits) {
       EXPECT_EQ(s.hessian()(i, j), (-0.25 / (root * v) * g_i) * g_j) << i << ", " << j;
     }
 }
+
+// The projections take the derivatives of their roots from the implicit
+// function theorem (Dual2::implicit_root): here the root of
+// F(ξ; a, b) = a ξ² + ξ - b, whose closed form ξ = (√(1 + 4ab) - 1) / (2a)
+// evaluated in Dual2 gives the exact gradient and Hessian to compare with
+// (F_ξξ = 2a ≠ 0, so the curvature term is exercised).
+TEST(Dual2, ImplicitRootMatchesTheClosedForm) {
+  const int n = 3;  // a, b and an unused third variable
+  const Dual2 a = Dual2::variable(0.7, 0, n), b = Dual2::variable(1.9, 1, n);
+  const Dual2 closed = (sqrt(Dual2(1.0) + Dual2(4.0) * a * b) - Dual2(1.0)) / (Dual2(2.0) * a);
+  const double xi = closed.value();
+  const Dual2 x(xi);  // ξ held fixed
+  const Dual2 f = a * x * x + x - b, df = Dual2(2.0) * a * x + Dual2(1.0);
+  const Dual2 root = Dual2::implicit_root(xi, f, df, 2 * a.value());
+  EXPECT_EQ(root.value(), xi);
+  EXPECT_LT((root.gradient() - closed.gradient()).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_LT((root.hessian() - closed.hessian()).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_GT(std::abs(root.hessian()(0, 1)), 0.1);  // a non-trivial Hessian
+  const Dual2::Hessian h = root.hessian();
+  EXPECT_TRUE(h == h.transpose());
+  // F independent of the variables: a constant root.
+  EXPECT_TRUE(Dual2::implicit_root(0.5, Dual2(0.0), Dual2(2.0), 1.0).constant());
+}

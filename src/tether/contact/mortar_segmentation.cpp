@@ -12,9 +12,11 @@ using std::sqrt;
 
 namespace {
 
-/// Newton on the projection equations runs in double; the root's
-/// derivatives then come from the implicit function theorem
-/// (Dual2::implicit_root), from one evaluation of the residual at the root.
+/// Newton steps taken on the root after the iteration has converged (three;
+/// one on a 2-node master face, whose equation is linear): in double, they
+/// take the root to round-off. The root's derivatives come from the
+/// implicit function theorem (Dual2::implicit_root), not from these steps.
+constexpr int kPolishSteps = 3;
 constexpr int kMaxNewton = 50;
 /// Convergence of the double Newton iteration on |Δξ|: the derivative steps
 /// that follow take the root to round-off (quadratic convergence), so this
@@ -139,14 +141,16 @@ struct MasterRay {
 };
 
 /// Newton on a scalar equation given by `residual_double(xi, f, df)`, then
-/// the root with its derivatives from one evaluation of `residual_t` (the
-/// same equation on T) at the converged root: value ξ - f/f' (one more
-/// Newton step, the same in double and Dual2), gradient and Hessian by the
-/// implicit function theorem (exact at a root; Dual2::implicit_root), with
-/// f'' from `residual_t.curvature`. None when it does not converge or leaves
-/// |ξ| <= limit.
+/// `polish_steps` more Newton steps, then (T = Dual2) the root's gradient
+/// and Hessian by the implicit function theorem from one evaluation of
+/// `residual_t` (the same equation on T) at the root, with f'' from
+/// `residual_t.curvature` (exact at a root; Dual2::implicit_root). The
+/// polishing steps compute t - f/f' as the Newton steps on T did before
+/// (Dual2 divides by multiplying with 1/f'), so the roots' values are the
+/// bits they were. None when it does not converge or leaves |ξ| <= limit.
 template <class T, class DoubleResidual, class TResidual>
-std::optional<T> solve_scalar(double start, double limit, DoubleResidual residual_double, TResidual residual_t) {
+std::optional<T> solve_scalar(double start, double limit, DoubleResidual residual_double, TResidual residual_t,
+                              int polish_steps = kPolishSteps) {
   double xi = start;
   bool converged = false;
   for (int it = 0; it < kMaxNewton; ++it) {
@@ -162,13 +166,23 @@ std::optional<T> solve_scalar(double start, double limit, DoubleResidual residua
     }
   }
   if (!converged) return std::nullopt;
-  T f, df;
-  residual_t(T(xi), f, df);
-  const double root = xi - value_of(f) / value_of(df);
-  if constexpr (std::is_same_v<T, double>)
+  double root = xi;
+  for (int k = 0; k < polish_steps; ++k) {
+    double f = 0, df = 0;
+    residual_double(root, f, df);
+    if constexpr (std::is_same_v<T, double>)
+      f /= df;
+    else
+      f *= 1 / df;
+    root -= f;
+  }
+  if constexpr (std::is_same_v<T, double>) {
     return root;
-  else
-    return Dual2::implicit_root(root, f, df, residual_t.curvature(xi));
+  } else {
+    T f, df;
+    residual_t(T(root), f, df);
+    return Dual2::implicit_root(root, f, df, residual_t.curvature(root));
+  }
 }
 
 /// The overlap [ξ_lo, ξ_hi] on slave segment x of master segment y: the
@@ -253,7 +267,7 @@ std::optional<T> project_onto_master(const Vec2T<T>& p, const Vec2T<T>& d, std::
   const Vec2T<double> pd = values(p), dd = values(d);
   const std::vector<Vec2T<double>> yd = values(y);
   return solve_scalar<T>(
-      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y));
+      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y), y.size() == 2 ? 1 : kPolishSteps);
 }
 
 template <class T>
