@@ -8,18 +8,23 @@
 /// only) and on Dual2 (value, exact gradient and Hessian). A Dual2 with an
 /// empty gradient is a constant. Cost of a product: O(n²).
 ///
+/// The Hessian is symmetric: only its lower triangle is stored and computed
+/// (n(n+1)/2 entries, packed column by column), and hessian() mirrors it,
+/// so the Hessian handed out is symmetric bit for bit. A product's entry
+/// (i >= j) is (H_a,ij b + a H_b,ij) + (g_a,i g_b,j + g_b,i g_a,j). This
+/// is about half the work of the dense n × n arithmetic it replaced (whose
+/// two triangles differed in the last bits: the results differ from it by
+/// round-off).
+///
 /// Gradient and Hessian live inside the object (at most kDual2MaxVariables
-/// variables, no heap allocation; a copy moves only the n and n² entries in
-/// use): the mortar kinematics create millions of temporaries per Newton
+/// variables, no heap allocation; a copy moves only the entries in use):
+/// the mortar kinematics create millions of temporaries per Newton
 /// iteration, and allocating each one took about half of their time.
 ///
 /// A Hessian known to be zero (a variable, a constant times one, sums of
 /// such: "flat") is neither stored, copied nor read: products with a flat
-/// operand drop exactly the products that are zero, and hessian() writes the
-/// zeros only when asked (so it is not const in effect: do not call it on one
-/// object from two threads). Each entry computed is the same expression, in
-/// the same order, as in the dense arithmetic, so the results are the same
-/// bits (but for the sign of an entry that is zero either way).
+/// operand drop exactly the products that are zero (the sum without them
+/// is the same, but for the sign of an entry that is zero either way).
 
 #include <Eigen/Core>
 #include <cmath>
@@ -35,14 +40,15 @@ inline constexpr int kDual2MaxVariables = 24;
 
 class Dual2 {
  public:
-  /// Gradient and Hessian storage: dynamic size up to kDual2MaxVariables, in place.
+  /// Gradient storage: dynamic size up to kDual2MaxVariables, in place.
   using Gradient = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kDual2MaxVariables, 1>;
+  /// The full Hessian, as hessian() returns it.
   using Hessian = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kDual2MaxVariables, kDual2MaxVariables>;
 
   /// A constant 0. User-provided, so that value-initialization (`T{}`,
   /// `std::vector<Dual2>(n)`, the members of MortarTerm) does not zero the
-  /// whole in-place storage (about 4.8 kB) before the constructor runs: that
-  /// memset was a tenth of the mortar kinematics' instructions.
+  /// whole in-place storage before the constructor runs: that memset was a
+  /// tenth of the mortar kinematics' instructions.
   Dual2() noexcept {}  // NOLINT(modernize-use-equals-default): see above
   Dual2(double value) : v_(value) {}  // NOLINT: constants mix freely with variables
   /// Copies the Hessian's entries only when they are not known to be zero.
@@ -66,17 +72,23 @@ class Dual2 {
     Dual2 d(value);
     d.g_ = Gradient::Zero(n);
     d.g_[index] = 1;
-    if (hessian) d.h_.resize(n, n), d.flat_ = true;  // zero: the entries are set when asked for
+    if (hessian) d.h_.resize(packed_size(n)), d.flat_ = true;  // zero: not stored
     return d;
   }
 
   [[nodiscard]] double value() const { return v_; }
   /// Gradient (empty for a constant).
   [[nodiscard]] const Gradient& gradient() const { return g_; }
-  /// Hessian (empty for a constant or a first-order value).
-  [[nodiscard]] const Hessian& hessian() const {
-    if (flat_) h_.setZero(), flat_ = false;
-    return h_;
+  /// The full (symmetric) Hessian; empty for a constant or a first-order value.
+  [[nodiscard]] Hessian hessian() const {
+    if (!second()) return Hessian(0, 0);
+    const Eigen::Index n = g_.size();
+    Hessian h(n, n);
+    if (flat_) return h.setZero();
+    const double* p = h_.data();
+    for (Eigen::Index j = 0; j < n; ++j)
+      for (Eigen::Index i = j; i < n; ++i) h(i, j) = h(j, i) = *p++;
+    return h;
   }
   [[nodiscard]] bool constant() const { return g_.size() == 0; }
   /// Carries a Hessian (second-order variables).
@@ -88,16 +100,55 @@ class Dual2 {
     if (constant()) return r;
     r.g_ = df * g_;
     if (!second()) return r;
-    if (flat_)  // df H + (ddf g) gᵀ with H = 0
-      r.h_.noalias() = (ddf * g_) * g_.transpose();
-    else
-      r.h_ = df * h_ + ddf * g_ * g_.transpose();
+    r.h_.resize(h_.size());
+    const Eigen::Index n = g_.size();
+    const double* g = g_.data();
+    double* out = r.h_.data();
+    if (flat_) {  // df H + (ddf g_i) g_j with H = 0
+      for (Eigen::Index j = 0; j < n; ++j)
+        for (Eigen::Index i = j; i < n; ++i) *out++ = (ddf * g[i]) * g[j];
+    } else {
+      const double* h = h_.data();
+      for (Eigen::Index j = 0; j < n; ++j)
+        for (Eigen::Index i = j; i < n; ++i) *out++ = df * *h++ + (ddf * g[i]) * g[j];
+    }
+    return r;
+  }
+
+  /// The root ξ(p) of F(ξ, p) = 0 with the derivatives the implicit
+  /// function theorem gives: `f` = F and `df` = ∂F/∂ξ at the root as Dual2
+  /// over p (ξ held fixed), `ddf` = ∂²F/∂ξ² there, `value` the root. With
+  /// g = ∇ξ = -∇F / F_ξ:
+  ///   ∇²ξ = -(∇²F + ∇F_ξ gᵀ + g ∇F_ξᵀ + F_ξξ g gᵀ) / F_ξ.
+  /// Exact when F(value) = 0; F's value is not used. One pass over the
+  /// Hessian, where Newton steps on Dual2 took two full steps (products of
+  /// Dual2 ξ) to make it exact.
+  [[nodiscard]] static Dual2 implicit_root(double value, const Dual2& f, const Dual2& df, double ddf) {
+    Dual2 r(value);
+    if (f.constant()) return r;  // F does not depend on p: neither does ξ
+    const Eigen::Index n = f.g_.size();
+    const double scale = -1 / df.v_;
+    r.g_ = f.g_ * scale;
+    if (!f.second()) return r;
+    const bool with_df = !df.constant();
+    r.h_.resize(packed_size(n));
+    const double* g = r.g_.data();
+    const double* dg = with_df ? df.g_.data() : nullptr;
+    const double* fh = f.flat_ ? nullptr : f.h_.data();
+    double* out = r.h_.data();
+    for (Eigen::Index j = 0; j < n; ++j)
+      for (Eigen::Index i = j; i < n; ++i, ++out) {
+        double t = ddf * g[i] * g[j];
+        if (with_df) t += dg[i] * g[j] + g[i] * dg[j];
+        if (fh) t += *fh++;
+        *out = scale * t;
+      }
     return r;
   }
 
   /// The value `value` with slope × this Dual2's derivatives, in one pass:
   /// the derivatives of c + slope x for any c, e.g. 0.5 (1 - x) with slope
-  /// -0.5 (the same products as the expression, so the same bits).
+  /// -0.5.
   [[nodiscard]] Dual2 affine(double value, double slope) const {
     Dual2 r;
     r.set_affine(*this, value, slope);
@@ -107,7 +158,7 @@ class Dual2 {
   void set_affine(const Dual2& x, double value, double slope) {
     v_ = value;
     if (x.constant()) {
-      g_.resize(0), h_.resize(0, 0), flat_ = false;
+      g_.resize(0), h_.resize(0), flat_ = false;
       return;
     }
     g_ = x.g_ * slope;
@@ -158,7 +209,7 @@ class Dual2 {
       }
       return *this;
     }
-    if (constant()) {  // b a in one pass (the same products as copying b, then scaling)
+    if (constant()) {  // b a in one pass
       const double a = v_;
       v_ = b.v_ * a;
       g_ = b.g_ * a;
@@ -166,8 +217,6 @@ class Dual2 {
       return *this;
     }
     if (second()) {
-      // h = h b + a H_b + g_a g_bᵀ + g_b g_aᵀ in one pass, the terms added
-      // in that order (the same rounding as four separate passes).
       product_hessian(*this, b, h_.data(), [](double& h, double t) { h = t; });
       flat_ = false;
     }
@@ -191,7 +240,7 @@ class Dual2 {
     }
     const double s = subtract ? -1.0 : 1.0;
     const bool fresh = constant();
-    if (fresh) g_.resize(n), h_.resize(n, n);
+    if (fresh) g_.resize(n), h_.resize(packed_size(n));
     v_ += s * (a.v_ * b.v_);
     for (Eigen::Index i = 0; i < n; ++i) {
       const double t = a.v_ * b.g_[i] + b.v_ * a.g_[i];
@@ -238,7 +287,7 @@ class Dual2 {
       return r *= b;
     }
     Dual2 r(a.v_ * b.v_);
-    r.h_.resize(n, n);
+    r.h_.resize(packed_size(n));
     product_hessian(a, b, r.h_.data(), [](double& h, double t) { h = t; });
     r.g_ = a.v_ * b.g_ + b.v_ * a.g_;
     return r;
@@ -250,10 +299,14 @@ class Dual2 {
   friend bool operator>=(const Dual2& a, const Dual2& b) { return a.v_ >= b.v_; }
 
  private:
-  /// put(h_ij, t_ij) for t = ((H_a b + a H_b) + g_a g_bᵀ) + g_b g_aᵀ (both
-  /// second order over the same n variables), into column-major storage h
-  /// (n × n; h may be a's). A flat Hessian is not read: its products are
-  /// zeros, and the sum without them is the same (but for the sign of a zero).
+  /// Packed lower triangle: column j holds rows j..n-1.
+  using Packed = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kDual2MaxVariables*(kDual2MaxVariables + 1) / 2, 1>;
+  static Eigen::Index packed_size(Eigen::Index n) { return n * (n + 1) / 2; }
+
+  /// put(h_ij, t_ij), i >= j, for t = (H_a b + a H_b) + (g_a,i g_b,j + g_b,i g_a,j)
+  /// (both second order over the same n variables), into packed storage h
+  /// (h may be a's). A flat Hessian is not read: its products are zeros,
+  /// and the sum without them is the same (but for the sign of a zero).
   template <class Put>
   static void product_hessian(const Dual2& a, const Dual2& b, double* h, Put put) {
     if (!a.flat_ && !b.flat_)
@@ -271,22 +324,23 @@ class Dual2 {
     const double av = a.v_, bv = b.v_;
     const double* ga = a.g_.data();
     const double* gb = b.g_.data();
+    const double* ha = a.h_.data();
+    const double* hb = b.h_.data();
+    Eigen::Index p = 0;
     for (Eigen::Index j = 0; j < n; ++j) {
       const double ga_j = ga[j], gb_j = gb[j];
-      double* hj = h + j * n;
-      const double* ha = a.h_.data() + j * n;
-      const double* hb = b.h_.data() + j * n;
-      for (Eigen::Index i = 0; i < n; ++i) {
+      for (Eigen::Index i = j; i < n; ++i, ++p) {
+        const double outer = ga[i] * gb_j + gb[i] * ga_j;
         double t;
         if constexpr (!AFlat && !BFlat)
-          t = ((ha[i] * bv + av * hb[i]) + ga[i] * gb_j) + gb[i] * ga_j;
+          t = (ha[p] * bv + av * hb[p]) + outer;
         else if constexpr (!AFlat)
-          t = (ha[i] * bv + ga[i] * gb_j) + gb[i] * ga_j;
+          t = ha[p] * bv + outer;
         else if constexpr (!BFlat)
-          t = (av * hb[i] + ga[i] * gb_j) + gb[i] * ga_j;
+          t = av * hb[p] + outer;
         else
-          t = ga[i] * gb_j + gb[i] * ga_j;
-        put(hj[i], t);
+          t = outer;
+        put(h[p], t);
       }
     }
   }
@@ -294,7 +348,7 @@ class Dual2 {
   /// The Hessian of b (its storage skipped when flat).
   void copy_hessian(const Dual2& b) {
     if (b.flat_)
-      h_.resize(b.h_.rows(), b.h_.cols());
+      h_.resize(b.h_.size());
     else
       h_ = b.h_;
   }
@@ -302,7 +356,7 @@ class Dual2 {
   void scale_hessian_of(const Dual2& b, double s) {
     flat_ = b.flat_;
     if (b.flat_)
-      h_.resize(b.h_.rows(), b.h_.cols());
+      h_.resize(b.h_.size());
     else
       h_ = b.h_ * s;
   }
@@ -327,11 +381,11 @@ class Dual2 {
 
   double v_ = 0;
   Gradient g_;
-  /// Column-major n × n (n = the gradient's size) when second order. With
-  /// flat_ the Hessian is zero and the stored entries are not set (hessian()
-  /// sets them): variables and their linear combinations skip the n² work.
-  mutable Hessian h_;
-  mutable bool flat_ = false;
+  /// The lower triangle of the Hessian, packed by columns (n(n+1)/2 for n
+  /// the gradient's size) when second order. With flat_ the Hessian is zero
+  /// and the stored entries are not set.
+  Packed h_;
+  bool flat_ = false;
 };
 
 inline Dual2 sqrt(const Dual2& a) {

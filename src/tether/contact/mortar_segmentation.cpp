@@ -12,13 +12,11 @@ using std::sqrt;
 
 namespace {
 
-/// Newton steps run on T after the double iteration has converged: each
-/// step raises the order of the derivatives that are exact by one, so three
-/// leave value, gradient and Hessian of the root exact to round-off. (Two
-/// would do in exact arithmetic, but change the results in the last bits,
-/// and the frictional CGS-4 run then takes another path through its active
-/// sets: 39 iterations instead of 25.)
-constexpr int kDerivativeSteps = 3;
+/// Newton steps taken on the root after the iteration has converged (three;
+/// one on a 2-node master face, whose equation is linear): in double, they
+/// take the root to round-off. The root's derivatives come from the
+/// implicit function theorem (Dual2::implicit_root), not from these steps.
+constexpr int kPolishSteps = 3;
 constexpr int kMaxNewton = 50;
 /// Convergence of the double Newton iteration on |Δξ|: the derivative steps
 /// that follow take the root to round-off (quadratic convergence), so this
@@ -64,6 +62,11 @@ Vec2T<T> interpolate(std::span<const Vec2T<T>> x, const std::array<T, 3>& N) {
   return r;
 }
 
+/// d²N/dξ² of a 2- or 3-node segment (constant).
+void second_shapes(int n_nodes, std::array<double, 3>& ddN) {
+  ddN = n_nodes == 2 ? std::array<double, 3>{0.0, 0.0, 0.0} : std::array<double, 3>{1.0, 1.0, -2.0};
+}
+
 /// f(ξ) = (p - x(ξ)) × n(ξ) and f'(ξ) on a slave segment with nodal normals.
 /// The derivatives x'(ξ) and n'(ξ) of a 2-node segment do not depend on ξ:
 /// they are computed once per projection (`SlaveRay`), bit for bit the same.
@@ -92,6 +95,19 @@ struct SlaveRay {
     const Vec2T<T> dn_xi = interpolate(normals, dN), dx_xi = interpolate(x, dN);
     df = cross(d, dn_xi) - cross(dx_xi, n);
   }
+  /// f''(ξ) = (p - x) × n'' - 2 x' × n' - x'' × n (values).
+  double curvature(double xi) const {
+    std::array<double, 3> N, dN, ddN;
+    segment_shapes(static_cast<int>(x.size()), xi, N, dN);
+    second_shapes(static_cast<int>(x.size()), ddN);
+    const auto at = [&](std::span<const Vec2T<T>> v, const std::array<double, 3>& w) {
+      Vec2T<double> r{0.0, 0.0};
+      for (std::size_t a = 0; a < v.size(); ++a) r = r + w[a] * Vec2T<double>{value_of(v[a].x), value_of(v[a].y)};
+      return r;
+    };
+    const Vec2T<double> d = Vec2T<double>{value_of(p.x), value_of(p.y)} - at(x, N);
+    return cross(d, at(normals, ddN)) - 2.0 * cross(at(x, dN), at(normals, dN)) - cross(at(x, ddN), at(normals, N));
+  }
 };
 
 /// f(η) = (y(η) - p) × d and f'(η) on a master segment; f' of a 2-node
@@ -114,14 +130,27 @@ struct MasterRay {
     f = cross(interpolate(y, N) - p, d);
     df = df2 ? *df2 : cross(interpolate(y, dN), d);
   }
+  /// f''(η) = y''(η) × d (values).
+  double curvature(double /*eta*/) const {
+    std::array<double, 3> ddN;
+    second_shapes(static_cast<int>(y.size()), ddN);
+    Vec2T<double> ddy{0.0, 0.0};
+    for (std::size_t a = 0; a < y.size(); ++a) ddy = ddy + ddN[a] * Vec2T<double>{value_of(y[a].x), value_of(y[a].y)};
+    return cross(ddy, Vec2T<double>{value_of(d.x), value_of(d.y)});
+  }
 };
 
-/// Newton on a scalar equation given by `residual(xi, f, df)` for the
-/// double inputs, then kDerivativeSteps on T. None when it does not converge
-/// or leaves |ξ| <= limit.
+/// Newton on a scalar equation given by `residual_double(xi, f, df)`, then
+/// `polish_steps` more Newton steps, then (T = Dual2) the root's gradient
+/// and Hessian by the implicit function theorem from one evaluation of
+/// `residual_t` (the same equation on T) at the root, with f'' from
+/// `residual_t.curvature` (exact at a root; Dual2::implicit_root). The
+/// polishing steps compute t - f/f' as the Newton steps on T did before
+/// (Dual2 divides by multiplying with 1/f'), so the roots' values are the
+/// bits they were. None when it does not converge or leaves |ξ| <= limit.
 template <class T, class DoubleResidual, class TResidual>
 std::optional<T> solve_scalar(double start, double limit, DoubleResidual residual_double, TResidual residual_t,
-                              int derivative_steps = kDerivativeSteps) {
+                              int polish_steps = kPolishSteps) {
   double xi = start;
   bool converged = false;
   for (int it = 0; it < kMaxNewton; ++it) {
@@ -137,14 +166,23 @@ std::optional<T> solve_scalar(double start, double limit, DoubleResidual residua
     }
   }
   if (!converged) return std::nullopt;
-  T t(xi);
-  for (int k = 0; k < derivative_steps; ++k) {
-    T f, df;
-    residual_t(t, f, df);
-    f /= df;  // t - f / df, in place: the same operations
-    t -= f;
+  double root = xi;
+  for (int k = 0; k < polish_steps; ++k) {
+    double f = 0, df = 0;
+    residual_double(root, f, df);
+    if constexpr (std::is_same_v<T, double>)
+      f /= df;
+    else
+      f *= 1 / df;
+    root -= f;
   }
-  return t;
+  if constexpr (std::is_same_v<T, double>) {
+    return root;
+  } else {
+    T f, df;
+    residual_t(T(root), f, df);
+    return Dual2::implicit_root(root, f, df, residual_t.curvature(root));
+  }
 }
 
 /// The overlap [ξ_lo, ξ_hi] on slave segment x of master segment y: the
@@ -229,7 +267,7 @@ std::optional<T> project_onto_master(const Vec2T<T>& p, const Vec2T<T>& d, std::
   const Vec2T<double> pd = values(p), dd = values(d);
   const std::vector<Vec2T<double>> yd = values(y);
   return solve_scalar<T>(
-      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y), y.size() == 2 ? 1 : kDerivativeSteps);
+      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y), y.size() == 2 ? 1 : kPolishSteps);
 }
 
 template <class T>
