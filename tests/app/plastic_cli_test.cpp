@@ -80,3 +80,42 @@ TEST(Cli, PlaneStressStripPulledByPressureRunsWithAllWritersAndReadsBackTheClose
   EXPECT_NEAR(S[0], p, 1e-8 * p);
   for (double v : P) EXPECT_NEAR(v, ep, 1e-8 * ep);
 }
+
+TEST(Cli, PlasticTemperatureTableBarRunsWithAllWritersAndReadsBackTheHotCurve) {
+  // tests/analysis/decks/plastic_bar_temperature.inp: pulled at 150 degrees,
+  // heated to 300 at fixed strain; at the end the stress is on the curve of
+  // 300 degrees: p + (100 + 4000 p) / E = 0.02 (PlasticTemperature tests).
+  const fs::path dir = scratch("plastic_bar_temperature");
+  const fs::path deck = fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/plastic_bar_temperature.inp";
+  const auto run = tether("run --ascii " + deck.string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(run.code, 0) << run.out;
+  const std::string job = "plastic_bar_temperature";
+  for (const std::string f : {".pvd", ".dat", ".sta", ".msg", "_1_10.vtu", "_2_4.vtu"})
+    EXPECT_TRUE(fs::exists(dir / "out" / (job + f))) << f;
+  const double p = 0.0195 / 1.02, s = 100 + 4000 * p;
+
+  // .dat (7 digits): the last stress and PEEQ rows.
+  const std::string dat = slurp(dir / "out" / (job + ".dat"));
+  const auto last_block = [&](const std::string& title) {
+    const auto at = dat.rfind(title);
+    return at == std::string::npos ? std::string{} : dat.substr(dat.find('\n', at) + 1);
+  };
+  int element = 0, point = 0;
+  double sd[6] = {}, peeq = 0;
+  ASSERT_EQ(std::sscanf(last_block(" stresses (elem").c_str(), "%d %d %lf %lf %lf %lf %lf %lf", &element, &point,
+                        &sd[0], &sd[1], &sd[2], &sd[3], &sd[4], &sd[5]),
+            8);
+  EXPECT_NEAR(sd[0], s, 1e-6 * s);
+  ASSERT_EQ(std::sscanf(last_block(" equivalent plastic strain").c_str(), "%d %d %lf", &element, &point, &peeq), 3);
+  EXPECT_NEAR(peeq, p, 1e-6 * p);
+
+  // The last VTU at full precision: S and PEEQ, and U of node 2 (the strain 0.02 held).
+  const std::string vtu = slurp(dir / "out" / (job + "_2_4.vtu"));
+  const std::vector<double> S = vtu_values(vtu, "S", 1), P = vtu_values(vtu, "PEEQ", 4), U = vtu_values(vtu, "U", 6);
+  ASSERT_EQ(S.size(), 1u);
+  ASSERT_EQ(P.size(), 4u);
+  ASSERT_EQ(U.size(), 6u);
+  EXPECT_NEAR(S[0], s, 1e-9 * s);
+  for (double v : P) EXPECT_NEAR(v, p, 1e-10);
+  EXPECT_NEAR(U[3], 0.2, 1e-12);
+}

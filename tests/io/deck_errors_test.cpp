@@ -239,6 +239,27 @@ TEST(DeckErrors, PlasticTableNamesTheBadLine) {
                        {"already has *PLASTIC"});
 }
 
+TEST(DeckErrors, PlasticTemperatureTableNamesTheBadLine) {
+  const std::string plastic = replaced(kDeck, "200e3, 0.3",
+                                       "200e3, 0.3\n*PLASTIC\n250, 0, 20\n300, 0.02, 20\n150, 0, 400\n200, 0.03, 400");
+  expect_deck_error_at(replaced(plastic, "150, 0, 400", "150, 0, 10"), "150, 0, 10",
+                       {"*PLASTIC temperature 10", "expected the temperatures to increase", "previous is 20"});
+  expect_deck_error_at(replaced(plastic, "150, 0, 400", "150, 0.01, 400"), "150, 0.01, 400",
+                       {"*PLASTIC plastic strain 0.01 on the first line of temperature 400", "expected 0"});
+  expect_deck_error_at(replaced(plastic, "200, 0.03, 400", "200, 0.03"), "200, 0.03\n",
+                       {"gives no temperature on this line", "every line or none"});
+  expect_deck_error_at(replaced(plastic, "250, 0, 20\n", "250, 0\n"), "300, 0.02, 20",
+                       {"gives a temperature (20) on this line but not on the first"});
+  expect_deck_error_at(replaced(plastic, "200, 0.03, 400", "200, 0, 400"), "200, 0, 400",
+                       {"*PLASTIC plastic strain 0", "greater than the previous line's (0)"});
+  expect_deck_error_at(replaced(plastic, "150, 0, 400", "-150, 0, 400"), "-150, 0, 400", {"yield stress > 0"});
+  expect_deck_error_at(replaced(plastic, "150, 0, 400", "150, 0, hot"), "150, 0, hot", {"*PLASTIC temperature"});
+  // *CYCLIC HARDENING reads the same table.
+  const std::string combined = replaced(replaced(plastic, "*PLASTIC", "*PLASTIC, HARDENING=COMBINED"),
+                                        "200, 0.03, 400", "200, 0.03, 400\n*CYCLIC HARDENING\n250, 0, 20\n240, 0, 5");
+  expect_deck_error_at(combined, "240, 0, 5", {"*CYCLIC HARDENING temperature 5", "increase"});
+}
+
 TEST(DeckErrors, SectionThicknessAndDensity) {
   expect_deck_error_at(replaced(kDeck, "MATERIAL=STEEL\n1.0", "MATERIAL=STEEL\n-1.0"), "-1.0", {"thickness > 0"});
   expect_deck_error_at(replaced(kDeck, "200e3, 0.3", "200e3, 0.3\n*DENSITY\n0"), "\n0\n",

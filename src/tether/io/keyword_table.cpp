@@ -153,8 +153,10 @@ std::vector<KeywordSpec> build_table() {
        "Von Mises plasticity on the material's *ELASTIC range (small strain; multiplicative with Hencky elasticity "
        "under NLGEOM, every hardening kind and element family; docs/theory/plasticity.md): true yield "
        "stress against equivalent plastic strain, piecewise linear, constant beyond the last row.",
-       "`yield stress, plastic strain` per line, yield stress > 0, plastic strain 0 on the first line and strictly "
-       "increasing (no temperature column)",
+       "`yield stress, plastic strain[, temperature]` per line, yield stress > 0; without temperatures one curve, "
+       "plastic strain 0 on the first line and strictly increasing; with them one such curve per temperature, the "
+       "temperatures increasing from curve to curve, interpolated linearly in temperature at the same plastic "
+       "strain and constant outside their range (as ABAQUS); no field variables",
        {choice("HARDENING", "ISOTROPIC", {"ISOTROPIC", "KINEMATIC", "COMBINED"},
                "ISOTROPIC: the yield stress follows the table; KINEMATIC: the yield stress stays the first one and "
                "the back stress grows with the table's slope (Prager-Ziegler, linear kinematic hardening for two "
@@ -164,7 +166,7 @@ std::vector<KeywordSpec> build_table() {
       {"CYCLIC HARDENING", kMaterial,
        "The isotropic part of *PLASTIC, HARDENING=COMBINED (given after it): the yield stress against the "
        "equivalent plastic strain, piecewise linear, constant beyond the last row.",
-       "`yield stress, plastic strain` per line, as for *PLASTIC (no temperature column; no PARAMETERS form)",
+       "`yield stress, plastic strain[, temperature]` per line, as for *PLASTIC (no PARAMETERS form)",
        {},
        handle_cyclic_hardening, ""},
       {"USER MATERIAL", kMaterial,

@@ -1,5 +1,7 @@
 #include "tether/materials/constitutive_model.hpp"
 
+#include <cstddef>
+
 #include "tether/materials/j2_plasticity.hpp"
 #include "tether/materials/linear_elastic.hpp"
 #include "tether/materials/neo_hooke.hpp"
@@ -16,6 +18,26 @@ namespace {
   throw ModelError(where + "material " + data.name + ": " + what);
 }
 
+/// The hardening table of rows (plastic strain, yield stress[, temperature]):
+/// one curve per run of equal temperatures, or one curve without the column.
+/// Throws std::invalid_argument from HardeningCurve / HardeningTable.
+HardeningTable hardening_table(const std::vector<double>& strain, const std::vector<double>& stress,
+                               const std::vector<double>& temperature) {
+  if (temperature.empty()) return HardeningCurve(strain, stress);
+  std::vector<double> temperatures;
+  std::vector<HardeningCurve> curves;
+  for (std::size_t begin = 0, end = 0; begin < strain.size(); begin = end) {
+    while (end < strain.size() && temperature[end] == temperature[begin]) ++end;
+    const auto at = [&](const std::vector<double>& v) {
+      return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(begin),
+                                 v.begin() + static_cast<std::ptrdiff_t>(end));
+    };
+    temperatures.push_back(temperature[begin]);
+    curves.emplace_back(at(strain), at(stress));
+  }
+  return {std::move(temperatures), std::move(curves)};
+}
+
 std::unique_ptr<ConstitutiveModel> make_plasticity(const MaterialData& data) {
   const MaterialData::Plastic& p = *data.plastic;
   for (double y : p.yield_stress)
@@ -28,12 +50,12 @@ std::unique_ptr<ConstitutiveModel> make_plasticity(const MaterialData& data) {
   if (!combined && !p.cyclic_yield_stress.empty())
     fail(data, "*CYCLIC HARDENING (" + p.cyclic_where.str() + ") needs *PLASTIC, HARDENING=COMBINED");
   try {
-    HardeningCurve curve(p.plastic_strain, p.yield_stress);
+    HardeningTable curve = hardening_table(p.plastic_strain, p.yield_stress, p.temperature);
     const auto hardening = p.hardening == Kind::Kinematic ? J2Plasticity::Hardening::Kinematic
                            : combined                     ? J2Plasticity::Hardening::Combined
                                                           : J2Plasticity::Hardening::Isotropic;
-    std::optional<HardeningCurve> cyclic;
-    if (combined) cyclic.emplace(p.cyclic_plastic_strain, p.cyclic_yield_stress);
+    std::optional<HardeningTable> cyclic;
+    if (combined) cyclic = hardening_table(p.cyclic_plastic_strain, p.cyclic_yield_stress, p.cyclic_temperature);
     return std::make_unique<J2Plasticity>(data.elastic->young, data.elastic->poisson, std::move(curve), hardening,
                                           std::move(cyclic));
   } catch (const std::invalid_argument& e) {

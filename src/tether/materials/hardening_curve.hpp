@@ -1,5 +1,6 @@
 #pragma once
-/// \file Piecewise-linear hardening curve y(p) of the equivalent plastic strain.
+/// \file Piecewise-linear hardening curve y(p) of the equivalent plastic
+/// strain, and the table of such curves against temperature.
 
 #include <vector>
 
@@ -31,6 +32,49 @@ class HardeningCurve {
   [[nodiscard]] int segment(double p) const;
 
   std::vector<double> p_, y_;
+};
+
+/// The *PLASTIC table with a temperature column: one HardeningCurve per
+/// temperature T_0 < T_1 < ... . At a temperature T between T_k and T_k+1
+/// the values are interpolated linearly in T between the two curves, each
+/// evaluated at the same p: y(p, T) = (1 - w) y_k(p) + w y_k+1(p), w = (T -
+/// T_k) / (T_k+1 - T_k); constant (the first or last curve) outside [T_0,
+/// T_last], as ABAQUS does. Slopes and integrals are at fixed T. One curve:
+/// independent of T (the table without a temperature column).
+class HardeningTable {
+ public:
+  /// A temperature-independent table (implicit: a curve is a one-row table).
+  HardeningTable(HardeningCurve curve);  // NOLINT(google-explicit-constructor)
+  /// temperatures strictly increasing [temperature], one curve each (>= 1).
+  /// Throws std::invalid_argument when the sizes differ, there is no curve or
+  /// the temperatures do not increase strictly.
+  HardeningTable(std::vector<double> temperatures, std::vector<HardeningCurve> curves);
+
+  /// y(p, T) [stress].
+  [[nodiscard]] double value(double p, double T) const;
+  /// dy/dp at fixed T [stress] (HardeningCurve::slope of each curve).
+  [[nodiscard]] double slope(double p, double T) const;
+  /// Integral of y(., T) over [a, b], 0 <= a <= b [stress].
+  [[nodiscard]] double integral(double a, double b, double T) const;
+  /// y(0, T) [stress].
+  [[nodiscard]] double initial(double T) const { return value(0, T); }
+  [[nodiscard]] bool depends_on_temperature() const { return curves_.size() > 1; }
+  [[nodiscard]] int n_temperatures() const { return static_cast<int>(curves_.size()); }
+  /// Table rows over all temperatures.
+  [[nodiscard]] int n_points() const;
+
+ private:
+  /// The bracketing curves k, k+1 and the weight w of k+1 (k+1 = k, w = 0 outside the range).
+  struct Bracket {
+    int k;
+    double w;
+  };
+  [[nodiscard]] Bracket bracket(double T) const;
+  template <class F>
+  [[nodiscard]] double mix(double T, F&& f) const;
+
+  std::vector<double> t_;
+  std::vector<HardeningCurve> curves_;
 };
 
 }  // namespace tether

@@ -72,7 +72,7 @@ void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
                                         MaterialResponse& out) const {
   const bool loading = loading_tangent_applies(where);
   if (!plane_stress) {
-    finite_strain_return(C, old_state, new_state, loading, out);
+    finite_strain_return(C, old_state, new_state, loading, where.temperature, out);
     return;
   }
   if (C(0, 2) != 0 || C(1, 2) != 0) throw ModelError("plane stress needs C13 = C23 = 0");
@@ -81,7 +81,7 @@ void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
   // leaves S33 at round-off (quadratic convergence).
   bool last = false;
   for (int it = 0; it < 50; ++it) {
-    finite_strain_return(C, old_state, new_state, loading, out);
+    finite_strain_return(C, old_state, new_state, loading, where.temperature, out);
     if (last) {
       out.thickness_sensitivity = thickness_sensitivity(out.tangent);
       condense_out_of_plane(out.tangent);
@@ -98,7 +98,7 @@ void J2Plasticity::update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, s
 }
 
 void J2Plasticity::finite_strain_return(const Eigen::Matrix3d& C, std::span<const double> old_state,
-                                        std::span<double> new_state, bool on_surface_loading,
+                                        std::span<double> new_state, bool on_surface_loading, double T,
                                         MaterialResponse& out) const {
   // State: E_p = (I - Cp^-1) / 2 (Voigt, engineering shear; as CalculiX reports
   // PE under NLGEOM), the back stress B on the rotated axes R^T (.) R of F = R U, PEEQ.
@@ -119,7 +119,7 @@ void J2Plasticity::finite_strain_return(const Eigen::Matrix3d& C, std::span<cons
   double start[kStateSize] = {}, end[kStateSize] = {};
   for (int i = 6; i < kStateSize; ++i) start[i] = end[i] = old_state[i];  // the elastic branch writes nothing
   MaterialResponse r;
-  general_return(eps, start, end, on_surface_loading, r);
+  general_return(eps, start, end, on_surface_loading, T, r);
 
   // be = exp(2 (ee_trial - d eps_p)), the exponential map (exact when the flow
   // is coaxial with be*, always so without back stress); Cp^-1 = U^-1 be U^-1.

@@ -80,8 +80,8 @@ struct J2Plasticity::Hardened {
   double H, dH;  ///< uniaxial back stress function and dH/dp
 };
 
-J2Plasticity::J2Plasticity(double young, double poisson, HardeningCurve curve, Hardening hardening,
-                           std::optional<HardeningCurve> cyclic)
+J2Plasticity::J2Plasticity(double young, double poisson, HardeningTable curve, Hardening hardening,
+                           std::optional<HardeningTable> cyclic)
     : young_(young),
       poisson_(poisson),
       elastic_(young, poisson),
@@ -92,26 +92,26 @@ J2Plasticity::J2Plasticity(double young, double poisson, HardeningCurve curve, H
     throw std::invalid_argument("combined hardening needs the cyclic hardening table");
 }
 
-J2Plasticity::Hardened J2Plasticity::hardened(double p) const {
-  if (hardening_ == Hardening::Isotropic) return {curve_.value(p), curve_.slope(p), 0, 0};
-  const double H = curve_.value(p) - curve_.initial(), dH = curve_.slope(p);
-  if (hardening_ == Hardening::Combined) return {cyclic_->value(p), cyclic_->slope(p), H, dH};
-  return {curve_.initial(), 0, H, dH};
+J2Plasticity::Hardened J2Plasticity::hardened(double p, double T) const {
+  if (hardening_ == Hardening::Isotropic) return {curve_.value(p, T), curve_.slope(p, T), 0, 0};
+  const double H = curve_.value(p, T) - curve_.initial(T), dH = curve_.slope(p, T);
+  if (hardening_ == Hardening::Combined) return {cyclic_->value(p, T), cyclic_->slope(p, T), H, dH};
+  return {curve_.initial(T), 0, H, dH};
 }
 
-double J2Plasticity::plastic_work(double p_old, double dp, double alpha_dot_n) const {
+double J2Plasticity::plastic_work(double p_old, double dp, double alpha_dot_n, double T) const {
   // sigma : d eps_p along the return, d eps_p = sqrt(3/2) dp n: the relative
   // stress gives K dp, the back stress (alpha_n + sqrt(2/3) (H - H_n) n) : n
   // sqrt(3/2) dp; summed, (K + H)(p) dp - H_n dp + sqrt(3/2) alpha_n : n dp,
   // with K + H = y for isotropic and kinematic hardening, c + y - y(0) for combined.
   const double p_new = p_old + dp;
-  double k_plus_h = curve_.integral(p_old, p_new);
-  if (hardening_ == Hardening::Combined) k_plus_h += cyclic_->integral(p_old, p_new) - curve_.initial() * dp;
-  return k_plus_h - hardened(p_old).H * dp + kSqrt32 * alpha_dot_n * dp;
+  double k_plus_h = curve_.integral(p_old, p_new, T);
+  if (hardening_ == Hardening::Combined) k_plus_h += cyclic_->integral(p_old, p_new, T) - curve_.initial(T) * dp;
+  return k_plus_h - hardened(p_old, T).H * dp + kSqrt32 * alpha_dot_n * dp;
 }
 
-double J2Plasticity::yield_radius(double p) const { return hardened(p).K; }
-double J2Plasticity::kinematic(double p) const { return hardened(p).H; }
+double J2Plasticity::yield_radius(double p, double T) const { return hardened(p, T).K; }
+double J2Plasticity::kinematic(double p, double T) const { return hardened(p, T).H; }
 
 Vec6 J2Plasticity::plastic_strain(std::span<const double> state) const {
   return Eigen::Map<const Vec6>(state.data());
@@ -121,6 +121,9 @@ std::string J2Plasticity::describe() const {
   const char* kind = hardening_ == Hardening::Isotropic   ? "isotropic"
                      : hardening_ == Hardening::Kinematic ? "kinematic"
                                                           : "combined";
+  if (curve_.depends_on_temperature())
+    return fmt::format("von Mises plasticity (E={:g}, nu={:g}, {} hardening, {} table rows at {} temperatures)",
+                       young_, poisson_, kind, curve_.n_points(), curve_.n_temperatures());
   return fmt::format("von Mises plasticity (E={:g}, nu={:g}, yield stress {:g}, {} hardening, {} table rows)",
                      young_, poisson_, yield_radius(0), kind, curve_.n_points());
 }
@@ -130,13 +133,13 @@ void J2Plasticity::update_small_strain(Vec6& eps, bool plane_stress, std::span<c
                                        MaterialResponse& out) const {
   std::copy(old_state.begin(), old_state.end(), new_state.begin());
   if (plane_stress)
-    plane_stress_return(eps, old_state, new_state, loading_tangent_applies(where), out);
+    plane_stress_return(eps, old_state, new_state, loading_tangent_applies(where), where.temperature, out);
   else
-    general_return(eps, old_state, new_state, loading_tangent_applies(where), out);
+    general_return(eps, old_state, new_state, loading_tangent_applies(where), where.temperature, out);
 }
 
 void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
-                                  bool on_surface_loading, MaterialResponse& out) const {
+                                  bool on_surface_loading, double T, MaterialResponse& out) const {
   const double mu = elastic_.mu(), kappa = elastic_.lambda() + 2 * mu / 3;
   const Eigen::Map<const Vec6> ep_old(old_state.data()), alpha_old(old_state.data() + 6);
   const double p_old = old_state[12];
@@ -148,7 +151,7 @@ void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, 
   const Vec6 xi_trial = s_trial - alpha_old;
   const double xi_norm = tensor_norm(xi_trial);
   const double q_trial = kSqrt32 * xi_norm;  // von Mises of the relative trial stress
-  const Hardened h_old = hardened(p_old);
+  const Hardened h_old = hardened(p_old, T);
   Vec6 pressure_part = Vec6::Zero();
   pressure_part.head<3>().setConstant(kappa * volumetric);
 
@@ -164,12 +167,12 @@ void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, 
   const double dp = inside ? 0.0
                            : solve_plastic_increment(
                                  [&](double x, double& slope) {
-                                   const Hardened h = hardened(p_old + x);
+                                   const Hardened h = hardened(p_old + x, T);
                                    slope = -3 * mu - h.dK - h.dH;
                                    return q_trial - 3 * mu * x - (h.H - h_old.H) - h.K;
                                  },
                                  (q_trial - h_old.K) / (3 * mu), 1e-14 * q_trial);
-  const Hardened h = hardened(p_old + dp);
+  const Hardened h = hardened(p_old + dp, T);
   const Vec6 n = xi_trial / xi_norm;
   Vec6 n_strain = n;  // engineering shear
   n_strain.tail<3>() *= 2;
@@ -188,11 +191,11 @@ void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, 
   out.tangent = 2 * mu * theta * dev - 2 * mu * theta_bar * n * n.transpose();
   out.tangent.topLeftCorner<3, 3>().array() += kappa;
   out.elastic_energy = 0.5 * out.stress.dot(eps - ep);
-  out.dissipation = plastic_work(p_old, dp, alpha_old.dot(n_strain));
+  out.dissipation = plastic_work(p_old, dp, alpha_old.dot(n_strain), T);
 }
 
 void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
-                                       bool on_surface_loading, MaterialResponse& out) const {
+                                       bool on_surface_loading, double T, MaterialResponse& out) const {
   const Eigen::Matrix3d C = plane_stress_elasticity(young_, poisson_);
   const Eigen::Matrix3d P = plane_stress_projection();
   const Eigen::Map<const Vec6> ep_old(old_state.data()), alpha_old(old_state.data() + 6);
@@ -203,7 +206,7 @@ void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_st
   const Eigen::Vector3d sigma_trial = C * (e - ep_r);
   const Eigen::Vector3d eta_trial = sigma_trial - beta_old;
   const double q_trial = kSqrt32 * std::sqrt(eta_trial.dot(P * eta_trial));
-  const Hardened h_old = hardened(p_old);
+  const Hardened h_old = hardened(p_old, T);
   const auto finish = [&](const Eigen::Vector3d& sigma, const Eigen::Matrix3d& D, const Vec6& ep) {
     out.stress.setZero();
     out.tangent.setZero();
@@ -228,7 +231,7 @@ void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_st
     Eigen::Vector3d eta, deta;  // eta and d eta / d dp
   };
   const auto trial_at = [&](double dp) {
-    const Hardened h = hardened(p_old + dp);
+    const Hardened h = hardened(p_old + dp, T);
     Trial t;
     t.q = kSqrt23 * h.K;
     t.dq = kSqrt23 * h.dK;
@@ -269,7 +272,7 @@ void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_st
   new_state[12] = p_old + dp;
   Vec6 xi = Vec6::Zero();  // deviatoric relative stress, shear doubled; |xi| = q at convergence
   xi << (2 * t.eta(0) - t.eta(1)) / 3, (2 * t.eta(1) - t.eta(0)) / 3, -(t.eta(0) + t.eta(1)) / 3, 2 * t.eta(2), 0, 0;
-  out.dissipation = plastic_work(p_old, dp, alpha_old.dot(xi) / t.q);
+  out.dissipation = plastic_work(p_old, dp, alpha_old.dot(xi) / t.q, T);
   finish(sigma, D, ep);
 }
 

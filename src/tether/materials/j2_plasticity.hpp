@@ -43,10 +43,11 @@ class J2Plasticity final : public ConstitutiveModel {
   static constexpr int kStateSize = 13;
 
   /// young > 0, poisson in (-1, 0.5), curve values > 0 (checked by the
-  /// caller). `cyclic`: the yield stress against PEEQ of Combined hardening
-  /// (values > 0); required for Combined, ignored otherwise.
-  J2Plasticity(double young, double poisson, HardeningCurve curve, Hardening hardening,
-               std::optional<HardeningCurve> cyclic = std::nullopt);
+  /// caller); `curve` may depend on the temperature (the *PLASTIC
+  /// temperature column). `cyclic`: the yield stress against PEEQ of Combined
+  /// hardening (values > 0); required for Combined, ignored otherwise.
+  J2Plasticity(double young, double poisson, HardeningTable curve, Hardening hardening,
+               std::optional<HardeningTable> cyclic = std::nullopt);
 
   [[nodiscard]] int n_state() const override { return kStateSize; }
   void update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
@@ -71,10 +72,10 @@ class J2Plasticity final : public ConstitutiveModel {
   [[nodiscard]] double shear_modulus() const override { return elastic_.mu(); }
   [[nodiscard]] std::string describe() const override;
 
-  /// Radius of the yield surface at PEEQ p (as a uniaxial stress) [stress].
-  [[nodiscard]] double yield_radius(double p) const;
-  /// Kinematic part: the uniaxial back stress magnitude function H(p) [stress].
-  [[nodiscard]] double kinematic(double p) const;
+  /// Radius of the yield surface at PEEQ p and temperature T (as a uniaxial stress) [stress].
+  [[nodiscard]] double yield_radius(double p, double T = 0) const;
+  /// Kinematic part: the uniaxial back stress magnitude function H(p) at T [stress].
+  [[nodiscard]] double kinematic(double p, double T = 0) const;
 
   /// True when a point on the yield surface gets the loading tangent (the
   /// plastic branch's at a zero plastic increment) rather than the elastic
@@ -90,27 +91,30 @@ class J2Plasticity final : public ConstitutiveModel {
   }
 
  private:
-  struct Hardened;  // K, H and slopes at one p
-  [[nodiscard]] Hardened hardened(double p) const;
+  struct Hardened;  // K, H and slopes at one p and T
+  /// The hardening functions at PEEQ p and temperature T [stress]; slopes at fixed T.
+  [[nodiscard]] Hardened hardened(double p, double T) const;
   /// Plastic work density of a return from PEEQ p_old by dp in the direction
-  /// n (unit deviatoric tensor), given alpha_n : n [energy/volume].
-  [[nodiscard]] double plastic_work(double p_old, double dp, double alpha_dot_n) const;
-  /// The returns. `on_surface_loading`: a trial state on the yield surface
-  /// (within kOnSurfaceTolerance below it) gets the loading tangent instead
-  /// of the elastic one (see loading_tangent_applies).
+  /// n (unit deviatoric tensor) at temperature T, given alpha_n : n [energy/volume].
+  [[nodiscard]] double plastic_work(double p_old, double dp, double alpha_dot_n, double T) const;
+  /// The returns, at the temperature T of the end of the increment (the
+  /// point's current temperature; the hardening functions of the whole
+  /// return are those of the curve at T). `on_surface_loading`: a trial state
+  /// on the yield surface (within kOnSurfaceTolerance below it) gets the
+  /// loading tangent instead of the elastic one (see loading_tangent_applies).
   void general_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
-                      bool on_surface_loading, MaterialResponse& out) const;
+                      bool on_surface_loading, double T, MaterialResponse& out) const;
   void plane_stress_return(Vec6& eps, std::span<const double> old_state, std::span<double> new_state,
-                           bool on_surface_loading, MaterialResponse& out) const;
+                           bool on_surface_loading, double T, MaterialResponse& out) const;
   /// Finite-strain update at C (3D; plane strain and axisymmetry): PK2, dS/dE, state.
   void finite_strain_return(const Eigen::Matrix3d& C, std::span<const double> old_state, std::span<double> new_state,
-                            bool on_surface_loading, MaterialResponse& out) const;
+                            bool on_surface_loading, double T, MaterialResponse& out) const;
 
   double young_, poisson_;
   LinearElastic elastic_;
-  HardeningCurve curve_;
+  HardeningTable curve_;
   Hardening hardening_;
-  std::optional<HardeningCurve> cyclic_;  ///< Combined: the yield stress c(p)
+  std::optional<HardeningTable> cyclic_;  ///< Combined: the yield stress c(p, T)
 };
 
 }  // namespace tether

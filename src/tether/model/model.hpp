@@ -89,11 +89,15 @@ struct MaterialData {
     enum class Hardening { Isotropic, Kinematic, Combined };
     Hardening hardening = Hardening::Isotropic;
     std::vector<double> yield_stress;    ///< [stress], > 0, one per row
-    std::vector<double> plastic_strain;  ///< [-], 0 first, strictly increasing
+    std::vector<double> plastic_strain;  ///< [-], 0 first, strictly increasing (within each temperature)
+    /// The temperature column, one per row [temperature]; empty without it.
+    /// Rows of one temperature form one curve (plastic strain 0 first);
+    /// temperatures increase from curve to curve.
+    std::vector<double> temperature;
     SourceLocation where;                ///< the *PLASTIC line
     /// `*CYCLIC HARDENING` (HARDENING=COMBINED): the yield stress against
-    /// PEEQ, same rules as the *PLASTIC rows; empty when not given.
-    std::vector<double> cyclic_yield_stress, cyclic_plastic_strain;
+    /// PEEQ (and temperature), same rules as the *PLASTIC rows; empty when not given.
+    std::vector<double> cyclic_yield_stress, cyclic_plastic_strain, cyclic_temperature;
     SourceLocation cyclic_where;         ///< the *CYCLIC HARDENING line
   };
   std::optional<Plastic> plastic;
