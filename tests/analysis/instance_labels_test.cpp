@@ -35,7 +35,11 @@ Model cae_mortar_model(const std::string& edit = "", const std::string& by = "")
     EXPECT_NE(at, std::string::npos) << edit;
     if (at != std::string::npos) deck.replace(at, edit.size(), by);
   }
-  const std::string path = ::testing::TempDir() + "/one_part_twice_mortar.inp";
+  // One file per test and edit: ctest runs the tests of this file in parallel processes.
+  static int calls = 0;
+  const std::string path = ::testing::TempDir() + "/one_part_twice_mortar_" +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                           std::to_string(++calls) + ".inp";
   std::ofstream(path) << deck;
   return read_deck(path);
 }

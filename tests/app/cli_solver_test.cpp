@@ -127,6 +127,22 @@ TEST(Cli, NoReuseAssemblesAndFactorizesEveryIterationWithTheSameResults) {
   EXPECT_EQ(fresh_log.find("held"), std::string::npos) << fresh_log;
 }
 
+namespace {
+
+/// The Hertz example (5k dofs) with its pair made mortar (TYPE=SURFACE TO
+/// SURFACE), written as DIR/hertz.inp; its path, empty if the example has no
+/// node-to-surface pair to change.
+std::string write_mortar_hertz(const fs::path& dir) {
+  std::string deck = slurp(fs::path(TETHER_SOURCE_DIR) / "examples/hertz_mortar/hertz.inp");
+  const std::string from = "TYPE=NODE TO SURFACE";
+  if (deck.find(from) == std::string::npos) return {};
+  deck.replace(deck.find(from), from.size(), "TYPE=SURFACE TO SURFACE");
+  write(dir / "hertz.inp", deck);
+  return (dir / "hertz.inp").string();
+}
+
+}  // namespace
+
 TEST(Cli, MortarCondensationEliminatesTheMultipliersWithTheSameIterations) {
   // The Hertz example (5k dofs) with its pair made mortar: by default the
   // solver condenses onto the contact equations (the .msg's timing line says
@@ -134,12 +150,8 @@ TEST(Cli, MortarCondensationEliminatesTheMultipliersWithTheSameIterations) {
   // eliminates the mortar multipliers instead and factorizes the condensed
   // matrix at every iteration, in the same number of Newton iterations.
   const fs::path dir = scratch("mortar_condensation");
-  std::string deck = slurp(fs::path(TETHER_SOURCE_DIR) / "examples/hertz_mortar/hertz.inp");
-  const std::string from = "TYPE=NODE TO SURFACE";
-  ASSERT_NE(deck.find(from), std::string::npos);
-  deck.replace(deck.find(from), from.size(), "TYPE=SURFACE TO SURFACE");
-  write(dir / "hertz.inp", deck);
-  const std::string path = (dir / "hertz.inp").string();
+  const std::string path = write_mortar_hertz(dir);
+  ASSERT_FALSE(path.empty());
   const auto schur = tether("run " + path + " -q -o " + (dir / "schur").string());
   const auto dual = tether("run " + path + " -q --mortar-condensation -o " + (dir / "dual").string());
   ASSERT_EQ(schur.code, 0) << schur.out;
@@ -251,12 +263,8 @@ TEST(Cli, MortarMultipliersEliminatedFromTheDenseInterfaceSystemWithAllWriters) 
   // value for those near zero), the last .vtu's displacements within 1e-10
   // of the largest. A wrong mode is refused.
   const fs::path dir = scratch("mortar_dense");
-  std::string deck = slurp(fs::path(TETHER_SOURCE_DIR) / "examples/hertz_mortar/hertz.inp");
-  const std::string from = "TYPE=NODE TO SURFACE";
-  ASSERT_NE(deck.find(from), std::string::npos);
-  deck.replace(deck.find(from), from.size(), "TYPE=SURFACE TO SURFACE");
-  write(dir / "hertz.inp", deck);
-  const std::string path = (dir / "hertz.inp").string();
+  const std::string path = write_mortar_hertz(dir);
+  ASSERT_FALSE(path.empty());
   const auto dense = tether("run " + path + " -q --ascii -o " + (dir / "dense").string());
   const auto kept = tether("run " + path + " -q --ascii --mortar-condensation=kept -o " + (dir / "kept").string());
   ASSERT_EQ(dense.code, 0) << dense.out;

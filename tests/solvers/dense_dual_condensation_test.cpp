@@ -137,7 +137,8 @@ TEST(DenseDualCondensation, EqualsTheDenseSolveOfTheWholeSystem) {
       worst = std::max(worst, (x - exact).norm() / exact.norm());
       worst_residual = std::max(worst_residual, (a * x - b).norm() / b.norm());
       EXPECT_LT((x - exact).norm(), 1e-12 * exact.norm()) << "seed " << seed << (symmetric ? "" : ", unsymmetric");
-      EXPECT_LT((a * x - b).norm(), 1e-13 * b.norm()) << "seed " << seed;
+      // Round-off: 1.0e-13 measured with one BLAS kernel, 1.02e-13 under valgrind's.
+      EXPECT_LT((a * x - b).norm(), 1e-12 * b.norm()) << "seed " << seed;
     }
   std::printf("[ dense dual ] 12 systems of %d equations: max |x - x_LU| / |x_LU| = %.1e, max |Ax - b| / |b| = %.1e\n",
               kDisplacements + kMultipliers, worst, worst_residual);
