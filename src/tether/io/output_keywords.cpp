@@ -22,15 +22,17 @@ std::string variable_name(const std::string& field) {
 }
 
 /// AC YIELD is 0 at every point of a user material (UMAT): says so once per
-/// such material that a section uses.
+/// such material that a section uses. Sections name their material (resolved
+/// at the end of the deck); materials and sections are model data, so all of
+/// them are known when a step asks for output.
 void warn_user_material_yield_flag(const DeckState& state, const SourceLocation& where) {
-  std::vector<int> warned;
-  for (const SolidSection& section : state.model.sections) {
-    if (section.material < 0 || static_cast<std::size_t>(section.material) >= state.model.materials.size()) continue;
-    const MaterialData& m = state.model.materials[static_cast<std::size_t>(section.material)];
-    if (!m.user || std::find(warned.begin(), warned.end(), section.material) != warned.end()) continue;
-    warned.push_back(section.material);
-    state.warn(where, "AC YIELD is written as 0 at the points of user material " + m.name +
+  std::vector<std::string> warned;
+  for (const std::string& name : state.section_material) {
+    const auto& materials = state.model.materials;
+    const auto m = std::find_if(materials.begin(), materials.end(), [&](const MaterialData& d) { return d.name == name; });
+    if (m == materials.end() || !m->user || std::find(warned.begin(), warned.end(), name) != warned.end()) continue;
+    warned.push_back(name);
+    state.warn(where, "AC YIELD is written as 0 at the points of user material " + name +
                           " (*USER MATERIAL): tether cannot tell whether a UMAT yields");
   }
 }
