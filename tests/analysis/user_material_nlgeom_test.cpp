@@ -364,3 +364,51 @@ TEST(UserMaterialNlgeom, NewtonConvergesOnALargeRotationCantilever) {
   EXPECT_GE(o_elastic.front(), 1.4);  // 1.52 measured (the built-in *ELASTIC: 1.31)
   EXPECT_GE(o_plastic.front(), 1.4);  // 1.49 measured
 }
+
+TEST(UserMaterialNlgeom, PlaneStressElementsAreRefusedWhenTheDeckIsRead) {
+  try {
+    (void)tether::testing::run_deck_text(replaced(umat_bar(), "TYPE=CAX4", "TYPE=CPS4"));
+    FAIL() << "a CPS4 user material under NLGEOM was accepted";
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("test.inp:31"), std::string::npos) << message;  // the first *STEP, NLGEOM
+    EXPECT_NE(message.find("plane-stress element 1 (CPS4) of user material J2UMAT"), std::string::npos) << message;
+  }
+}
+
+#ifdef TETHER_FORTRAN_UMAT
+// (6) The fixed-form Fortran UMAT built by gfortran (hypoelastic, tests/analysis/elastic_umat.f) under
+// NLGEOM on the CAX4 bar (elastic, E = 200000): the same answers as the C hypoelastic UMAT, and in uniaxial
+// stress the axial Cauchy stress E times the sum of the Hughes-Winget increments 2 (l1 - l0) / (l1 + l0)
+// (to round-off), which is E ln(lambda) to 2.1e-5 of E ln 1.2 after the 40 increments.
+TEST(UserMaterialNlgeom, FortranUmatUnderNlgeom) {
+  const std::string j2 = std::string("*MATERIAL, NAME=J2UMAT\n*USER MATERIAL, CONSTANTS=4, LIBRARY=") +
+                         TETHER_J2_UMAT + "\n200000., 0.3, 240., 1000.\n*DEPVAR\n5\n";
+  std::string fortran = replaced(umat_bar(), j2, std::string("*MATERIAL, NAME=FORTRAN\n*USER MATERIAL, CONSTANTS=2, "
+                                                             "LIBRARY=") + TETHER_FORTRAN_UMAT + "\n200000., 0.3\n");
+  fortran = replaced(fortran, "MATERIAL=J2UMAT", "MATERIAL=FORTRAN");
+  const std::string c = replaced(umat_bar(), j2, std::string("*MATERIAL, NAME=J2UMAT\n*USER MATERIAL, CONSTANTS=2, "
+                                                             "LIBRARY=") + TETHER_HYPOELASTIC_UMAT + "\n200000., 0.3\n");
+  const auto a = tether::testing::run_deck_text(fortran), b = tether::testing::run_deck_text(c);
+  ASSERT_TRUE(a.summary.completed) << a.summary.message;
+  ASSERT_TRUE(b.summary.completed) << b.summary.message;
+  ASSERT_EQ(a.recorder.results.size(), b.recorder.results.size());
+  double worst_c = 0, worst_hw = 0, worst_log = 0, strain = 0, previous = 1;
+  for (std::size_t k = 0; k < a.recorder.results.size(); ++k) {
+    const IncrementResults& r = a.recorder.results[k];
+    const double lambda = r.step == 1 ? 1 + 0.2 * r.step_time : 1.2 - 0.3 * r.step_time;
+    strain += 2 * (lambda - previous) / (lambda + previous), previous = lambda;
+    for (std::size_t q = 0; q < 4; ++q) {
+      const PointValues &p = r.points[0][q], &o = b.recorder.results[k].points[0][q];
+      for (int i = 0; i < 4; ++i) worst_c = std::max(worst_c, std::abs(p.stress[i] - o.stress[i]) / 36464);
+      worst_hw = std::max(worst_hw, std::abs(p.stress[1] - 200000 * strain) / 36464);
+      worst_log = std::max(worst_log, std::abs(p.stress[1] - 200000 * std::log(lambda)) / 36464);
+    }
+  }
+  std::printf("Fortran UMAT under NLGEOM: against the C UMAT %.1e, against E x (sum of Hughes-Winget increments) "
+              "%.1e, against E ln(lambda) %.1e (of E ln 1.2)\n", worst_c, worst_hw, worst_log);
+  EXPECT_LT(worst_c, 1e-12);
+  EXPECT_LT(worst_hw, 1e-9);
+  EXPECT_LT(worst_log, 5e-5);
+}
+#endif
