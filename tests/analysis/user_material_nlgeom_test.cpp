@@ -365,6 +365,22 @@ TEST(UserMaterialNlgeom, NewtonConvergesOnALargeRotationCantilever) {
   EXPECT_GE(o_plastic.front(), 1.4);  // 1.49 measured
 }
 
+// The hybrid CAX4H (mean dilatation: the material sees a modified C) under NLGEOM: on the homogeneous bar
+// the same stresses as CAX4.
+TEST(UserMaterialNlgeom, HybridElementMatchesTheBar) {
+  const auto plain = tether::testing::run_deck_text(umat_bar());
+  const auto hybrid = tether::testing::run_deck_text(replaced(umat_bar(), "TYPE=CAX4", "TYPE=CAX4H"));
+  ASSERT_TRUE(hybrid.summary.completed) << hybrid.summary.message;
+  ASSERT_EQ(plain.recorder.results.size(), hybrid.recorder.results.size());
+  double worst = 0;
+  for (std::size_t k = 0; k < plain.recorder.results.size(); ++k)
+    for (std::size_t q = 0; q < 4; ++q)
+      for (int i = 0; i < 4; ++i)
+        worst = std::max(worst, std::abs(plain.recorder.results[k].points[0][q].stress[i] -
+                                         hybrid.recorder.results[k].points[0][q].stress[i]) / 240);
+  EXPECT_LT(worst, 1e-9);
+}
+
 TEST(UserMaterialNlgeom, PlaneStressElementsAreRefusedWhenTheDeckIsRead) {
   try {
     (void)tether::testing::run_deck_text(replaced(umat_bar(), "TYPE=CAX4", "TYPE=CPS4"));
