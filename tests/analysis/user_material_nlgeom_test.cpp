@@ -428,3 +428,27 @@ TEST(UserMaterialNlgeom, FortranUmatUnderNlgeom) {
   EXPECT_LT(worst_log, 5e-5);
 }
 #endif
+
+// A small-strain step (the bar pulled to 1.001 without NLGEOM) then an NLGEOM step (on to 1.2): the NLGEOM
+// step starts from U = I + eps of the small-strain one, so the hypoelastic axial stress is E (0.001 + the sum
+// of the Hughes-Winget increments from 1.001), to round-off (starting from U = I would count the first
+// step's 0.001 twice: 200 too much).
+TEST(UserMaterialNlgeom, NlgeomStepAfterASmallStrainStep) {
+  std::string deck = replaced(umat_bar(), std::string("*USER MATERIAL, CONSTANTS=4, LIBRARY=") + TETHER_J2_UMAT +
+                                              "\n200000., 0.3, 240., 1000.\n*DEPVAR\n5\n",
+                              std::string("*USER MATERIAL, CONSTANTS=2, LIBRARY=") + TETHER_HYPOELASTIC_UMAT +
+                                  "\n200000., 0.3\n");
+  deck = replaced(deck, "*STEP, NLGEOM\n*STATIC, DIRECT\n0.05, 1.\n", "*STEP\n*STATIC, DIRECT\n0.5, 1.\n");
+  deck = replaced(deck, "TOP, 2, 2, 0.2", "TOP, 2, 2, 0.001");
+  deck = replaced(deck, "TOP, 2, 2, -0.1", "TOP, 2, 2, 0.2");
+  const auto run = tether::testing::run_deck_text(deck);
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  double strain = 0.001, previous = 1.001;
+  for (int k = 1; k <= 20; ++k) {
+    const double lambda = 1.001 + 0.199 * k / 20.0;
+    strain += 2 * (lambda - previous) / (lambda + previous), previous = lambda;
+  }
+  const double axial = run.last().points[0][0].stress[1];
+  std::printf("NLGEOM after a small-strain step: axial stress %.6f, expected %.6f\n", axial, 200000 * strain);
+  EXPECT_NEAR(axial, 200000 * strain, 1e-9 * axial);
+}

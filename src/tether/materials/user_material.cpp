@@ -84,7 +84,8 @@ void UserMaterial::update_small_strain(Vec6& eps, bool plane_stress, std::span<c
   out.dissipation = c.spd - old_state[13];
   Eigen::Map<Vec6>(new_state.data()) = out.stress;
   Eigen::Map<Vec6>(new_state.data() + 6) = eps;
-  std::fill(new_state.begin() + 15, new_state.begin() + kHeader, 0.0);
+  // U - I = eps (tensor shear): where a later NLGEOM step starts from.
+  Eigen::Map<Vec6>(new_state.data() + 15) << eps(0), eps(1), eps(2), 0.5 * eps(3), 0.5 * eps(4), 0.5 * eps(5);
 }
 
 void UserMaterial::call_routine(UmatCall& c, std::span<const double> old_state, std::span<double> new_state,

@@ -17,8 +17,9 @@ class SharedLibrary;
 /// argument list, small strain and finite strain (NLGEOM; the kinematics are
 /// in docs/theory/user_material.md). The state of a point is the UMAT's view
 /// of the start of an increment: stress, total strain, SSE, SPD, SCD, the
-/// right stretch less the identity U - I (Voigt, tensor shear; NLGEOM only,
-/// zero otherwise), then the NSTATV state variables. Under NLGEOM the stress
+/// right stretch less the identity U - I (Voigt, tensor shear; the small
+/// strain itself after a small-strain update, so that an NLGEOM step after a
+/// small-strain one starts from U = I + eps), then the NSTATV state variables. Under NLGEOM the stress
 /// and strain are stored in the polar-rotated frame (R^T sigma R).
 class UserMaterial final : public ConstitutiveModel {
  public:
