@@ -170,8 +170,10 @@ std::vector<KeywordSpec> build_table() {
        {},
        handle_cyclic_hardening, ""},
       {"USER MATERIAL", kMaterial,
-       "The material's mechanical behaviour from an ABAQUS UMAT in a shared library, loaded at run time (small "
-       "strain; src/tether/materials/user_material.h documents the arguments; a gfortran UMAT works as is).",
+       "The material's mechanical behaviour from an ABAQUS UMAT in a shared library, loaded at run time "
+       "(src/tether/materials/user_material.h documents the arguments; a gfortran UMAT works as is). Under NLGEOM "
+       "it is integrated as ABAQUS/Standard does (Jaumann rate, Hughes-Winget increments) in the polar-rotated "
+       "frame (docs/theory/user_material.md); plane-stress elements are refused there.",
        "CONSTANTS values (PROPS), up to 8 per line",
        {{"CONSTANTS", PT::Integer, "", {}, true, "", "Number of constants (NPROPS)."},
         {"LIBRARY", PT::Text, "", {}, true, "",
