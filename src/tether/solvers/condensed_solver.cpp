@@ -126,9 +126,14 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
   }
 
   // Dense interface matrix A_II + C (a symmetric matrix given as its lower
-  // triangle adds each entry below the diagonal to its mirror too).
+  // triangle adds each entry below the diagonal to its mirror too). Only the
+  // interface columns are looked at: a whole matrix with no entry above the
+  // diagonal in any of them has no entry off the diagonal in A_II, where
+  // mirroring then changes nothing.
   Eigen::MatrixXd s = bulk_->schur();
-  const bool mirror = symmetric && lower_triangle_only(a);
+  bool mirror = symmetric;
+  for (int j : interface_)
+    if (a.outerIndexPtr()[j + 1] > a.outerIndexPtr()[j] && a.innerIndexPtr()[a.outerIndexPtr()[j]] < j) mirror = false;
   for (int j : interface_)
     for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
       const int i = a.innerIndexPtr()[k];
