@@ -130,3 +130,27 @@ TEST(DualCondensation, TinyOpenDiagonalsDoNotMakeTheBlockLookSingular) {
 }
 
 }  // namespace
+
+// The choice of the eliminated equations reads each multiplier's row, its
+// diagonal and whether its row or column holds anything else: for a
+// symmetric matrix the lower triangle alone (the multipliers numbered after
+// the displacements, their rows sit in the displacement columns) gives the
+// same choice as the whole matrix, over all columns and over a subset.
+TEST(DualCondensation, LowerTriangleOfASymmetricMatrixGivesTheSameChoice) {
+  const Eigen::MatrixXd dense = saddle_matrix();
+  const SparseMatrix whole = dense.sparseView();
+  const SparseMatrix lower = Eigen::MatrixXd(dense.triangularView<Eigen::Lower>()).sparseView();
+  std::vector<int> columns;
+  for (int i = 2 * 2; i < kChain + kMultipliers; ++i) columns.push_back(i);  // all but the first two nodes
+  const std::vector<int>* none = nullptr;
+  const std::vector<int>* some = &columns;
+  for (const std::vector<int>* subset : {none, some}) {
+    const DualElimination w = choose_dual_elimination(whole, mortar_nodes(), subset);
+    const DualElimination l = choose_dual_elimination(lower, mortar_nodes(), subset);
+    EXPECT_EQ(w.eliminated, l.eliminated);
+    EXPECT_EQ(w.apart, l.apart);
+    EXPECT_EQ(w.closed, kMultipliers - kOpen);
+    EXPECT_EQ(l.closed, w.closed);
+    EXPECT_EQ(l.diagonal, w.diagonal);
+  }
+}

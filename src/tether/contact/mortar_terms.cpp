@@ -156,16 +156,6 @@ Vec2T<double> mortar_position(const MortarPair& pair, const Eigen::VectorXd& u, 
 
 void MortarTermCache::with_terms(const MortarPair& pair, int e, int f, const EvaluationState& state, int order,
                                  bool friction, const std::function<void(const MortarFaceTerms&)>& use) {
-  std::vector<int> nodes = mortar_term_nodes(pair, e, f);
-  std::vector<Vec2T<double>> x, x0;
-  for (int n : nodes) {
-    x.push_back(mortar_position(pair, state.u, n));
-    if (friction) x0.push_back(mortar_position(pair, state.u_start, n));
-  }
-  const auto same = [](const std::vector<Vec2T<double>>& a, const std::vector<Vec2T<double>>& b) {
-    return a.size() == b.size() &&
-           std::equal(a.begin(), a.end(), b.begin(), [](const auto& p, const auto& q) { return p.x == q.x && p.y == q.y; });
-  };
   const std::lock_guard<std::mutex> lock(mutex_);
   if (entries_.size() != pair.setup().slave_faces.size()) entries_.assign(pair.setup().slave_faces.size(), {});
   std::vector<Entry>& of_face = entries_[static_cast<std::size_t>(e)];
@@ -178,9 +168,22 @@ void MortarTermCache::with_terms(const MortarPair& pair, int e, int f, const Eva
     of_face.push_back({});
     entry = of_face.end() - 1;
     entry->f = f;
+    entry->nodes = mortar_term_nodes(pair, e, f);  // fixed by the faces' topology
   }
+  const std::vector<int>& nodes = entry->nodes;
+  // The positions are compared in place with those a slot was computed at
+  // (no copy on a hit: most look-ups are).
+  const auto at = [&](const std::vector<Vec2T<double>>& held, const Eigen::VectorXd& u) {
+    if (held.size() != nodes.size()) return false;
+    for (std::size_t a = 0; a < nodes.size(); ++a) {
+      const Vec2T<double> p = mortar_position(pair, u, nodes[a]);
+      if (!(p.x == held[a].x && p.y == held[a].y)) return false;
+    }
+    return true;
+  };
   const auto holds = [&](const Slot& s) {
-    return s.valid && s.nlgeom == state.nlgeom && s.friction == friction && same(s.x, x) && (!friction || same(s.x0, x0));
+    return s.valid && s.nlgeom == state.nlgeom && s.friction == friction && at(s.x, state.u) &&
+           (!friction || at(s.x0, state.u_start));
   };
   // Gradients are wanted (forces, residual-only assemblies) mostly at a state
   // whose Hessians the tangent's assembly has just computed: the second-order
@@ -189,8 +192,15 @@ void MortarTermCache::with_terms(const MortarPair& pair, int e, int f, const Eva
   if (order == 1 && holds(entry->slots[2])) return use(entry->slots[2].terms);
   Slot& slot = entry->slots[static_cast<std::size_t>(std::clamp(order, 0, 2))];
   if (!holds(slot)) {
+    std::vector<Vec2T<double>> x, x0;
+    x.reserve(nodes.size());
+    if (friction) x0.reserve(nodes.size());
+    for (int n : nodes) {
+      x.push_back(mortar_position(pair, state.u, n));
+      if (friction) x0.push_back(mortar_position(pair, state.u_start, n));
+    }
     slot.valid = false;
-    slot.terms = compute(pair, e, f, std::move(nodes), x, x0, order, state.nlgeom, friction);
+    slot.terms = compute(pair, e, f, nodes, x, x0, order, state.nlgeom, friction);
     slot.x = std::move(x), slot.x0 = std::move(x0);
     slot.nlgeom = state.nlgeom, slot.friction = friction, slot.valid = true;
   }

@@ -110,6 +110,7 @@ class MortarTermCache {
   };
   struct Entry {
     int f = -1;
+    std::vector<int> nodes;     ///< mortar_term_nodes(e, f)
     std::array<Slot, 3> slots;  ///< by order
   };
   std::mutex mutex_;

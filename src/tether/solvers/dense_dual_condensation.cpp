@@ -19,6 +19,13 @@ constexpr double kMinReciprocalCondition = 1e-14;
 
 double DenseDualCondensation::factorize(Eigen::MatrixXd s, const DualElimination& elimination, bool symmetric) {
   const Eigen::Index m = s.rows();
+  // The previous system's matrices go first, so that they and the new ones
+  // are never held together (a lower peak; nothing reads them once a new
+  // factorization starts, whether it succeeds or not).
+  b_ = DenseFactor();
+  condensed_ = DenseFactor();
+  w_ = Eigen::MatrixXd();
+  s_kz_ = Eigen::MatrixXd();
   s_ = std::move(s);
   z_ = elimination.eliminated;
   apart_ = elimination.apart;
