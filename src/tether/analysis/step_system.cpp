@@ -198,13 +198,18 @@ std::vector<int> StepSystem::condensation_interface(const EquationMap& equations
 
 bool StepSystem::lower_triangle() const {
   // The solvers that read one triangle: CHOLMOD, MUMPS LDLT, and the
-  // condensation onto the contact equations (MumpsSchur); Auto's UMFPACK
+  // condensation onto the contact equations (MumpsSchur, with the dense
+  // elimination of mortar multipliers, which mirrors the interface block and
+  // finds each multiplier's row in the interface columns: the multipliers
+  // are numbered after the displacements they couple); Auto's UMFPACK
   // fallback mirrors it. UMFPACK and SparseLU chosen by the user read both,
-  // and so does the mortar dual condensation (DualCondensedSolver, the
-  // dual elimination of CondensedSolver): those keep the whole matrix.
+  // and so does the sparse mortar elimination (DualCondensedSolver): those
+  // keep the whole matrix.
   const bool one_triangle = settings_.solver == SolverKind::Auto || settings_.solver == SolverKind::Mumps ||
                             settings_.solver == SolverKind::Cholmod;
-  return symmetric_ && one_triangle && discretization_.mortar_pairs().empty();
+  const bool sparse_mortar =
+      !discretization_.mortar_pairs().empty() && settings_.mortar_condensation == MortarCondensation::Sparse;
+  return symmetric_ && one_triangle && !sparse_mortar;
 }
 
 void StepSystem::make_solver(std::vector<int> interface) {
