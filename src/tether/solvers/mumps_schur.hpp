@@ -40,7 +40,9 @@ class MumpsSchur {
   /// entries of `a` with a row or a column in R are passed to MUMPS (A_II is
   /// taken as zero, so schur() is -A_IR A_RR⁻¹ A_RI). `symmetric`: those
   /// entries are symmetric (LDLT). The ordering is recomputed only when
-  /// their pattern or `symmetric` changed since the last call.
+  /// their pattern or `symmetric` changed since the last call: above 100000
+  /// equations METIS's nested dissection with I last (fill_ordering.hpp),
+  /// else MUMPS's AMD.
   void factorize(const SparseMatrix& a, const std::vector<int>& interface, const std::vector<char>& in_interface,
                  bool symmetric);
 
