@@ -86,7 +86,9 @@ struct FirstIncrement {
   /// differences of the residual (step h), relative to the largest entry.
   double tangent_error(double h) {
     residual(true);
-    const Eigen::MatrixXd K(problem->tangent());
+    // A symmetric step's tangent is stored as its lower triangle: compared whole.
+    const SparseMatrix& stored = problem->tangent();
+    const Eigen::MatrixXd K(system->assembler().lower_triangle() ? mirror_lower(stored) : stored);
     const Eigen::Index n = K.cols();
     Eigen::MatrixXd fd(n, n);
     const Eigen::VectorXd u0 = u;

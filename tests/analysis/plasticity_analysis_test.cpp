@@ -154,6 +154,76 @@ TEST(PlasticCylinder, RestartContinuesThePlasticAnalysisIdentically) {
   }
 }
 
+TEST(PlasticCylinder, YieldFlagMarksThePointsWhosePeeqGrewInTheIncrement) {
+  // Loaded to Hill's c = 15 in step 1 (the points flow from 0.6 of the load on,
+  // an inner zone only), unloaded elastically in step 2.
+  const tether::testing::Run run = run_deck_text(cylinder_deck());
+  ASSERT_TRUE(run.summary.completed) << run.summary.message;
+  std::vector<std::vector<double>> peeq_before;  // per element, per point: PEEQ of the increment before
+  int yielding_at_end_of_loading = 0, points = 0;
+  double outermost_yielding = 0;
+  for (const IncrementResults& r : run.recorder.results) {
+    SCOPED_TRACE("step " + std::to_string(r.step) + " increment " + std::to_string(r.increment));
+    if (peeq_before.empty())
+      for (const auto& element : r.points) peeq_before.emplace_back(element.size(), 0.0);
+    int yielding = 0;
+    points = 0;
+    for (std::size_t e = 0; e < r.points.size(); ++e) {
+      double fraction = 0;
+      for (std::size_t q = 0; q < r.points[e].size(); ++q) {
+        const PointValues& p = r.points[e][q];
+        const bool grew = p.peeq > peeq_before[e][q];
+        ASSERT_EQ(p.ac_yield, grew ? 1 : 0) << "element " << e << " point " << q << " at r = " << p.x.norm();
+        peeq_before[e][q] = p.peeq;
+        yielding += p.ac_yield, ++points;
+        fraction += p.ac_yield / static_cast<double>(r.points[e].size());
+        if (r.step == 1 && p.ac_yield) outermost_yielding = std::max(outermost_yielding, p.x.norm());
+      }
+      EXPECT_EQ(r.element_ac_yield.at(e), fraction);
+    }
+    for (const double v : r.nodal_ac_yield) {
+      EXPECT_GE(v, 0.0);
+      EXPECT_LE(v, 1.0);
+    }
+    if (r.step == 2) EXPECT_EQ(yielding, 0);  // unloading is elastic
+    if (r.step == 1 && r.step_time > 1 - 1e-12) yielding_at_end_of_loading = yielding;
+  }
+  // At the end of loading the inner zone yields (r < c = 15, as PEEQ says), the outer ring does not.
+  std::printf("end of loading: %d of %d points yielding, out to r = %.3f (Hill: c = 15)\n",
+              yielding_at_end_of_loading, points, outermost_yielding);
+  EXPECT_GT(yielding_at_end_of_loading, points / 4);
+  EXPECT_LT(yielding_at_end_of_loading, points * 3 / 4);
+  EXPECT_LT(std::abs(outermost_yielding - 15), 0.6);
+  // Nodes: the bore's nodes sit in yielding elements only, the outer surface's in elastic ones.
+  const IncrementResults& end1 = *std::find_if(run.recorder.results.rbegin(), run.recorder.results.rend(),
+                                               [](const IncrementResults& r) { return r.step == 1; });
+  EXPECT_EQ(end1.nodal_ac_yield[static_cast<std::size_t>(run.node(1))], 1.0);   // (a, 0)
+  EXPECT_EQ(end1.nodal_ac_yield[static_cast<std::size_t>(run.node(164))], 0.0);  // on r = b
+}
+
+TEST(PlasticCylinder, RestartKeepsTheYieldFlag) {
+  const Model model = read_deck_string(cylinder_deck(), "plastic_cylinder.inp");
+  const Outcome full = run_model(model);
+  ASSERT_TRUE(full.summary.completed) << full.summary.message;
+  // Resume from each state of the loading step's plastic part: every later increment flags the same points.
+  int compared = 0;
+  for (std::size_t k = 5; k < 9; ++k) {
+    const Outcome resumed = run_model(model, &full.recorder.states[k]);
+    ASSERT_TRUE(resumed.summary.completed) << resumed.summary.message;
+    ASSERT_EQ(resumed.recorder.results.size(), full.recorder.results.size() - k - 1);
+    for (std::size_t i = 0; i < resumed.recorder.results.size(); ++i) {
+      const IncrementResults &a = resumed.recorder.results[i], &b = full.recorder.results[k + 1 + i];
+      for (std::size_t e = 0; e < a.points.size(); ++e)
+        for (std::size_t q = 0; q < a.points[e].size(); ++q) {
+          EXPECT_EQ(a.points[e][q].ac_yield, b.points[e][q].ac_yield) << "from state " << k << ", increment " << i;
+          compared += b.points[e][q].ac_yield;
+        }
+      EXPECT_EQ(a.nodal_ac_yield, b.nodal_ac_yield);
+    }
+  }
+  EXPECT_GT(compared, 100);  // yielding points were compared, not only zeros
+}
+
 TEST(PlasticBar, PlaneStressKinematicBarMatchesTheClosedFormWithItsOutput) {
   // One CPS4 (1 x 1, thickness 0.1) pulled to eps = 0.004, then pushed to -0.002:
   // uniaxial stress, linear kinematic hardening (yield 200, H = 10000, E = 200000).

@@ -343,9 +343,9 @@ TEST(Restart, TruncatedOrCorruptFilesAreRefusedCleanly) {
   EXPECT_NE(refusal(flipped).find("checksum mismatch"), std::string::npos) << refusal(flipped);
   EXPECT_NE(refusal(bytes + "x").find("truncated or extended"), std::string::npos);
   EXPECT_NE(refusal("*HEADING\nnot a restart file\n").find("magic"), std::string::npos);
-  std::string v4 = bytes;
-  v4[8] = 4;
-  EXPECT_NE(refusal(v4).find("format version 4"), std::string::npos) << refusal(v4);
+  std::string v5 = bytes;  // a version this tether does not read (it reads 4)
+  v5[8] = 5;
+  EXPECT_NE(refusal(v5).find("format version 5"), std::string::npos) << refusal(v5);
 
   // A state with a contribution record that does not fit is refused by resume, naming the contribution.
   RestartState broken = state;

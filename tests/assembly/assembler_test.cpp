@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -67,11 +68,13 @@ namespace {
 /// distinct entries (a misplaced entry changes the assembled matrix).
 class DenseBlock final : public Contribution {
  public:
-  DenseBlock(std::vector<int> dofs, double seed) : dofs_(std::move(dofs)) {
+  /// `symmetric`: k + kᵀ instead of k (still distinct entries on each side of the diagonal).
+  DenseBlock(std::vector<int> dofs, double seed, bool symmetric = false) : dofs_(std::move(dofs)), symmetric_(symmetric) {
     const auto m = static_cast<Eigen::Index>(dofs_.size());
     k_.resize(m, m);
     for (Eigen::Index j = 0; j < m; ++j)
       for (Eigen::Index i = 0; i < m; ++i) k_(i, j) = seed + 0.37 * static_cast<double>(i) + 1.13 * static_cast<double>(j * j);
+    if (symmetric) k_ = Eigen::MatrixXd(k_ + k_.transpose());
   }
   std::span<const int> dofs() const override { return dofs_; }
   void evaluate(const EvaluationState& s, LocalSystem& out, bool need_tangent) const override {
@@ -82,13 +85,14 @@ class DenseBlock final : public Contribution {
     if (need_tangent) out.tangent = k_;
   }
   std::string describe() const override { return "dense block"; }
-  bool symmetric_tangent(bool) const override { return false; }  // k_ is not symmetric
+  bool symmetric_tangent(bool) const override { return symmetric_; }
   bool linear_in_u(bool) const override { return true; }
   const Eigen::MatrixXd& matrix() const { return k_; }
   mutable int evaluations = 0;  ///< evaluate() calls
 
  private:
   std::vector<int> dofs_;
+  bool symmetric_ = false;
   Eigen::MatrixXd k_;
 };
 
@@ -140,6 +144,50 @@ TEST(Assembler, NodeBlockScatterMatchesDenseAssembly) {
   for (int j = 0; j < map.n_equations(); ++j)
     for (int i = 0; i < map.n_equations(); ++i) expected(i, j) = full(map.dof(i), map.dof(j));
   EXPECT_EQ(Eigen::MatrixXd(k), expected);
+}
+
+TEST(Assembler, LowerTriangleIsTheFullTangentsLowerTriangleBitForBit) {
+  // The grid of NodeBlockScatterMatchesDenseAssembly (blocked quads, quads
+  // with full positions, a spring, prescribed dofs) and a tie making dof 15
+  // dependent (its quads scatter through T). The quads' matrices are not
+  // symmetric, so an entry taken from the wrong side of the diagonal, or
+  // placed at the wrong position of a lower column, changes the result.
+  const int nx = 5, ny = 3, n_nodes = nx * ny, n = 2 * n_nodes;
+  std::vector<DenseBlock> quads;
+  quads.reserve(8);
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+      std::vector<int> dofs{2 * a, 2 * a + 1, 2 * b, 2 * b + 1, 2 * c, 2 * c + 1, 2 * d, 2 * d + 1};
+      if (i == 3 && j == 0) std::swap(dofs[0], dofs[1]);
+      quads.emplace_back(dofs, 1.0 + static_cast<double>(quads.size()));
+    }
+  Spring spring(2 * 12, 2 * 14, 5.0);
+  std::vector<Contribution*> list;
+  for (auto& q : quads) list.push_back(&q);
+  list.push_back(&spring);
+  std::vector<bool> prescribed(n, false);
+  prescribed[0] = prescribed[1] = true;
+  prescribed[2 * 10] = true;
+  EliminationRow tie;
+  tie.terms = {{15, 2.0}, {2 * 9, -0.5}};
+  tie.owner = "tie";
+  Assembler full(list, EquationMap(prescribed, {tie})), lower(list, EquationMap(prescribed, {tie}), {}, true);
+  EXPECT_TRUE(lower.lower_triangle());
+  EXPECT_EQ(lower.n_blocked(), full.n_blocked());  // blocking (a quarter of the positions) kept
+  EXPECT_GT(lower.n_blocked(), 0);
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(n, 0.1, 2.0), r_full, r_lower;
+  const EvaluationState state{u, u};
+  full.assemble(state, r_full, true);
+  lower.assemble(state, r_lower, true);
+  EXPECT_EQ(r_lower, r_full);
+  const SparseMatrix expected = full.tangent().triangularView<Eigen::Lower>();
+  const SparseMatrix& k = lower.tangent();
+  ASSERT_EQ(k.nonZeros(), expected.nonZeros());
+  EXPECT_TRUE(std::equal(k.outerIndexPtr(), k.outerIndexPtr() + k.cols() + 1, expected.outerIndexPtr()));
+  EXPECT_TRUE(std::equal(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros(), expected.innerIndexPtr()));
+  EXPECT_EQ(std::memcmp(k.valuePtr(), expected.valuePtr(), sizeof(double) * static_cast<std::size_t>(k.nonZeros())), 0);
+  EXPECT_LT(k.nonZeros(), full.tangent().nonZeros() * 6 / 10);
 }
 
 TEST(Assembler, PropagatesContributionFailure) {
@@ -516,6 +564,46 @@ TEST(Assembler, ResidualUpdatesFromTheHeldTangentMatchAFullAssembly) {
   u[7] += 0.1;
   expect_match(false, "disabled");
   EXPECT_EQ(held.linear_reuse().residual_updates, 4);
+}
+
+TEST(Assembler, ResidualUpdatesFromALowerTriangleMatchAFullAssembly) {
+  // As above with symmetric quads and the tangent stored as its lower
+  // triangle: the held product takes each entry below the diagonal for its
+  // mirror too, and the quads evaluated beside the reference subtract their
+  // mirrored entries as well. Against a fresh assembly of the whole matrix.
+  Grid grid;
+  std::vector<DenseBlock> quads;
+  for (const DenseBlock& q : grid.quads)
+    quads.emplace_back(std::vector<int>(q.dofs().begin(), q.dofs().end()), q.matrix()(0, 0), true);
+  CubicBlock across({2 * 8, 2 * 8 + 1, 2 * 15, 2 * 15 + 1}, 0.7), corner({2 * 23, 2 * 5 + 1}, 1.3);
+  std::vector<Contribution*> list;
+  for (auto& q : quads) list.push_back(&q);
+  list.push_back(&across);
+  list.push_back(&corner);
+  Assembler held(list, Grid::equations(), {}, true), fresh(list, Grid::equations());
+  held.set_linear(linear_flags(list), false);
+  held.enable_residual_updates(true);
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(Grid::n, 0.1, 1.3), r_held, r_fresh;
+  u[0] = 0.2, u[1] = -0.1;
+  const auto expect_match = [&](bool with_tangent, const std::string& what) {
+    const EvaluationState state{u, u};
+    held.assemble(state, r_held, with_tangent);
+    fresh.assemble(state, r_fresh, with_tangent);
+    EXPECT_LE((r_held - r_fresh).cwiseAbs().maxCoeff(), 1e-13 * r_fresh.cwiseAbs().maxCoeff()) << what;
+    EXPECT_EQ(r_held[0], r_fresh[0]) << what;
+    EXPECT_EQ(r_held[1], r_fresh[1]) << what;
+    if (with_tangent) {
+      const SparseMatrix lower = fresh.tangent().triangularView<Eigen::Lower>();
+      EXPECT_TRUE(same_bits(held.tangent(), lower)) << what;
+    }
+  };
+  expect_match(true, "full assembly");
+  expect_match(false, "reference");
+  for (int k = 1; k <= 3; ++k) {
+    u.tail(Grid::n - 2) += Eigen::VectorXd::LinSpaced(Grid::n - 2, 0.05 * k, -0.2);
+    expect_match(k % 2 == 1, "update " + std::to_string(k));
+  }
+  EXPECT_EQ(held.linear_reuse().residual_updates, 3);
 }
 
 TEST(Assembler, ResidualUpdatesCarryTheReferenceAcrossARelocation) {

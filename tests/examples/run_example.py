@@ -3,7 +3,8 @@
 
 Usage: run_example.py EXAMPLE TETHER_EXE SOURCE_DIR WORK_DIR USER_CONSTRAINT_MODULE
 
-EXAMPLE is rigid_link, formula_constraint, user_constraint, periodic_rve, hertz, hertz_mortar
+EXAMPLE is rigid_link, formula_constraint, user_constraint, periodic_rve, hertz, hertz_mortar,
+plastic_cylinder (its deck written by the example's make_deck.py, read back by its plot_cylinder.py)
 (the hertz deck run with its pair made TYPE=SURFACE TO SURFACE) or gmsh_lame (meshed
 here by gmsh from its .geo; exit 77 when gmsh is missing). The deck is copied
 into WORK_DIR (the user constraint's LIBRARY= is pointed at the module the build
@@ -162,6 +163,28 @@ def main(argv):
         print(f"hertz_mortar: peak contact pressure {peak:.1f} MPa (exact p0 = {p0}), error {100 * (peak / p0 - 1):+.2f} %")
         if abs(peak / p0 - 1) > 0.005:
             fail("mortar peak pressure more than 0.5 % from Hertz")
+    elif example == "plastic_cylinder":
+        deck = os.path.join(work, "cylinder.inp")
+        with open(deck, "w") as f:
+            subprocess.run([sys.executable, os.path.join(folder, "make_deck.py"), "24", "8"], stdout=f, check=True,
+                           timeout=100)
+        run(tether, deck, work)
+        sys.path.insert(0, folder)
+        import plot_cylinder  # the example's own reader and closed forms
+        rows = plot_cylinder.history(os.path.join(work, "out", "cylinder.dat"), plot_cylinder.coordinates(deck))
+        plot_cylinder.plot(rows, os.path.join(work, "out", "cylinder_1_20.vtu"), os.path.join(work, "cylinder.png"))
+        loading = [r for r in rows if r[0] <= 1 + 1e-12]
+        worst_below = max(abs(r[3] / plot_cylinder.hill_u_outer(r[1]) - 1) for r in loading if r[1] <= 152.0)
+        at_190 = loading[-1][3] / plot_cylinder.hill_u_outer(loading[-1][1]) - 1
+        print(f"plastic_cylinder: u(b) within {worst_below:.1e} of Hill up to 152 MPa, {100 * at_190:+.2f} % at 190 MPa; "
+              f"yielding points {[r[4] for r in rows]}")
+        if len(loading) != 20 or worst_below > 1e-3 or abs(at_190) > 0.03:
+            fail("outer displacement differs from Hill's solution by more than 0.1 % (up to 152 MPa) or 3 % (190 MPa)")
+        first_yield = plot_cylinder.hill_pressure(plot_cylinder.A)
+        if any(r[4] for r in loading if r[1] < first_yield) or loading[-1][4] == 0:
+            fail("AC YIELD: points yield below the first-yield pressure, or none at 190 MPa")
+        if any(r[4] for r in rows if r[0] > 1 + 1e-12) or rows[-1][2] <= 0:
+            fail("AC YIELD while unloading, or no residual bore displacement")
     else:
         fail(f"unknown example {example}")
     return 0

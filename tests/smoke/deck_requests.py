@@ -12,7 +12,8 @@ Titles are the leading words of tether's block headers (tools/tethertools/dat.py
 splits them from the set and the time), as DatWriter documents them:
 *NODE PRINT U -> displacements, RF -> forces (and total force with
 TOTALS=YES; only total force with TOTALS=ONLY); *EL PRINT S -> stresses,
-E -> strains, PEEQ -> equivalent plastic strain, PE -> plastic strains;
+E -> strains, PEEQ -> equivalent plastic strain, PE -> plastic strains,
+AC YIELD (ACYIELD) -> actively yielding;
 *CONTACT PRINT CSTR/CSTRESS -> contact stress, CDIS/CDISP ->
 relative contact displacement (one block for all pairs, set ""), CFN/CFS ->
 total normal/shear contact force per pair (no variables: CSTR, CDIS), and
@@ -27,7 +28,7 @@ import tethertools.deck  # tools/ on PYTHONPATH (set by CTest)
 
 _NODE_TITLES = {"U": ["displacements"], "RF": ["forces"], "V": ["velocities"], "A": ["accelerations"]}
 _ELEMENT_TITLES = {"S": ["stresses"], "E": ["strains"], "PEEQ": ["equivalent plastic strain"],
-                   "PE": ["plastic strains"]}
+                   "PE": ["plastic strains"], "AC YIELD": ["actively yielding"]}
 _CONTACT_TITLES = {"CSTR": "contact stress", "CSTRESS": "contact stress", "CDIS": "relative contact displacement",
                    "CDISP": "relative contact displacement"}
 _CONTACT_PAIR_TITLES = {"CFN": "total normal contact force", "CFS": "total shear contact force"}
@@ -40,7 +41,8 @@ def _blocks(path):
 
 
 def _variables(data):
-    return [v.strip().upper() for line in data for v in line.split(",") if v.strip()]
+    names = [" ".join(v.split()).upper() for line in data for v in line.split(",") if v.strip()]
+    return ["AC YIELD" if v == "ACYIELD" else v for v in names]  # tether's spelling of ABAQUS's variable
 
 
 def _frequency(params, default=1):

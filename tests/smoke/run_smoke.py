@@ -48,7 +48,7 @@ COMPLETED = "THE ANALYSIS HAS COMPLETED SUCCESSFULLY"
 _COLUMNS = {
     "displacements": (4, 0, None), "forces": (4, 0, None), "total force": (3, None, None),
     "stresses": (8, None, 0), "strains": (8, None, 0),
-    "equivalent plastic strain": (3, None, 0), "plastic strains": (8, None, 0),
+    "equivalent plastic strain": (3, None, 0), "plastic strains": (8, None, 0), "actively yielding": (3, None, 0),
     "contact stress": (4, 0, None), "relative contact displacement": (4, 0, None),
     "contact state": (10, 0, 7), "total normal contact force": (3, None, None),
     "total shear contact force": (3, None, None), "constraint multipliers": (4, None, None),

@@ -131,6 +131,35 @@ TEST(CondensedSolver, EqualsFullSolveAndReusesTheBulkWhileOnlyTheInterfaceChange
   EXPECT_FALSE(solver.statistics().gave_up);
 }
 
+TEST(CondensedSolver, ALowerTriangleGivesTheSolutionOfTheWholeMatrixBitForBit) {
+  // A symmetric matrix stored as its lower triangle (the assembler's
+  // storage): MumpsSchur lends its values to MUMPS (interface = the surface,
+  // coupled to the bulk) or copies them with explicit zero interface
+  // diagonals (multipliers coupled to the interface only); A_II is mirrored
+  // into the dense interface matrix. Both give the solution of the whole matrix.
+  for (int extra : {0, 3}) {
+    const Eigen::MatrixXd bulk = bulk_matrix(extra);
+    CondensedSolver whole(interface_equations(extra), make_linear_solver(SolverKind::Auto));
+    CondensedSolver lower(interface_equations(extra), make_linear_solver(SolverKind::Auto));
+    std::mt19937 rng(5);
+    std::normal_distribution<double> g;
+    for (unsigned k = 0; k < 3; ++k) {
+      const Eigen::MatrixXd a = extra > 0 ? with_contact(bulk, extra, 21 + k, true) : bulk;
+      Eigen::VectorXd b(a.rows());
+      for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = g(rng);
+      const SparseMatrix full = sparse(a);
+      const SparseMatrix triangle = full.triangularView<Eigen::Lower>();
+      const Eigen::VectorXd x_whole = solve_with(whole, full, true, b);
+      const Eigen::VectorXd x_lower = solve_with(lower, triangle, true, b);
+      EXPECT_EQ(x_lower, x_whole) << "extra " << extra << ", matrix " << k << " via " << lower.name();
+      EXPECT_LT(relative_error(a, x_lower, b), 1e-12);
+    }
+    EXPECT_EQ(lower.statistics().sparse_factorizations, whole.statistics().sparse_factorizations);
+    EXPECT_EQ(lower.statistics().reuses, whole.statistics().reuses);
+    EXPECT_EQ(lower.statistics().fallbacks, 0);
+  }
+}
+
 TEST(CondensedSolver, RefactorizesWhenTheBulkChangesAndGivesUpAfterTwoChangesInARow) {
   constexpr int kExtra = 3;
   Eigen::MatrixXd bulk = bulk_matrix(kExtra);

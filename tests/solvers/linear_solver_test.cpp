@@ -178,3 +178,39 @@ TEST(LinearSolver, MumpsOutOfCoreUnderAMemoryBudgetGivesTheSameSolution) {
     EXPECT_LT((x - x_exact).norm(), 1e-10 * x_exact.norm()) << "budget " << budget;
   }
 }
+
+TEST(LinearSolver, ALowerTriangleIsTheSymmetricMatrixForTheSolversThatReadOne) {
+  // The assembler stores a symmetric tangent as its lower triangle: CHOLMOD,
+  // MUMPS and Auto (its UMFPACK fallback mirrors it) must solve it as the
+  // whole matrix, to the last bit where they read one triangle anyway.
+  for (const SparseMatrix& whole : {laplacian(200, 1.0), saddle_point()}) {
+    const SparseMatrix lower = whole.triangularView<Eigen::Lower>();
+    EXPECT_TRUE(lower_triangle_only(lower));
+    EXPECT_FALSE(lower_triangle_only(whole));
+    EXPECT_EQ(Eigen::MatrixXd(mirror_lower(lower)), Eigen::MatrixXd(whole));
+    const Eigen::VectorXd b = whole * Eigen::VectorXd::LinSpaced(whole.cols(), -1, 3);
+    for (auto kind : {SolverKind::Auto, SolverKind::Cholmod, SolverKind::Mumps}) {
+      if (kind == SolverKind::Cholmod && whole.cols() == 3) continue;  // indefinite
+      Eigen::VectorXd x_whole, x_lower;
+      auto solver = make_linear_solver(kind);
+      solver->analyze(whole);
+      solver->factorize(whole, true);
+      solver->solve(b, x_whole);
+      solver->analyze(lower);
+      solver->factorize(lower, true);
+      solver->solve(b, x_lower);
+      EXPECT_EQ(x_lower, x_whole) << solver->name();
+    }
+  }
+  // A singular lower triangle: Auto's UMFPACK (after MUMPS) still names an equation.
+  const SparseMatrix singular = laplacian(50, 0.0).triangularView<Eigen::Lower>();
+  auto solver = make_linear_solver(SolverKind::Auto);
+  solver->analyze(singular);
+  try {
+    solver->factorize(singular, true);
+    FAIL() << "singular lower triangle accepted by " << solver->name();
+  } catch (const SolverError& e) {
+    EXPECT_GE(e.equation(), 0) << e.what();
+    EXPECT_LT(e.equation(), 50);
+  }
+}

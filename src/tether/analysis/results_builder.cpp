@@ -47,17 +47,26 @@ void start_plastic_results(const Discretization& discretization, IncrementResult
   r.nodal_peeq.assign(n_nodes, 0.0);
   r.nodal_plastic_strain.assign(n_nodes, Tensor4{});
   r.element_peeq.assign(discretization.elements().size(), 0.0);
+  r.nodal_ac_yield.assign(n_nodes, 0.0);
+  r.element_ac_yield.assign(discretization.elements().size(), 0.0);
 }
 
-/// Adds element e's PEEQ and PE extrapolations to the nodal sums and sets its mean PEEQ.
+/// Adds element e's PEEQ and PE extrapolations to the nodal sums, sets its
+/// mean PEEQ and its fraction of yielding points (AC YIELD), and adds that
+/// fraction to the nodal sums of AC YIELD (not extrapolated).
 void add_plastic_results(const ContinuumElement& element, int e, const std::vector<PointValues>& points,
                          std::vector<double>& peeq, std::vector<Tensor4>& pe, IncrementResults& r) {
   element.extrapolate_plastic_to_nodes(points, peeq, pe);
-  double mean = 0;
-  for (const PointValues& p : points) mean += p.peeq / static_cast<double>(points.size());
+  double mean = 0, yielding = 0;
+  for (const PointValues& p : points) {
+    mean += p.peeq / static_cast<double>(points.size());
+    yielding += p.ac_yield / static_cast<double>(points.size());
+  }
   r.element_peeq[static_cast<std::size_t>(e)] = mean;
+  r.element_ac_yield[static_cast<std::size_t>(e)] = yielding;
   const auto& nodes = element.nodes();
   for (std::size_t a = 0; a < nodes.size(); ++a) {
+    r.nodal_ac_yield[nodes[a]] += yielding;
     r.nodal_peeq[nodes[a]] += peeq[a];
     for (int k = 0; k < 4; ++k) r.nodal_plastic_strain[nodes[a]][k] += pe[a][k];
   }
@@ -205,6 +214,7 @@ void add_element_fields(const Discretization& discretization, const EvaluationSt
         for (int k = 0; k < 4; ++k) r.nodal_thermal_strain[i][k] /= count[i];
       if (!plastic) continue;
       r.nodal_peeq[i] /= count[i];
+      r.nodal_ac_yield[i] /= count[i];
       for (int k = 0; k < 4; ++k) r.nodal_plastic_strain[i][k] /= count[i];
     }
 }

@@ -41,6 +41,10 @@ StepSystem::StepSystem(const Discretization& discretization, const Step& step, S
   if (unused_nodes_ > 0 && message)
     message(std::to_string(unused_nodes_) + " node(s) belong to no element; they get no degrees of freedom");
   EquationMap map(prescribed, discretization_.elimination_rows());
+  // Cholesky (positive definite) or LDLT (multipliers) when every
+  // contribution vouches for a symmetric tangent; LU otherwise.
+  symmetric_ = std::all_of(contributions_.begin(), contributions_.end(),
+                           [&](const Contribution* c) { return c->symmetric_tangent(step_.nlgeom); });
   if (step_.procedure == StepProcedure::ExplicitDynamic) {
     // Central differences assemble no matrix: no assembler, whose sparsity
     // pattern would cost about 0.6 kB per CPE4 element.
@@ -49,16 +53,12 @@ StepSystem::StepSystem(const Discretization& discretization, const Step& step, S
     make_solver({});
   } else {
     std::vector<int> interface = condensation_interface(map);
-    assembler_ = std::make_unique<Assembler>(contributions_, std::move(map), interface);
+    assembler_ = std::make_unique<Assembler>(contributions_, std::move(map), interface, lower_triangle());
     check_constraints(discretization_, equations(), EvaluationState{u, u, 0, total_time, 0, step_.nlgeom});
     make_solver(std::move(interface));
     if (settings_.reuse_linear_bulk && bulk_linear_) hold_linear_bulk();
   }
 
-  // Cholesky (positive definite) or LDLT (multipliers) when every
-  // contribution vouches for a symmetric tangent; LU otherwise.
-  symmetric_ = std::all_of(contributions_.begin(), contributions_.end(),
-                           [&](const Contribution* c) { return c->symmetric_tangent(step_.nlgeom); });
   // MUMPS here is LDLT and CHOLMOD Cholesky: both read one triangle only.
   if (!symmetric_ && (settings_.solver == SolverKind::Mumps || settings_.solver == SolverKind::Cholmod))
     throw ModelError(std::string("--solver ") +
@@ -194,6 +194,17 @@ std::vector<int> StepSystem::condensation_interface(const EquationMap& equations
       (m > kMaxCondensedEquations || kMinCondensationRatio * m > equations.n_equations()))
     interface.clear();
   return interface;
+}
+
+bool StepSystem::lower_triangle() const {
+  // The solvers that read one triangle: CHOLMOD, MUMPS LDLT, and the
+  // condensation onto the contact equations (MumpsSchur); Auto's UMFPACK
+  // fallback mirrors it. UMFPACK and SparseLU chosen by the user read both,
+  // and so does the mortar dual condensation (DualCondensedSolver, the
+  // dual elimination of CondensedSolver): those keep the whole matrix.
+  const bool one_triangle = settings_.solver == SolverKind::Auto || settings_.solver == SolverKind::Mumps ||
+                            settings_.solver == SolverKind::Cholmod;
+  return symmetric_ && one_triangle && discretization_.mortar_pairs().empty();
 }
 
 void StepSystem::make_solver(std::vector<int> interface) {

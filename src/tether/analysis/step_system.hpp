@@ -125,6 +125,9 @@ class StepSystem {
   std::vector<bool> prescribed_dofs();
   /// The contact equations to condense onto (empty: no condensation).
   [[nodiscard]] std::vector<int> condensation_interface(const EquationMap& equations) const;
+  /// True when the tangent is stored as its lower triangle (Assembler):
+  /// symmetric, and every solver the step may use reads one triangle.
+  [[nodiscard]] bool lower_triangle() const;
   void make_solver(std::vector<int> interface);
   /// Tells the assembler which contributions are linear (bulk_linear() steps only).
   void hold_linear_bulk();

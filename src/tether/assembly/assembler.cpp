@@ -20,12 +20,27 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 /// start-up costs more than it saves.
 constexpr int kParallelThreshold = 2048;
 
+/// Drops the entries above the diagonal of a compressed-column pattern
+/// (rows sorted in each column), in place.
+void keep_lower(std::vector<int>& outer, std::vector<int>& inner) {
+  int kept = 0, begin = outer[0];
+  for (std::size_t j = 0; j + 1 < outer.size(); ++j) {
+    const int end = outer[j + 1];
+    for (int p = begin; p < end; ++p)
+      if (inner[static_cast<std::size_t>(p)] >= static_cast<int>(j)) inner[static_cast<std::size_t>(kept++)] = inner[static_cast<std::size_t>(p)];
+    begin = end;
+    outer[j + 1] = kept;
+  }
+  inner.resize(static_cast<std::size_t>(kept));
+  inner.shrink_to_fit();
+}
+
 }  // namespace
 
 Assembler::Assembler(std::vector<Contribution*> contributions, EquationMap equations,
-                     std::vector<int> reserved_block)
+                     std::vector<int> reserved_block, bool lower_triangle)
     : contributions_(std::move(contributions)), equations_(std::move(equations)),
-      reserved_block_(std::move(reserved_block)) {
+      reserved_block_(std::move(reserved_block)), lower_(lower_triangle) {
   std::sort(reserved_block_.begin(), reserved_block_.end());
   reserved_block_.erase(std::unique(reserved_block_.begin(), reserved_block_.end()), reserved_block_.end());
   build_pattern();
@@ -78,7 +93,7 @@ bool Assembler::relocate() {
       for (std::size_t a = 0; a < m; ++a) {
         if (equations_.is_dependent(dofs[a])) return false;
         const int ei = equations_.equation(dofs[a]);
-        if (ei < 0) continue;
+        if (ei < 0 || (lower_ && ei < ej)) continue;  // prescribed, or above the diagonal of a lower triangle
         pos[b * m + a] = find_position(ei, ej);
         if (pos[b * m + a] < 0) return false;
       }
@@ -192,6 +207,7 @@ void Assembler::build_pattern() {
     same_rows_as_previous[j] = outer[j + 1] - outer[j] == outer[j] - outer[j - 1] &&
                                std::equal(inner.begin() + outer[j], inner.begin() + outer[j + 1],
                                           inner.begin() + outer[j - 1]);
+  if (lower_) keep_lower(outer, inner);
   const auto in_blocks = [&](std::span<const int> dofs) {
     if (dofs.size() % 2 != 0) return false;
     for (std::size_t k = 0; k < dofs.size(); k += 2) {
@@ -231,6 +247,7 @@ void Assembler::build_pattern() {
         for (std::size_t a = 0; a < m; ++a) {
           for (const EquationWeight& wb : equations_.weights(dofs[b]))
             for (const EquationWeight& wa : equations_.weights(dofs[a])) {
+              if (lower_ && wa.equation < wb.equation) continue;  // above the diagonal: not stored
               w.pos.push_back(position(wa.equation, wb.equation));
               w.weight.push_back(wa.weight * wb.weight);
             }
@@ -244,7 +261,9 @@ void Assembler::build_pattern() {
       if (ej < 0) continue;
       for (std::size_t a = 0; a < m; a += step) {
         const int ei = equations_.equation(dofs[a]);
-        if (ei >= 0) positions_[offsets_[c] + (b / step) * h + a / step] = position(ei, ej);
+        // Lower triangle: a 2x2 block above the diagonal holds no entry (the
+        // pairs' equations are disjoint, so ei < ej puts all four there).
+        if (ei >= 0 && (!lower_ || ei >= ej)) positions_[offsets_[c] + (b / step) * h + a / step] = position(ei, ej);
       }
     }
   }
@@ -309,18 +328,27 @@ void Assembler::for_each_entry(int c, F&& f) const {
     for (Eigen::Index l = 0; l < h; ++l) {
       const Eigen::Index e0 = 2 * l * m;  // columns 2l and 2l + 1
       const Eigen::Index e1 = e0 + m;
-      int len = -1;
+      int len = -1, diagonal = -1;
       for (Eigen::Index k = 0; k < h; ++k) {
         const int p = pos[l * h + k];
         if (p < 0) continue;
         if (len < 0) {
           const int first = equations_.equation(dofs[static_cast<std::size_t>(2 * l)]);
           len = outer[first + 1] - outer[first];
+          diagonal = outer[first];
         }
         f(p, e0 + 2 * k, 1.0);
         f(p + 1, e0 + 2 * k + 1, 1.0);
-        f(p + len, e1 + 2 * k, 1.0);
-        f(p + len + 1, e1 + 2 * k + 1, 1.0);
+        if (!lower_) {
+          f(p + len, e1 + 2 * k, 1.0);
+          f(p + len + 1, e1 + 2 * k + 1, 1.0);
+          continue;
+        }
+        // Lower triangle: the second column lacks the first's diagonal row, so
+        // its rows sit one place earlier; the diagonal block (p at the
+        // column's diagonal) has no entry above the diagonal.
+        if (p != diagonal) f(p + len - 1, e1 + 2 * k, 1.0);
+        f(p + len, e1 + 2 * k + 1, 1.0);
       }
     }
     return;
@@ -477,6 +505,7 @@ void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd&
   const double* value = tangent_.valuePtr();
   const int n = equations_.n_equations();
   Eigen::VectorXd product = Eigen::VectorXd::Zero(n);  // K_L (u - u_ref) by equations
+  if (lower_) return add_symmetric_update(state, residual, product);
   for (int j = 0; j < n; ++j) {
     const int dof_j = equations_.dof(j);
     const double du = state.u[dof_j] - reference_u_[dof_j];
@@ -487,6 +516,34 @@ void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd&
     }
     for (int p = outer[j]; p < outer[j + 1]; ++p)
       if (!nonlinear_entry_[static_cast<std::size_t>(p)]) product[inner[p]] += value[p] * du;
+  }
+  for (int i = 0; i < n; ++i) residual[equations_.dof(i)] += product[i];
+}
+
+void Assembler::add_symmetric_update(const EvaluationState& state, Eigen::VectorXd& residual,
+                                     Eigen::VectorXd& product) const {
+  // Each stored entry (i, j), i > j, stands for (j, i) too: column j adds to
+  // row i and, with u_i, to row j. Row j receives nothing from later
+  // columns, so adding its mirrored terms here, rows ascending, sums every
+  // row in the order of the whole matrix's product (columns ascending).
+  const int* outer = tangent_.outerIndexPtr();
+  const int* inner = tangent_.innerIndexPtr();
+  const double* value = tangent_.valuePtr();
+  const int n = equations_.n_equations();
+  Eigen::VectorXd du(n);
+  for (int j = 0; j < n; ++j) {
+    const int dof = equations_.dof(j);
+    du[j] = state.u[dof] - reference_u_[dof];
+  }
+  for (int j = 0; j < n; ++j) {
+    const double dj = du[j];
+    const bool check = nonlinear_column_[static_cast<std::size_t>(j)] != 0;
+    for (int p = outer[j]; p < outer[j + 1]; ++p) {
+      if (check && nonlinear_entry_[static_cast<std::size_t>(p)]) continue;
+      const int i = inner[p];
+      product[i] += value[p] * dj;
+      if (i != j) product[j] += value[p] * du[i];
+    }
   }
   for (int i = 0; i < n; ++i) residual[equations_.dof(i)] += product[i];
 }
@@ -561,7 +618,10 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
       for_each_entry(c, [&](int p, Eigen::Index e, double) {
         if (nonlinear_entry_[static_cast<std::size_t>(p)]) return;
         const int d = dofs[static_cast<std::size_t>(e / m)];
-        residual[dofs[static_cast<std::size_t>(e % m)]] -= ke[e] * (state.u[d] - reference_u_[d]);
+        const int row = dofs[static_cast<std::size_t>(e % m)];
+        residual[row] -= ke[e] * (state.u[d] - reference_u_[d]);
+        // A lower triangle holds this entry for its mirror too.
+        if (lower_ && row != d) residual[d] -= ke[e] * (state.u[row] - reference_u_[row]);
       });
     if (!tangent) return;
     if (mixed)

@@ -52,7 +52,15 @@ class Assembler {
   /// `reserved_block`: free equations coupled all to all in the pattern
   /// whatever the contributions say (the contact equations), so that a
   /// re-pairing inside them never changes the pattern.
-  Assembler(std::vector<Contribution*> contributions, EquationMap equations, std::vector<int> reserved_block = {});
+  /// `lower_triangle`: every contribution's tangent is symmetric (the
+  /// caller's word, Contribution::symmetric_tangent) and the tangent is
+  /// stored as its lower triangle only (rows >= columns): the entries above
+  /// the diagonal are neither stored nor assembled (half the memory of the
+  /// values and row indices), and the held tangent multiplies vectors as the
+  /// symmetric matrix it stands for. The solvers must then read one triangle
+  /// (LinearSolver::factorize with `symmetric`).
+  Assembler(std::vector<Contribution*> contributions, EquationMap equations, std::vector<int> reserved_block = {},
+            bool lower_triangle = false);
 
   /// Replaces the equation map (prescribed set changed between steps); rebuilds the pattern.
   void set_equations(EquationMap equations);
@@ -125,8 +133,11 @@ class Assembler {
   /// structure is the pattern (built by the constructor, set_equations() and
   /// update_connectivity() on a rebuild), its values those of the last
   /// assemble() with the tangent (zero before). The assembler keeps no other
-  /// copy of the structure.
+  /// copy of the structure. With lower_triangle(), the lower triangle
+  /// (diagonal included) of the symmetric tangent only.
   [[nodiscard]] const SparseMatrix& tangent() const { return tangent_; }
+  /// The tangent is stored as its lower triangle (see the constructor).
+  [[nodiscard]] bool lower_triangle() const { return lower_; }
 
   [[nodiscard]] const EquationMap& equations() const { return equations_; }
   /// The tangent's structure (tangent()).
@@ -191,6 +202,10 @@ class Assembler {
   /// it but the nonlinear entries; the other linear contributions are
   /// subtracted as they are evaluated) to `residual`.
   void add_linear_update(const EvaluationState& state, Eigen::VectorXd& residual) const;
+  /// add_linear_update() for a tangent stored as its lower triangle: each
+  /// entry below the diagonal multiplies for itself and its mirror.
+  /// `product`: zero, n_equations() long (work space).
+  void add_symmetric_update(const EvaluationState& state, Eigen::VectorXd& residual, Eigen::VectorXd& product) const;
 
   std::vector<Contribution*> contributions_;
   EquationMap equations_;
@@ -199,7 +214,8 @@ class Assembler {
   /// positions_[offsets_[c] + b * n + a]; -1 where a row or column is prescribed.
   /// A blocked contribution (blocked_[c], dofs in node pairs) stores one index
   /// per 2x2 block, positions_[offsets_[c] + (b/2) * (n/2) + a/2] for even a, b
-  /// (see build_pattern): a quarter of the memory.
+  /// (see build_pattern): a quarter of the memory. With lower_, -1 for the
+  /// entries (blocks) above the diagonal.
   std::vector<int> positions_;
   std::vector<std::size_t> offsets_;
   std::vector<std::uint8_t> blocked_;
@@ -229,6 +245,7 @@ class Assembler {
   std::vector<std::size_t> built_offsets_;
   std::vector<int> relocated_order_;              ///< contribution indices, assembled in this order
   std::vector<int> reserved_block_;
+  bool lower_ = false;  ///< the tangent is stored as its lower triangle
   int pattern_builds_ = 0, relocations_ = 0;
   AssemblyTiming timing_;
   // Held linear tangents (set_linear()).

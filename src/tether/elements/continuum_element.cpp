@@ -386,6 +386,7 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
       pv.stress = {sigma(0), sigma(1), sigma(2), sigma(3)};
       pv.strain = {mp.strain(0), mp.strain(1), mp.strain(2), 0.5 * mp.strain(3)};
       pv.peeq = material_->equivalent_plastic_strain(state);
+      pv.ac_yield = material_->actively_yielding(state) ? 1 : 0;
       const Vec6 pe = material_->plastic_strain(state);
       pv.plastic_strain = {pe(0), pe(1), pe(2), 0.5 * pe(3)};
       const double eth = thermal ? thermal->thermal_strain(context(s, q, g)) : 0.0;

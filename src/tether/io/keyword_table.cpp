@@ -170,8 +170,10 @@ std::vector<KeywordSpec> build_table() {
        {},
        handle_cyclic_hardening, ""},
       {"USER MATERIAL", kMaterial,
-       "The material's mechanical behaviour from an ABAQUS UMAT in a shared library, loaded at run time (small "
-       "strain; src/tether/materials/user_material.h documents the arguments; a gfortran UMAT works as is).",
+       "The material's mechanical behaviour from an ABAQUS UMAT in a shared library, loaded at run time "
+       "(src/tether/materials/user_material.h documents the arguments; a gfortran UMAT works as is). Under NLGEOM "
+       "it is integrated as ABAQUS/Standard does (Jaumann rate, Hughes-Winget increments) in the polar-rotated "
+       "frame (docs/theory/user_material.md); plane-stress elements are refused there.",
        "CONSTANTS values (PROPS), up to 8 per line",
        {{"CONSTANTS", PT::Integer, "", {}, true, "", "Number of constants (NPROPS)."},
         {"LIBRARY", PT::Text, "", {}, true, "",
@@ -319,14 +321,16 @@ std::vector<KeywordSpec> build_table() {
         choice("TOTALS", "NO", {"YES", "ONLY", "NO"}, "Also (YES) or only (ONLY) print the sums over the set.")},
        handle_node_print, ""},
       {"EL PRINT", kAnyStep, "Element integration-point values in the text report.",
-       "variables: S, E, THE (thermal strain), PEEQ (equivalent plastic strain), PE (plastic strain)",
+       "variables: S, E, THE (thermal strain), PEEQ (equivalent plastic strain), PE (plastic strain), AC YIELD "
+       "(1 where the point flowed plastically in the increment, else 0; also ACYIELD; 0 for a user material)",
        {name("ELSET", "Element set (default: all elements)."), frequency_param()}, handle_el_print, ""},
       {"NODE FILE", kAnyStep, "Nodal values in the result files (VTU; V and A are written in dynamic steps).", "variables: U, RF, V, A",
        {name("NSET", "Node set (default: all nodes)."), frequency_param(),
         name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
        handle_node_file, ""},
-      {"EL FILE", kAnyStep, "Element values in the result files (VTU; PEEQ, PE and ALLPD are written whenever a "
-       "material is plastic, THE whenever the deck gives temperatures).", "variables: S, E, THE, PEEQ, PE",
+      {"EL FILE", kAnyStep, "Element values in the result files (VTU; PEEQ, PE, AC_YIELD and ALLPD are written "
+       "whenever a material is plastic, THE whenever the deck gives temperatures).",
+       "variables: S, E, THE, PEEQ, PE, AC YIELD",
        {name("ELSET", "Element set (default: all elements)."), frequency_param(),
         name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
        handle_el_file, ""},
@@ -351,7 +355,8 @@ std::vector<KeywordSpec> build_table() {
        handle_output, ""},
       {"NODE OUTPUT", kAnyStep, "Nodal variables of the current *OUTPUT block.", "variables: U, RF",
        {name("NSET", "Node set (default: all nodes).")}, handle_node_output, ""},
-      {"ELEMENT OUTPUT", kAnyStep, "Element variables of the current *OUTPUT block.", "variables: S, E, THE, PEEQ, PE",
+      {"ELEMENT OUTPUT", kAnyStep, "Element variables of the current *OUTPUT block.",
+       "variables: S, E, THE, PEEQ, PE, AC YIELD",
        {name("ELSET", "Element set (default: all elements).")}, handle_element_output, ""},
       // --- model data: constraints ---
       {"EQUATION", kModelData, "Linear constraint sum_i c_i u_i = 0 between dofs (ABAQUS syntax).",

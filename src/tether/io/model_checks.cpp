@@ -124,6 +124,24 @@ void check_body_load_densities(const Model& m) {
     }
 }
 
+/// No plane-stress element of a user material in an NLGEOM step: tether does
+/// not know a user material's thickness stretch under finite strain.
+void check_user_material_plane_stress(const Model& m) {
+  for (const Step& step : m.steps) {
+    if (!step.nlgeom) continue;
+    for (const Element& e : m.elements) {
+      const MaterialData& material =
+          m.materials[static_cast<std::size_t>(m.sections[static_cast<std::size_t>(e.section)].material)];
+      if (material.user && e.type.family == Family::PlaneStress)
+        throw InputError(step.where, "NLGEOM with the plane-stress element " + label_text(m.instances, e.id) + " (" +
+                                         std::string(e.type.name) + ") of user material " + material.name + " (" +
+                                         material.user->where.str() +
+                                         "): a user material's thickness stretch is not known under finite "
+                                         "strain; expected CPE or CAX elements, or the step without NLGEOM");
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<double> corner_jacobians(const Model& model, const Element& e) {
@@ -146,6 +164,7 @@ void check_model(DeckState& state) {
   check_materials(state.model);
   resolve_sections(state);
   check_body_load_densities(state.model);
+  check_user_material_plane_stress(state.model);
   check_geometry(state.model);
 }
 

@@ -11,7 +11,31 @@ namespace tether::deck {
 namespace {
 
 const std::vector<std::string_view> kNodeVariables = {"U", "RF", "V", "A", "NT"};
-const std::vector<std::string_view> kElementVariables = {"S", "E", "THE", "PEEQ", "PE"};
+const std::vector<std::string_view> kElementVariables = {"S", "E", "THE", "PEEQ", "PE", "AC YIELD"};
+constexpr std::string_view kElementList = "S, E, THE, PEEQ, PE, AC YIELD";
+
+/// The variable name of a data field: upper case, blanks collapsed, and
+/// ABAQUS's two-word AC YIELD also when written without the blank (ACYIELD).
+std::string variable_name(const std::string& field) {
+  std::string v = normalize_name(field);
+  return v == "ACYIELD" ? "AC YIELD" : v;
+}
+
+/// AC YIELD is 0 at every point of a user material (UMAT): says so once per
+/// such material that a section uses. Sections name their material (resolved
+/// at the end of the deck); materials and sections are model data, so all of
+/// them are known when a step asks for output.
+void warn_user_material_yield_flag(const DeckState& state, const SourceLocation& where) {
+  std::vector<std::string> warned;
+  for (const std::string& name : state.section_material) {
+    const auto& materials = state.model.materials;
+    const auto m = std::find_if(materials.begin(), materials.end(), [&](const MaterialData& d) { return d.name == name; });
+    if (m == materials.end() || !m->user || std::find(warned.begin(), warned.end(), name) != warned.end()) continue;
+    warned.push_back(name);
+    state.warn(where, "AC YIELD is written as 0 at the points of user material " + name +
+                          " (*USER MATERIAL): tether cannot tell whether a UMAT yields");
+  }
+}
 
 bool is_nodal(OutputRequest::Kind k) {
   return k == OutputRequest::Kind::NodePrint || k == OutputRequest::Kind::NodeFile;
@@ -20,18 +44,20 @@ bool is_nodal(OutputRequest::Kind k) {
 /// Reads the variable names of the data lines; unknown ones are ignored with a warning.
 std::vector<std::string> read_variables(DeckState& state, const KeywordBlock& block, OutputRequest::Kind kind) {
   const auto& allowed = is_nodal(kind) ? kNodeVariables : kElementVariables;
-  const std::string expected = is_nodal(kind) ? "U, RF, V, A, NT" : "S, E, THE, PEEQ, PE";
+  const std::string expected = is_nodal(kind) ? "U, RF, V, A, NT" : std::string(kElementList);
   require_data(block, "the variables to write (" + expected + ")");
   std::vector<std::string> vars;
   for (const DataLine& line : block.data)
     for (const std::string& f : data_fields(line, 1, 0, "variable names (" + expected + ")")) {
-      const std::string v = to_upper(f);
+      const std::string v = variable_name(f);
       if (v.empty()) continue;
       if (std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
         state.warn(line.where(), "output variable " + v + " is not available in tether and is ignored (available: " +
                                      expected + ")");
         continue;
       }
+      if (v == "AC YIELD" && std::find(vars.begin(), vars.end(), v) == vars.end())
+        warn_user_material_yield_flag(state, line.where());
       if (std::find(vars.begin(), vars.end(), v) == vars.end()) vars.push_back(v);
     }
   return vars;

@@ -109,6 +109,15 @@ class ConstitutiveModel {
   /// without plasticity).
   [[nodiscard]] virtual Vec6 plastic_strain(std::span<const double> /*state*/) const { return Vec6::Zero(); }
 
+  /// ABAQUS's AC YIELD of a state: true when the increment that produced it
+  /// (the committed state of the last converged increment, or a trial state
+  /// of update_*) flowed plastically, a plastic increment > 0; false when it
+  /// ended elastic, on the yield surface without flow, or unloaded. False for
+  /// models without plasticity, and for a user material (UMAT), whose
+  /// yielding tether cannot know (tether writes 0 for it; see
+  /// docs/theory/plasticity.md).
+  [[nodiscard]] virtual bool actively_yielding(std::span<const double> /*state*/) const { return false; }
+
   /// Initial (small-strain) shear modulus mu [force/area].
   [[nodiscard]] virtual double shear_modulus() const = 0;
 

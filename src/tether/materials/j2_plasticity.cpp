@@ -142,7 +142,7 @@ void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, 
                                   bool on_surface_loading, double T, MaterialResponse& out) const {
   const double mu = elastic_.mu(), kappa = elastic_.lambda() + 2 * mu / 3;
   const Eigen::Map<const Vec6> ep_old(old_state.data()), alpha_old(old_state.data() + 6);
-  const double p_old = old_state[12];
+  const double p_old = old_state[kPeeq];
   const Vec6 ee_trial = eps - ep_old;
   const double volumetric = ee_trial.head<3>().sum();
   Vec6 s_trial;  // deviatoric trial stress, tensor components
@@ -161,6 +161,7 @@ void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, 
     out.tangent = isotropic_stiffness(elastic_.lambda(), mu);
     out.elastic_energy = 0.5 * out.stress.dot(ee_trial);
     out.dissipation = 0;
+    new_state[kYielding] = 0;
     return;
   }
   // On the yield surface (inside): no plastic increment, the loading tangent.
@@ -180,7 +181,8 @@ void J2Plasticity::general_return(Vec6& eps, std::span<const double> old_state, 
   const Vec6 dep = kSqrt32 * dp * n_strain;
   ep = ep_old + dep;
   alpha = alpha_old + kSqrt23 * (h.H - h_old.H) * n;
-  new_state[12] = p_old + dp;
+  new_state[kPeeq] = p_old + dp;
+  new_state[kYielding] = dp > 0 ? 1 : 0;
   out.stress = s_trial - 2 * mu * kSqrt32 * dp * n + pressure_part;
 
   const double theta = 1 - 3 * mu * dp / q_trial;
@@ -199,7 +201,7 @@ void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_st
   const Eigen::Matrix3d C = plane_stress_elasticity(young_, poisson_);
   const Eigen::Matrix3d P = plane_stress_projection();
   const Eigen::Map<const Vec6> ep_old(old_state.data()), alpha_old(old_state.data() + 6);
-  const double p_old = old_state[12];
+  const double p_old = old_state[kPeeq];
   Eigen::Vector3d e, ep_r, beta_old;  // in-plane strain, plastic strain; back stress as a plane stress
   for (int k = 0; k < 3; ++k) e(k) = eps(kPlane[k]), ep_r(k) = ep_old(kPlane[k]);
   beta_old << alpha_old(0) - alpha_old(2), alpha_old(1) - alpha_old(2), alpha_old(3);
@@ -220,6 +222,7 @@ void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_st
   const bool inside = q_trial - h_old.K <= kYieldTolerance * h_old.K;
   if (inside && (!on_surface_loading || q_trial - h_old.K < -kOnSurfaceTolerance * h_old.K)) {
     out.dissipation = 0;
+    new_state[kYielding] = 0;
     finish(sigma_trial, C, ep_old);
     return;
   }
@@ -269,7 +272,8 @@ void J2Plasticity::plane_stress_return(Vec6& eps, std::span<const double> old_st
   ep = ep_old + dep;
   alpha.setZero();
   alpha << (2 * beta(0) - beta(1)) / 3, (2 * beta(1) - beta(0)) / 3, -(beta(0) + beta(1)) / 3, beta(2), 0, 0;
-  new_state[12] = p_old + dp;
+  new_state[kPeeq] = p_old + dp;
+  new_state[kYielding] = dp > 0 ? 1 : 0;
   Vec6 xi = Vec6::Zero();  // deviatoric relative stress, shear doubled; |xi| = q at convergence
   xi << (2 * t.eta(0) - t.eta(1)) / 3, (2 * t.eta(1) - t.eta(0)) / 3, -(t.eta(0) + t.eta(1)) / 3, 2 * t.eta(2), 0, 0;
   out.dissipation = plastic_work(p_old, dp, alpha_old.dot(xi) / t.q, T);

@@ -25,10 +25,12 @@ namespace tether {
 ///   stress is c(p) of the cyclic table and the back stress moves as for
 ///   Kinematic with y(p) - y(0).
 ///
-/// State (13 values): plastic strain (Voigt, engineering shear), back stress
-/// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p. Under
-/// NLGEOM: E_p = (I - Cp^-1)/2 (Voigt, engineering shear), the back stress
-/// (Kirchhoff, on the axes rotated back by R of F = R U), PEEQ.
+/// State (14 values): plastic strain (Voigt, engineering shear), back stress
+/// alpha (deviatoric, Voigt tensor components) [stress], PEEQ p, and the
+/// yield flag (1: the increment that produced the state flowed plastically,
+/// dp > 0; 0: it did not -- ABAQUS's AC YIELD). Under NLGEOM: E_p =
+/// (I - Cp^-1)/2 (Voigt, engineering shear), the back stress (Kirchhoff, on
+/// the axes rotated back by R of F = R U), PEEQ, the flag.
 ///
 /// Finite strain (NLGEOM; every hardening kind; plane strain, axisymmetry and
 /// plane stress): F = Fe Fp, Hencky elasticity tau = D : ln(Ve) with the
@@ -40,7 +42,9 @@ namespace tether {
 class J2Plasticity final : public ConstitutiveModel {
  public:
   enum class Hardening { Isotropic, Kinematic, Combined };
-  static constexpr int kStateSize = 13;
+  static constexpr int kStateSize = 14;
+  static constexpr int kPeeq = 12;       ///< index of PEEQ in the state
+  static constexpr int kYielding = 13;   ///< index of the yield flag (0 or 1) in the state
 
   /// young > 0, poisson in (-1, 0.5), curve values > 0 (checked by the
   /// caller); `curve` may depend on the temperature (the *PLASTIC
@@ -66,9 +70,13 @@ class J2Plasticity final : public ConstitutiveModel {
     return !nlgeom || hardening_ == Hardening::Isotropic;
   }
   [[nodiscard]] double equivalent_plastic_strain(std::span<const double> state) const override {
-    return state[12];
+    return state[kPeeq];
   }
   [[nodiscard]] Vec6 plastic_strain(std::span<const double> state) const override;
+  /// The state's yield flag: the increment that produced it had dp > 0.
+  [[nodiscard]] bool actively_yielding(std::span<const double> state) const override {
+    return state[kYielding] > 0.5;
+  }
   [[nodiscard]] double shear_modulus() const override { return elastic_.mu(); }
   [[nodiscard]] std::string describe() const override;
 

@@ -70,6 +70,9 @@ class ThermalModel final : public ConstitutiveModel {
   [[nodiscard]] Vec6 plastic_strain(std::span<const double> state) const override {
     return inner_->plastic_strain(state);
   }
+  [[nodiscard]] bool actively_yielding(std::span<const double> state) const override {
+    return inner_->actively_yielding(state);
+  }
   [[nodiscard]] double shear_modulus() const override { return inner_->shear_modulus(); }
   [[nodiscard]] std::string describe() const override;
 

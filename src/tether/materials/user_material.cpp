@@ -58,62 +58,65 @@ std::string UserMaterial::describe() const {
                      library_->path(), props_.size(), n_statev_);
 }
 
-void UserMaterial::update_finite_strain(Eigen::Matrix3d&, bool, std::span<const double>, std::span<double>,
-                                        const PointContext&, MaterialResponse&) const {
-  throw ModelError("user material " + name_ + ": *USER MATERIAL is small strain only in tether: run the step "
-                   "without NLGEOM");
-}
-
 void UserMaterial::update_small_strain(Vec6& eps, bool plane_stress, std::span<const double> old_state,
                                        std::span<double> new_state, const PointContext& where,
                                        MaterialResponse& out) const {
-  const int ntens = plane_stress ? 3 : 4, ndi = plane_stress ? 2 : 3, nshr = 1, nprops = static_cast<int>(props_.size());
+  const int ntens = plane_stress ? 3 : 4;
   if (plane_stress) eps(2) = 0;  // not known for a user material
   const Eigen::Map<const Vec6> stress_old(old_state.data()), strain_old(old_state.data() + 6);
-  double stress[4], stran[4], dstran[4], ddsdde[16] = {};
+  UmatCall c;
+  c.ntens = ntens;
   for (int k = 0; k < ntens; ++k) {
     const int v = voigt_index(ntens, k);
-    stress[k] = stress_old(v);
-    stran[k] = strain_old(v);
-    dstran[k] = eps(v) - strain_old(v);
+    c.stress[k] = stress_old(v);
+    c.stran[k] = strain_old(v);
+    c.dstran[k] = eps(v) - strain_old(v);
   }
-  double sse = old_state[12], spd = old_state[13], scd = old_state[14];
+  c.dfgrd0 = small_strain_gradient(strain_old), c.dfgrd1 = small_strain_gradient(eps);
+  call_routine(c, old_state, new_state, where);
+  out.stress.setZero();
+  out.tangent.setZero();
+  for (int i = 0; i < ntens; ++i) {
+    out.stress(voigt_index(ntens, i)) = c.stress[i];
+    for (int j = 0; j < ntens; ++j) out.tangent(voigt_index(ntens, i), voigt_index(ntens, j)) = c.ddsdde[i + ntens * j];
+  }
+  out.elastic_energy = c.sse;
+  out.dissipation = c.spd - old_state[13];
+  Eigen::Map<Vec6>(new_state.data()) = out.stress;
+  Eigen::Map<Vec6>(new_state.data() + 6) = eps;
+  // U - I = eps (tensor shear): where a later NLGEOM step starts from.
+  Eigen::Map<Vec6>(new_state.data() + 15) << eps(0), eps(1), eps(2), 0.5 * eps(3), 0.5 * eps(4), 0.5 * eps(5);
+}
+
+void UserMaterial::call_routine(UmatCall& c, std::span<const double> old_state, std::span<double> new_state,
+                                const PointContext& where) const {
+  const int ntens = c.ntens, ndi = ntens == 3 ? 2 : 3, nshr = 1, nprops = static_cast<int>(props_.size());
+  c.sse = old_state[12], c.spd = old_state[13], c.scd = old_state[14];
   std::copy(old_state.begin() + kHeader, old_state.end(), new_state.begin() + kHeader);
   double* statev = new_state.data() + kHeader;
   double rpl = 0, ddsddt[4] = {}, drplde[4] = {}, drpldt = 0, predef = 0, dpred = 0;
   const double temp = where.temperature - where.temperature_increment, dtemp = where.temperature_increment;
   const double time[2] = {where.step_time - where.dt, where.total_time - where.dt}, dtime = where.dt;
   const double coords[3] = {where.x, where.y, 0}, celent = 0;
-  const double drot[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-  const auto dfgrd0 = small_strain_gradient(strain_old), dfgrd1 = small_strain_gradient(eps);
   double pnewdt = 1e36;
   const int nstatv = n_statev_, layer = 1, kspt = 1, kstep = 0, kinc = 0;
-  routine_(stress, statev, ddsdde, &sse, &spd, &scd, &rpl, ddsddt, drplde, &drpldt, stran, dstran, time, &dtime,
-           &temp, &dtemp, &predef, &dpred, cmname_.data(), &ndi, &nshr, &ntens, &nstatv, props_.data(), &nprops,
-           coords, drot, &pnewdt, &celent, dfgrd0.data(), dfgrd1.data(), &where.element, &where.point, &layer, &kspt,
-           &kstep, &kinc, cmname_.size());
+  std::fill(std::begin(c.ddsdde), std::end(c.ddsdde), 0.0);
+  routine_(c.stress, statev, c.ddsdde, &c.sse, &c.spd, &c.scd, &rpl, ddsddt, drplde, &drpldt, c.stran, c.dstran,
+           time, &dtime, &temp, &dtemp, &predef, &dpred, cmname_.data(), &ndi, &nshr, &ntens, &nstatv,
+           props_.data(), &nprops, coords, c.drot.data(), &pnewdt, &celent, c.dfgrd0.data(), c.dfgrd1.data(),
+           &where.element, &where.point, &layer, &kspt, &kstep, &kinc, cmname_.size());
   const auto at = [&] {
     return where.point > 0 ? fmt::format("user material {} (routine {}), integration point {}", name_, symbol_, where.point)
                            : fmt::format("user material {} (routine {}), in the call at zero strain when the model "
                                          "is built", name_, symbol_);
   };
-  if (!all_finite(stress, static_cast<std::size_t>(ntens)) ||
-      !all_finite(ddsdde, static_cast<std::size_t>(ntens * ntens)) ||
-      !all_finite(statev, static_cast<std::size_t>(nstatv)) || !std::isfinite(sse) || !std::isfinite(spd))
+  if (!all_finite(c.stress, static_cast<std::size_t>(ntens)) ||
+      !all_finite(c.ddsdde, static_cast<std::size_t>(ntens * ntens)) ||
+      !all_finite(statev, static_cast<std::size_t>(nstatv)) || !std::isfinite(c.sse) || !std::isfinite(c.spd))
     throw ModelError(at() + ": the routine returned a NaN or infinite value");
   if (pnewdt < 1)
     throw ModelError(fmt::format("{}: the routine asks for a smaller increment (PNEWDT = {:g})", at(), pnewdt));
-  out.stress.setZero();
-  out.tangent.setZero();
-  for (int i = 0; i < ntens; ++i) {
-    out.stress(voigt_index(ntens, i)) = stress[i];
-    for (int j = 0; j < ntens; ++j) out.tangent(voigt_index(ntens, i), voigt_index(ntens, j)) = ddsdde[i + ntens * j];
-  }
-  out.elastic_energy = sse;
-  out.dissipation = spd - old_state[13];
-  Eigen::Map<Vec6>(new_state.data()) = out.stress;
-  Eigen::Map<Vec6>(new_state.data() + 6) = eps;
-  new_state[12] = sse, new_state[13] = spd, new_state[14] = scd;
+  new_state[12] = c.sse, new_state[13] = c.spd, new_state[14] = c.scd;
 }
 
 }  // namespace tether

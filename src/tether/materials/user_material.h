@@ -33,22 +33,35 @@
  *                               (axisymmetric: rr, zz, theta-theta, rz)
  *   plane stress:               NDI = 2, NSHR = 1, NTENS = 3: 11, 22, 12
  *
- * What tether passes and expects (small strain; NLGEOM steps refuse user
- * materials):
+ * What tether passes and expects. Small strain first; in an NLGEOM step
+ * (finite strain) the routine is called as ABAQUS/Standard calls it, a
+ * Jaumann-rate integration, but in the frame of the polar rotation R of
+ * F = R U rather than the global one: every tensor below is then expressed
+ * in that frame (docs/theory/user_material.md has the kinematics):
  *
- *   STRESS(NTENS)   in: stress at the start of the increment; out: at its end
+ *   STRESS(NTENS)   in: stress at the start of the increment; out: at its end.
+ *                   NLGEOM: Cauchy stress (R^T sigma R), on entry already
+ *                   rotated by DROT, as ABAQUS does
  *   STATEV(NSTATV)  in: state variables at the start; out: at the end
- *   DDSDDE(NTENS,NTENS) out: the Jacobian d(delta stress)/d(delta strain).
+ *   DDSDDE(NTENS,NTENS) out: the Jacobian d(delta stress)/d(delta strain)
+ *                   (NLGEOM: of the returned Cauchy stress with respect to
+ *                   DSTRAN at the rotated start stress; tether adds the
+ *                   rotation and geometric terms itself).
  *                   tether makes no assumption of symmetry (it solves with an
  *                   unsymmetric factorization). Newton's convergence depends
  *                   on its accuracy.
  *   SSE, SPD, SCD   in: specific elastic strain energy, plastic dissipation,
  *                   creep dissipation at the start; out: at the end (per unit
- *                   volume). SSE is the element's elastic energy, the increase
+ *                   volume; NLGEOM: integrated over the reference volume). SSE is the element's elastic energy, the increase
  *                   of SPD its plastic dissipation (ALLPD).
  *   RPL, DDSDDT, DRPLDE, DRPLDT  zeroed, ignored (no thermal coupling)
- *   STRAN(NTENS)    total strain at the start of the increment
- *   DSTRAN(NTENS)   strain increment (plane stress: the in-plane components)
+ *   STRAN(NTENS)    total strain at the start of the increment (NLGEOM: the
+ *                   sum of the DSTRANs, rotated by DROT: the logarithmic
+ *                   strain ln U to the Hughes-Winget error)
+ *   DSTRAN(NTENS)   strain increment (plane stress: the in-plane components).
+ *                   NLGEOM: sym A with A = (U1 - U0) ((U0 + U1)/2)^-1, the
+ *                   midpoint (Hughes-Winget) approximation of the increment
+ *                   of the logarithmic strain
  *   TIME(2)         step time and total time at the start of the increment
  *   DTIME           time increment
  *   TEMP            temperature of the point at the start of the increment
@@ -60,12 +73,15 @@
  *   CMNAME          the material name, upper case, blank-padded to 80 characters
  *   NDI, NSHR, NTENS, NSTATV, PROPS(NPROPS), NPROPS  as above
  *   COORDS(3)       reference coordinates of the integration point (z = 0)
- *   DROT(3,3)       identity (small strain: no rotation increment)
+ *   DROT(3,3)       identity (small strain); NLGEOM: the Hughes-Winget
+ *                   rotation (I - W/2)^-1 (I + W/2), W = skew A, relative to R
  *   PNEWDT          in: a large value; out: a value < 1 rejects the increment:
  *                   tether cuts it back (by its usual cut-back factor, not by
  *                   PNEWDT) and tries again
  *   CELENT          0 (not known)
- *   DFGRD0, DFGRD1(3,3)  I + eps at the start and end of the increment (the
+ *   DFGRD0, DFGRD1(3,3)  NLGEOM: U at the start and end of the increment
+ *                   (R^T F, the deformation gradient in the rotated frame);
+ *                   small strain: I + eps at the start and end (the
  *                   symmetric small-strain approximation)
  *   NOEL, NPT       element label, integration point (1-based)
  *   LAYER, KSPT     1
@@ -82,7 +98,8 @@
  *
  * A plane-stress routine must return sigma_33 = 0 itself (ABAQUS's
  * convention); tether does not know the thickness strain of a user material
- * and reports eps_33 = 0.
+ * and reports eps_33 = 0. For the same reason plane-stress elements of a
+ * user material are refused in NLGEOM steps (use CPE or CAX).
  */
 #ifndef TETHER_MATERIALS_USER_MATERIAL_H
 #define TETHER_MATERIALS_USER_MATERIAL_H

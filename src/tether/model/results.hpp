@@ -23,6 +23,10 @@ struct PointValues {
   Tensor4 strain{};         ///< small strain, or Green-Lagrange strain under NLGEOM; tensor shear
   double peeq = 0;          ///< equivalent plastic strain PEEQ [-] (0 for elastic materials)
   Tensor4 plastic_strain{}; ///< plastic strain PE, tensor shear [-] (zero for elastic materials)
+  /// AC YIELD: 1 when the point flowed plastically in the increment that
+  /// produced these values (dp > 0), else 0; always 0 for elastic and user
+  /// (UMAT) materials.
+  int ac_yield = 0;
   /// Thermal strain THE [-]: eps_th on the three normal components, no shear
   /// (zero without *EXPANSION). Under NLGEOM too it is eps_th, the thermal
   /// stretch minus one (F_th = (1 + eps_th) I), not a Green-Lagrange measure.
@@ -146,7 +150,7 @@ struct IncrementResults {
   bool energies_only = false;
   /// False when the element fields were not built: nodal_stress,
   /// nodal_strain, nodal_thermal_strain, nodal_peeq, nodal_plastic_strain,
-  /// element_stress and element_peeq are empty (the points are still given
+  /// element_stress, element_peeq and the AC YIELD fields are empty (the points are still given
   /// by point_source when streamed). A streamed `*STATIC` increment builds
   /// them only when the result files are due (see files_due()); the `.dat`
   /// reads points only. The VtuWriter refuses such results.
@@ -166,6 +170,13 @@ struct IncrementResults {
   std::vector<double> nodal_peeq;             ///< per node: PEEQ averaged as nodal_stress
   std::vector<Tensor4> nodal_plastic_strain;  ///< per node: PE averaged as nodal_stress, tensor shear
   std::vector<double> element_peeq;           ///< per element: mean PEEQ of its points
+  /// AC YIELD per element: the fraction of its integration points that yield
+  /// (PointValues::ac_yield), in [0, 1].
+  std::vector<double> element_ac_yield;
+  /// AC YIELD per node: element_ac_yield averaged over the elements around
+  /// the node, in [0, 1] (not extrapolated: a flag has no gradient); 1 only
+  /// when every point of every element around it yields, 0 when none does.
+  std::vector<double> nodal_ac_yield;
   std::optional<double> plastic_dissipation;  ///< ALLPD: plastic dissipation of the model up to now [energy]
   std::vector<std::vector<PointValues>> points;  ///< per element, per integration point (empty when streamed)
   std::vector<Tensor4> element_stress;        ///< streamed only: per element, mean of its point stresses

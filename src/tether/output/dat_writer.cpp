@@ -191,6 +191,19 @@ void write_plastic_points(Out out, const Model& model, const Selection& sel, con
   }
 }
 
+/// AC YIELD (tether's block; ccx prints none): 1 at a point that flowed
+/// plastically in the increment, 0 elsewhere, in the number format of PEEQ.
+void write_yield_flags(Out out, const Model& model, const Selection& sel, const IncrementResults& r) {
+  write_header(out, "actively yielding (elem, integ.pnt.,ac yield)", sel.name, r.total_time);
+  std::vector<PointValues> buffer;
+  for (const int e : sel.indices) {
+    const auto& points = element_points(r, static_cast<std::size_t>(e), buffer);
+    const int label = model.elements[static_cast<std::size_t>(e)].id - sel.label_offset;
+    for (std::size_t k = 0; k < points.size(); ++k)
+      fmt::format_to(out, "{:10d}{:4d} {:13.6E}\n", label, k + 1, static_cast<double>(points[k].ac_yield));
+  }
+}
+
 // ---------------------------------------------------------------- contact
 
 bool closed(const ContactNodeValues& v) { return v.status != ContactNodeValues::Status::Open; }
@@ -427,10 +440,10 @@ void DatWriter::check(const Model& model, const OutputRequest& r) {
   }
   for (const auto& v : r.variables) {
     const bool ok = nodal ? (v == "U" || v == "RF" || v == "V" || v == "A" || v == "NT")
-                          : (v == "S" || v == "E" || v == "THE" || v == "PEEQ" || v == "PE");
+                          : (v == "S" || v == "E" || v == "THE" || v == "PEEQ" || v == "PE" || v == "AC YIELD");
     if (!ok)
       throw InputError(r.where, fmt::format("{}: variable '{}' cannot be printed (tether prints {})", keyword, v,
-                                            nodal ? "U, RF, V, A and NT" : "S, E, THE, PEEQ and PE"));
+                                            nodal ? "U, RF, V, A and NT" : "S, E, THE, PEEQ, PE and AC YIELD"));
   }
 }
 
@@ -511,6 +524,8 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
                      v == "S" ? PointTensor::Stress : v == "E" ? PointTensor::Strain : PointTensor::ThermalStrain);
       else if (v == "PEEQ" || v == "PE")
         write_plastic_points(out, model_, sel, results, v == "PEEQ");
+      else if (v == "AC YIELD")
+        write_yield_flags(out, model_, sel, results);
     }
   }
   if (contact_due) write_contact_state_blocks(text, model_, results.contact, results.total_time);

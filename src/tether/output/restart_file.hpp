@@ -26,7 +26,9 @@
 
 namespace tether {
 
-inline constexpr std::uint32_t kRestartFormatVersion = 3;
+/// 2: dynamic motion state; 3: the static predictor; 4: *PLASTIC points carry
+/// the yield flag (AC YIELD), 14 state values instead of 13.
+inline constexpr std::uint32_t kRestartFormatVersion = 4;
 
 /// The bytes of the file for `state`.
 std::string encode_restart(const RestartState& state);

@@ -299,6 +299,8 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   check_size(r.nodal_plastic_strain.size(), n_nodes, "nodal_plastic_strain");
   check_size(r.nodal_thermal_strain.size(), n_nodes, "nodal_thermal_strain");
   check_size(r.element_peeq.size(), n_elements, "element_peeq");
+  check_size(r.nodal_ac_yield.size(), n_nodes, "nodal_ac_yield");
+  check_size(r.element_ac_yield.size(), n_elements, "element_ac_yield");
 
   Sink sink(out);
   const auto enc = encoding_;
@@ -354,6 +356,9 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (!r.nodal_peeq.empty())
     write_data_array<double>(sink, enc, kIndent, "PEEQ", 1, n_nodes, indexed([&](std::size_t i) { return r.nodal_peeq[i]; }));
   if (!r.nodal_plastic_strain.empty()) write_tensors6(sink, enc, kIndent, "PE", r.nodal_plastic_strain);
+  if (!r.nodal_ac_yield.empty())  // the fraction of yielding points around the node (see IncrementResults)
+    write_data_array<double>(sink, enc, kIndent, "AC_YIELD", 1, n_nodes,
+                             indexed([&](std::size_t i) { return r.nodal_ac_yield[i]; }));
   if (!r.multipliers.empty()) {
     SparseNodal<double> lambda;
     SparseNodal<Eigen::Vector3d> lambdas;  // constraints of 2 or 3 equations, at their first node
@@ -434,6 +439,10 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (!r.element_peeq.empty())
     write_data_array<double>(sink, enc, kIndent, "PEEQ", 1, n_cells, indexed([&](std::size_t c) {
                                return c < n_elements ? r.element_peeq[c] : 0.0;
+                             }));
+  if (!r.element_ac_yield.empty())  // the fraction of the element's points that yield
+    write_data_array<double>(sink, enc, kIndent, "AC_YIELD", 1, n_cells, indexed([&](std::size_t c) {
+                               return c < n_elements ? r.element_ac_yield[c] : 0.0;
                              }));
   sink.append("      </CellData>\n      <Points>\n");
   write_data_array<double>(sink, enc, kIndent, "Points", 3, 3 * n_nodes,

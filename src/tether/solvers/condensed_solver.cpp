@@ -125,13 +125,22 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
     }
   }
 
-  // Dense interface matrix A_II + C.
+  // Dense interface matrix A_II + C (a symmetric matrix given as its lower
+  // triangle adds each entry below the diagonal to its mirror too). Only the
+  // interface columns are looked at: a whole matrix with no entry above the
+  // diagonal in any of them has no entry off the diagonal in A_II, where
+  // mirroring then changes nothing.
   Eigen::MatrixXd s = bulk_->schur();
+  bool mirror = symmetric;
+  for (int j : interface_)
+    if (a.outerIndexPtr()[j + 1] > a.outerIndexPtr()[j] && a.innerIndexPtr()[a.outerIndexPtr()[j]] < j) mirror = false;
   for (int j : interface_)
     for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
       const int i = a.innerIndexPtr()[k];
-      if (in_interface_[static_cast<std::size_t>(i)])
-        s(position_[static_cast<std::size_t>(i)], position_[static_cast<std::size_t>(j)]) += a.valuePtr()[k];
+      if (!in_interface_[static_cast<std::size_t>(i)]) continue;
+      const int pi = position_[static_cast<std::size_t>(i)], pj = position_[static_cast<std::size_t>(j)];
+      s(pi, pj) += a.valuePtr()[k];
+      if (mirror && i != j) s(pj, pi) += a.valuePtr()[k];
     }
   if (!factorize_interface(std::move(s), a, symmetric)) return use_fallback(a, symmetric);
   if (reused) ++statistics_.reuses, statistics_.promised += keep;  // served by the interface system alone

@@ -64,8 +64,11 @@ class AutoSolver final : public LinearSolver {
         }
       }
     }
-    if (!umfpack_ready_) umfpack_.analyze(a), umfpack_ready_ = true;
-    umfpack_.factorize(a, symmetric);
+    // UMFPACK reads both triangles: a lower triangle is mirrored for it.
+    whole_ = symmetric && lower_triangle_only(a) ? mirror_lower(a) : SparseMatrix();
+    const SparseMatrix& m = whole_.nonZeros() > 0 ? whole_ : a;
+    if (!umfpack_ready_) umfpack_.analyze(m), umfpack_ready_ = true;
+    umfpack_.factorize(m, symmetric);
     active_ = &umfpack_;
   }
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
@@ -80,11 +83,28 @@ class AutoSolver final : public LinearSolver {
   MumpsSolver mumps_;
   UmfpackSolver umfpack_;
   LinearSolver* active_ = nullptr;
+  SparseMatrix whole_;  ///< both triangles of a symmetric matrix given as its lower one, for UMFPACK
   bool cholmod_ready_ = false, umfpack_ready_ = false, mumps_ready_ = false, cholmod_failed_ = false,
        mumps_failed_ = false;
 };
 
 }  // namespace
+
+bool lower_triangle_only(const SparseMatrix& a) {
+  for (Eigen::Index j = 0; j < a.outerSize(); ++j) {
+    const int begin = a.outerIndexPtr()[j];
+    const int end = a.isCompressed() ? a.outerIndexPtr()[j + 1] : begin + a.innerNonZeroPtr()[j];
+    if (end > begin && a.innerIndexPtr()[begin] < j) return false;
+  }
+  return true;
+}
+
+SparseMatrix mirror_lower(const SparseMatrix& lower) {
+  const SparseMatrix strict = lower.triangularView<Eigen::StrictlyLower>();
+  SparseMatrix whole = lower + SparseMatrix(strict.transpose());  // disjoint patterns: values copied
+  whole.makeCompressed();
+  return whole;
+}
 
 SolverKind parse_solver_kind(const std::string& name) {
   std::string n = name;

@@ -37,7 +37,11 @@ class LinearSolver {
   virtual void analyze(const SparseMatrix& a) = 0;
 
   /// Numeric factorization of `a` (same pattern as analysed). `symmetric`
-  /// says that `a` is symmetric (lets Auto pick Cholesky or LDLT). Throws SolverError
+  /// says that `a` is symmetric (lets Auto pick Cholesky or LDLT); it may
+  /// then be given as its lower triangle only (Assembler::lower_triangle()),
+  /// which CHOLMOD, MUMPS and the condensation read as it is and Auto's
+  /// UMFPACK fallback mirrors (UMFPACK and SparseLU on their own need the
+  /// whole matrix). Throws SolverError
   /// for a singular matrix, naming the equation where a pivot vanished.
   virtual void factorize(const SparseMatrix& a, bool symmetric) = 0;
 
@@ -57,6 +61,14 @@ class LinearSolver {
   /// budget; see make_linear_solver()); 0 for the solvers that never do.
   [[nodiscard]] virtual int out_of_core_factorizations() const { return 0; }
 };
+
+/// True when `a` holds no entry above its diagonal (rows sorted in each
+/// column): a symmetric matrix given so is its lower triangle. O(columns).
+[[nodiscard]] bool lower_triangle_only(const SparseMatrix& a);
+
+/// The symmetric matrix whose lower triangle `lower` is (the entries below
+/// the diagonal mirrored above it), compressed, rows sorted.
+[[nodiscard]] SparseMatrix mirror_lower(const SparseMatrix& lower);
 
 /// Creates a solver of the given kind. `memory_budget_mb`: memory the whole
 /// process may use [MB], 0 for no limit; MUMPS factorizations that would not

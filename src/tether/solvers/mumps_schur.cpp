@@ -62,25 +62,15 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
                            const std::vector<char>& in_interface, bool symmetric) {
   if (!a.isCompressed() || a.rows() != a.cols()) throw SolverError("MUMPS Schur: square compressed matrix expected");
   const Eigen::Index m = static_cast<Eigen::Index>(interface.size());
-  // The entries MUMPS sees: every one with a row or column in R (lower
-  // triangle when symmetric), then an explicit zero diagonal for each
-  // interface equation so that it belongs to the pattern. They exist only
-  // for the duration of MUMPS's analysis and factorization; what is kept to
-  // recognise them later is their fingerprint.
-  std::vector<int> rows, cols;
-  std::vector<double> values;
-  const std::size_t capacity = static_cast<std::size_t>(a.nonZeros()) / (symmetric ? 2 : 1) + interface.size();
-  rows.reserve(capacity), cols.reserve(capacity), values.reserve(capacity);
+  Input input;
   Fingerprint pattern, entries;
   std::vector<Coupling> coupling;  // A_RI: for a symmetric matrix each passed entry between R and I is one of it
-  for_each_passed(a, in_interface, symmetric, [&](int i, int j, int k) {
-    rows.push_back(i + 1), cols.push_back(j + 1), values.push_back(a.valuePtr()[k]);
-    add_entry(pattern, i, j), add_entry(entries, i, j, a.valuePtr()[k]);
-    const bool i_in = in_interface[static_cast<std::size_t>(i)], j_in = in_interface[static_cast<std::size_t>(j)];
-    if (j_in && !i_in) coupling.push_back({i, j, a.valuePtr()[k]});
-    else if (symmetric && i_in && !j_in) coupling.push_back({j, i, a.valuePtr()[k]});
-  });
-  for (int e : interface) rows.push_back(e + 1), cols.push_back(e + 1), values.push_back(0.0);
+  gather(a, interface, in_interface, symmetric, input, pattern, entries, coupling);
+  std::vector<int>& rows = input.rows;
+  std::vector<int>& cols = input.cols;
+  // MUMPS only reads its input matrix (analysis and factorization): a lent
+  // lower triangle's values are not written.
+  double* values = input.lent ? const_cast<double*>(a.valuePtr()) : input.values.data();
 
   const bool new_pattern =
       !analysed_ || !mumps_ || symmetric != symmetric_ || n_ != a.cols() || pattern != pattern_ ||
@@ -99,7 +89,7 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
     id->nnz = static_cast<MUMPS_INT8>(rows.size());
     id->irn = rows.data();
     id->jcn = cols.data();
-    id->a = values.data();
+    id->a = values;
     id->size_schur = static_cast<int>(m);
     id->listvar_schur = schur_list_.data();
     mumps_->icntl(19) = 1;  // Schur complement, centralized by rows on the host
@@ -123,7 +113,7 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
   } detach{id};
   id->irn = rows.data();  // this call's arrays: MUMPS reads them again
   id->jcn = cols.data();
-  id->a = values.data();
+  id->a = values;
   schur_rows_.assign(static_cast<std::size_t>(m * m), 0.0);
   id->schur = schur_rows_.data();
   id->schur_lld = static_cast<int>(m);
@@ -146,6 +136,48 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
       schur_(i, j) = symmetric_ && j > i ? schur_rows_[static_cast<std::size_t>(j * m + i)]
                                          : schur_rows_[static_cast<std::size_t>(i * m + j)];
   schur_rows_ = {};  // m² doubles: the next factorization allocates its own
+}
+
+void MumpsSchur::gather(const SparseMatrix& a, const std::vector<int>& interface, const std::vector<char>& in_interface,
+                        bool symmetric, Input& input, Fingerprint& pattern, Fingerprint& entries,
+                        std::vector<Coupling>& coupling) {
+  const auto visit = [&](int i, int j, int k) {
+    add_entry(pattern, i, j), add_entry(entries, i, j, a.valuePtr()[k]);
+    const bool i_in = in_interface[static_cast<std::size_t>(i)], j_in = in_interface[static_cast<std::size_t>(j)];
+    if (j_in && !i_in) coupling.push_back({i, j, a.valuePtr()[k]});
+    else if (symmetric && i_in && !j_in) coupling.push_back({j, i, a.valuePtr()[k]});
+  };
+  input.lent = symmetric && lower_triangle_only(a);
+  if (input.lent) {
+    // A lower triangle is lent whole: one row and one column index per
+    // entry of `a` (MUMPS counts from 1, `a` from 0), and the row 0, which
+    // MUMPS ignores as out of range, for the entries of A_II. An interface
+    // equation with no entry outside A_II (a contact multiplier) is then in
+    // no entry MUMPS reads; MUMPS takes it as a Schur variable all the same,
+    // and the Schur complement is that of the copy below with its explicit
+    // zero diagonal, bit for bit (CondensedSolver's tests, the Hertz decks).
+    const auto nnz = static_cast<std::size_t>(a.nonZeros());
+    input.rows.resize(nnz), input.cols.resize(nnz);
+    for (Eigen::Index j = 0; j < a.cols(); ++j)
+      for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
+        const int i = a.innerIndexPtr()[k];
+        const bool skip = in_interface[static_cast<std::size_t>(i)] && in_interface[static_cast<std::size_t>(j)];
+        input.rows[static_cast<std::size_t>(k)] = skip ? 0 : i + 1;
+        input.cols[static_cast<std::size_t>(k)] = static_cast<int>(j) + 1;
+        if (!skip) visit(i, static_cast<int>(j), k);
+      }
+    return;
+  }
+  // A copy of the entries MUMPS sees: every one with a row or column in R
+  // (lower triangle when symmetric), then an explicit zero diagonal for
+  // each interface equation so that it belongs to the pattern.
+  const std::size_t capacity = static_cast<std::size_t>(a.nonZeros()) / (symmetric ? 2 : 1) + interface.size();
+  input.rows.reserve(capacity), input.cols.reserve(capacity), input.values.reserve(capacity);
+  for_each_passed(a, in_interface, symmetric, [&](int i, int j, int k) {
+    input.rows.push_back(i + 1), input.cols.push_back(j + 1), input.values.push_back(a.valuePtr()[k]);
+    visit(i, j, k);
+  });
+  for (int e : interface) input.rows.push_back(e + 1), input.cols.push_back(e + 1), input.values.push_back(0.0);
 }
 
 bool MumpsSchur::unchanged(const SparseMatrix& a, const std::vector<char>& in_interface) const {

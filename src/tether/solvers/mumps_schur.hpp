@@ -42,7 +42,11 @@ class MumpsSchur {
   /// entries are symmetric (LDLT). The ordering is recomputed only when
   /// their pattern or `symmetric` changed since the last call: above 100000
   /// equations METIS's nested dissection with I last (fill_ordering.hpp),
-  /// else MUMPS's AMD.
+  /// else MUMPS's AMD. A symmetric
+  /// `a` stored as its lower triangle (Assembler::lower_triangle()) has its
+  /// values read by MUMPS in place: only MUMPS's row and column indices are
+  /// built (8 bytes per entry, against 16 for a copy of the entries).
+  /// MUMPS's coordinate input has no row-index array to lend (it counts from 1).
   void factorize(const SparseMatrix& a, const std::vector<int>& interface, const std::vector<char>& in_interface,
                  bool symmetric);
 
@@ -107,6 +111,25 @@ class MumpsSchur {
 
   /// Adds the entry (i, j) = `value` to `f` (0-based; the pattern fingerprint uses value 0).
   static void add_entry(Fingerprint& f, int i, int j, double value = 0.0);
+
+  /// MUMPS's coordinate input for factorize(): 1-based row and column
+  /// indices and, unless `lent`, the values. They exist only for the
+  /// duration of MUMPS's analysis and factorization; what is kept to
+  /// recognise the entries later is their fingerprint.
+  struct Input {
+    std::vector<int> rows, cols;
+    std::vector<double> values;
+    /// The values are those of the matrix itself, a symmetric one stored as
+    /// its lower triangle: every entry of it is given (rows and columns
+    /// parallel to its value array), those of A_II with the out-of-range row
+    /// 0, and no explicit interface diagonal. No copy of the values.
+    bool lent = false;
+  };
+  /// Fills `input` for `a` (see factorize()) and, over the entries passed,
+  /// the fingerprints and A_RI.
+  static void gather(const SparseMatrix& a, const std::vector<int>& interface, const std::vector<char>& in_interface,
+                     bool symmetric, Input& input, Fingerprint& pattern, Fingerprint& entries,
+                     std::vector<Coupling>& coupling);
 
   std::unique_ptr<detail::MumpsInstance> mumps_;
   bool symmetric_ = false;
