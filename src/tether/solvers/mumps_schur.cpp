@@ -4,12 +4,16 @@
 #include <bit>
 #include <string>
 
+#include "tether/solvers/fill_ordering.hpp"
 #include "tether/solvers/mumps_instance.hpp"
 
 namespace tether {
 
 namespace {
-constexpr Eigen::Index kMetisThreshold = 100000;  ///< as MumpsSolver: METIS above, AMD below
+/// Above this many equations the ordering is METIS's nested dissection with
+/// the interface last, given to MUMPS as PERM_IN (MUMPS itself orders by AMD
+/// when a Schur complement is asked for, whatever ICNTL(7) says); below, AMD.
+constexpr Eigen::Index kMetisThreshold = 100000;
 }
 
 MumpsSchur::MumpsSchur() = default;
@@ -89,14 +93,18 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
     id->size_schur = static_cast<int>(m);
     id->listvar_schur = schur_list_.data();
     mumps_->icntl(19) = 1;  // Schur complement, centralized by rows on the host
-    mumps_->icntl(7) = n_ > kMetisThreshold ? 5 : 0;
+    std::vector<int> perm_in;  // read by the analysis only
+    if (n_ > kMetisThreshold) perm_in = nested_dissection_last(a, in_interface);
+    id->perm_in = perm_in.empty() ? nullptr : perm_in.data();
+    mumps_->icntl(7) = perm_in.empty() ? 0 : 1;
     analysed_ = false;  // until the analysis succeeds (a failed one must be redone, not factorized)
     try {
       mumps_->run(1);
     } catch (...) {
-      id->irn = id->jcn = nullptr, id->a = nullptr;  // the arrays die with this call
+      id->irn = id->jcn = nullptr, id->a = nullptr, id->perm_in = nullptr;  // the arrays die with this call
       throw;
     }
+    id->perm_in = nullptr;
     analysed_ = true;
   }
   struct Detach {  // solves read neither the matrix nor the Schur array: no dangling pointer, whatever happens

@@ -40,7 +40,9 @@ class MumpsSchur {
   /// entries of `a` with a row or a column in R are passed to MUMPS (A_II is
   /// taken as zero, so schur() is -A_IR A_RR⁻¹ A_RI). `symmetric`: those
   /// entries are symmetric (LDLT). The ordering is recomputed only when
-  /// their pattern or `symmetric` changed since the last call. A symmetric
+  /// their pattern or `symmetric` changed since the last call: above 100000
+  /// equations METIS's nested dissection with I last (fill_ordering.hpp),
+  /// else MUMPS's AMD. A symmetric
   /// `a` stored as its lower triangle (Assembler::lower_triangle()) has its
   /// values read by MUMPS in place: only MUMPS's row and column indices are
   /// built (8 bytes per entry, against 16 for a copy of the entries).
