@@ -248,3 +248,37 @@ TEST(MortarTangent, TermMemoHoldsTheCurrentTermsOnly) {
 }
 
 }  // namespace
+
+namespace {
+
+// Each node memoizes its active-set decision per state (MortarNode::decision):
+// asked at other displacements, it must decide afresh. The master is moved
+// from 0.01 below the slave (open) to 0.01 above (closed) and back; each
+// answer of a node asked in turn at both states is that of a fresh node.
+TEST(MortarTangent, DecisionMemoFollowsTheDisplacements) {
+  std::mt19937 rng(3);
+  MortarFixture shared(MortarCase{false, false, 3, 4}, rng);
+  const int n = shared.n_disp + shared.pair->n_slaves();
+  Eigen::VectorXd open = Eigen::VectorXd::Zero(n), closed = open;
+  for (std::size_t a = 0; a < shared.reference.size(); ++a)
+    if (shared.reference[a].y() < 0) closed[2 * static_cast<int>(a) + 1] = 0.02;
+  const EvaluationState s_open{open, open, 1, 1, 1, false}, s_closed{closed, closed, 1, 1, 1, false};
+  shared.pair->update_connectivity(s_closed);
+  int changed = 0;
+  for (const EvaluationState* s : {&s_closed, &s_open, &s_closed, &s_open}) {
+    for (int j = 0; j < shared.pair->n_slaves(); ++j) {
+      std::mt19937 unused(3);
+      MortarFixture alone(MortarCase{false, false, 3, 4}, unused);
+      alone.pair->update_connectivity(s_closed);
+      const auto node = [j](const MortarFixture& fx) {
+        return dynamic_cast<const MortarNode*>(fx.pair->nodes()[static_cast<std::size_t>(j)]);
+      };
+      const bool expected = node(alone)->closed(*s);
+      EXPECT_EQ(node(shared)->closed(*s), expected) << "slave " << j;
+      if (s == &s_closed && expected && !node(alone)->closed(s_open)) ++changed;
+    }
+  }
+  EXPECT_GT(changed, 0);  // the states decide differently
+}
+
+}  // namespace

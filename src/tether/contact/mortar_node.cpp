@@ -228,11 +228,39 @@ ContactPressure soft_pressure(const MortarPair& pair, double decisive, double D)
 
 }  // namespace
 
+MortarNode::Decision MortarNode::decision(const EvaluationState& state) const {
+  const MortarSlave& s = pair_.slave(slave_);
+  const std::lock_guard<std::mutex> lock(memo_mutex_);
+  const auto same_positions = [&] {
+    for (std::size_t a = 0; a < s.nodes.size(); ++a) {
+      const Vec2T<double> p = mortar_position(pair_, state.u, s.nodes[a]);
+      if (!(p.x == memo_.x[2 * a] && p.y == memo_.x[2 * a + 1])) return false;
+    }
+    return true;
+  };
+  if (memo_.valid && memo_.nlgeom == state.nlgeom && memo_.version == pair_.overlap_version() &&
+      memo_.nodes == s.nodes && same_positions())
+    return memo_.decision;
+  memo_.valid = false;
+  Decision d;
+  d.gap = gap(state.u, state.nlgeom);
+  if (d.gap.covered) d.decisive = decisive_gap(pair_, s, state.u, d.gap.gap, d.gap.D);
+  memo_.x.clear();
+  for (int n : s.nodes) {
+    const Vec2T<double> p = mortar_position(pair_, state.u, n);
+    memo_.x.push_back(p.x), memo_.x.push_back(p.y);
+  }
+  memo_.nodes = s.nodes;
+  memo_.nlgeom = state.nlgeom, memo_.version = pair_.overlap_version(), memo_.decision = d, memo_.valid = true;
+  return d;
+}
+
 bool MortarNode::closed(const EvaluationState& state) const {
   const MortarSlave& s = pair_.slave(slave_);
-  const Gap g = gap(state.u, state.nlgeom);
+  const Decision d = decision(state);
+  const Gap& g = d.gap;
   if (!g.covered) return false;
-  const double decisive = decisive_gap(pair_, s, state.u, g.gap, g.D);
+  const double decisive = d.decisive;
   if (pair_.soft()) {  // the law acts wherever it gives a pressure or a slope, and while λ_j is not yet zero
     const ContactPressure p = soft_pressure(pair_, decisive, g.D);
     return p.p > 0 || p.dp_dh > 0 || state.u[s.multiplier] != 0;

@@ -31,6 +31,10 @@
 /// segmentation. A node whose faces overlap no master face (or whose
 /// D_j <= 0) is free: λ_j = 0. Theory: docs/theory/mortar.md.
 
+#include <cstdint>
+#include <mutex>
+#include <vector>
+
 #include "tether/assembly/contribution.hpp"
 
 namespace tether {
@@ -84,8 +88,28 @@ class MortarNode final : public Contribution {
  private:
   /// c_j = c / A_j² of the complementarity function.
   [[nodiscard]] double row_stiffness() const;
+  /// The weighted gap and the gap the active set is decided on (zero for a
+  /// touch; 0 when not covered) at the state's displacements.
+  struct Decision {
+    Gap gap;
+    double decisive = 0;
+  };
+  /// decision at `state`, memoized: update_connectivity and the assembly
+  /// that follows ask at the same state. A pure function of the positions of
+  /// the node's nodes, of the measure and of the pair's overlaps (its
+  /// overlap_version()), the memo keys on exactly those, bit for bit.
+  [[nodiscard]] Decision decision(const EvaluationState& state) const;
   const MortarPair& pair_;
   int slave_;
+  struct Memo {
+    bool valid = false, nlgeom = false;
+    std::uint64_t version = 0;
+    std::vector<int> nodes;
+    std::vector<double> x;  ///< positions of `nodes`, x and y
+    Decision decision;
+  };
+  mutable std::mutex memo_mutex_;
+  mutable Memo memo_;
 };
 
 }  // namespace tether

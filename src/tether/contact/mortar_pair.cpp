@@ -153,6 +153,7 @@ bool MortarPair::find_overlaps(const Eigen::VectorXd& u) {
 }
 
 void MortarPair::update_term_faces() {
+  ++overlap_version_;
   for (std::size_t e = 0; e < overlapped_.size(); ++e) {
     std::vector<int>& t = term_faces_[e];
     t = overlapped_[e];

@@ -15,6 +15,7 @@
 /// strain. Theory: docs/theory/mortar.md.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -144,6 +145,9 @@ class MortarPair final : public Contribution {
   /// The master faces whose terms the kinematics of slave face e sums:
   /// overlapped(e), and with friction those overlapped at the last commit.
   [[nodiscard]] const std::vector<int>& term_faces(int e) const { return term_faces_[static_cast<std::size_t>(e)]; }
+  /// Changes whenever overlapped() or term_faces() may have changed (the
+  /// nodes' memo of their active-set decision keys on it).
+  [[nodiscard]] std::uint64_t overlap_version() const { return overlap_version_; }
   /// Slave faces sharing a node with each slave face's nodes (for the normals), by slave node index.
   [[nodiscard]] const std::vector<std::vector<std::pair<int, int>>>& faces_of_node() const { return faces_of_node_; }
   /// The memo of the terms (slave face × master face) the nodes' kinematics
@@ -171,6 +175,7 @@ class MortarPair final : public Contribution {
   std::vector<std::vector<int>> committed_;   ///< per slave face: overlapped at the last commit (friction)
   std::vector<std::vector<int>> term_faces_;  ///< per slave face: overlapped_ ∪ committed_
   void update_term_faces();
+  std::uint64_t overlap_version_ = 0;
   bool searched_once_ = false;
   bool dofs_stale_ = false;  ///< commit() changed the term faces: rebuild the dofs at the next update
   double attempt_time_ = -1, attempt_dt_ = -1;  ///< the increment attempt the guard counts in

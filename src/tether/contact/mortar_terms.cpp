@@ -42,13 +42,18 @@ Vec2T<T> normal_at(const MortarPair& pair, const std::vector<int>& nodes, std::s
 /// The terms of every node k of slave face e against master face f, from one
 /// segment integration. `x`: the positions of `nodes` (mortar_term_nodes()).
 /// `nlgeom`: dA from the current positions; otherwise from the reference ones.
+/// `normals`: the nodal normals of e's nodes at x, over the same unknowns
+/// (MortarTermCache::face_normals); null: computed here.
 template <class T>
 std::vector<MortarTerm<T>> terms_of(const MortarPair& pair, int e, int f, const std::vector<int>& nodes,
-                                    std::span<const Vec2T<T>> x, bool nlgeom) {
+                                    std::span<const Vec2T<T>> x, bool nlgeom,
+                                    const std::vector<Vec2T<T>>* normals = nullptr) {
   const std::vector<int>& face = pair.setup().slave_faces[static_cast<std::size_t>(e)];
   const std::vector<Vec2T<T>> xe = gather(nodes, x, face);
-  std::vector<Vec2T<T>> ne;
-  for (int q : face) ne.push_back(normal_at(pair, nodes, x, q));
+  std::vector<Vec2T<T>> computed;
+  if (!normals)
+    for (int q : face) computed.push_back(normal_at(pair, nodes, x, q));
+  const std::vector<Vec2T<T>>& ne = normals ? *normals : computed;
   const std::vector<std::vector<Vec2T<T>>> master{gather(nodes, x, pair.setup().master_faces[static_cast<std::size_t>(f)])};
   std::vector<Vec2T<double>> reference;
   if (!nlgeom)
@@ -110,10 +115,11 @@ MortarTermShare share_of(const MortarTerm<Dual2>& t, const MortarTerm<double>* s
 }
 
 /// Computes the terms of slave face e against master face f at positions x
-/// (x0 at the start of the increment, with friction).
+/// (x0 at the start of the increment, with friction); `normals` (order >= 1):
+/// the nodal normals of e's nodes at x over the term's unknowns.
 MortarFaceTerms compute(const MortarPair& pair, int e, int f, std::vector<int> nodes,
                         const std::vector<Vec2T<double>>& x, const std::vector<Vec2T<double>>& x0, int order,
-                        bool nlgeom, bool friction) {
+                        bool nlgeom, bool friction, const std::vector<Vec2T<Dual2>>* normals) {
   MortarFaceTerms out;
   if (friction) out.start = terms_of<double>(pair, e, f, nodes, x0, nlgeom);
   if (order == 0) {
@@ -125,7 +131,7 @@ MortarFaceTerms compute(const MortarPair& pair, int e, int f, std::vector<int> n
       const int i = 2 * static_cast<int>(a);
       d.push_back({Dual2::variable(x[a].x, i, n, order >= 2), Dual2::variable(x[a].y, i + 1, n, order >= 2)});
     }
-    const std::vector<MortarTerm<Dual2>> terms = terms_of<Dual2>(pair, e, f, nodes, d, nlgeom);
+    const std::vector<MortarTerm<Dual2>> terms = terms_of<Dual2>(pair, e, f, nodes, d, nlgeom, normals);
     for (std::size_t k = 0; k < terms.size(); ++k)
       out.shares.push_back(share_of(terms[k], friction ? &out.start[k] : nullptr, friction));
   }
@@ -137,7 +143,7 @@ MortarFaceTerms compute(const MortarPair& pair, int e, int f, std::vector<int> n
 
 MortarTermScalar::MortarTermScalar(const Dual2& d) : value(d.value()), gradient(d.gradient()), hessian(d.hessian()) {}
 
-std::vector<int> mortar_term_nodes(const MortarPair& pair, int e, int f) {
+std::vector<int> mortar_term_nodes(const MortarPair& pair, int e, int f, int* n_slave) {
   std::vector<int> nodes;
   const auto add = [&nodes](int node) {
     if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
@@ -145,6 +151,7 @@ std::vector<int> mortar_term_nodes(const MortarPair& pair, int e, int f) {
   for (int q : pair.setup().slave_faces[static_cast<std::size_t>(e)])
     for (const auto& [e2, k2] : pair.faces_of_node()[static_cast<std::size_t>(q)])
       for (int r : pair.setup().slave_faces[static_cast<std::size_t>(e2)]) add(r);
+  if (n_slave) *n_slave = static_cast<int>(nodes.size());
   for (int q : pair.setup().master_faces[static_cast<std::size_t>(f)]) add(q);
   return nodes;
 }
@@ -168,7 +175,7 @@ void MortarTermCache::with_terms(const MortarPair& pair, int e, int f, const Eva
     of_face.push_back({});
     entry = of_face.end() - 1;
     entry->f = f;
-    entry->nodes = mortar_term_nodes(pair, e, f);  // fixed by the faces' topology
+    entry->nodes = mortar_term_nodes(pair, e, f, &entry->n_slave);  // fixed by the faces' topology
   }
   const std::vector<int>& nodes = entry->nodes;
   // The positions are compared in place with those a slot was computed at
@@ -200,11 +207,45 @@ void MortarTermCache::with_terms(const MortarPair& pair, int e, int f, const Eva
       if (friction) x0.push_back(mortar_position(pair, state.u_start, n));
     }
     slot.valid = false;
-    slot.terms = compute(pair, e, f, nodes, x, x0, order, state.nlgeom, friction);
+    slot.terms = compute(pair, e, f, nodes, x, x0, order, state.nlgeom, friction,
+                         order >= 1 ? &face_normals(pair, e, *entry, x, order) : nullptr);
     slot.x = std::move(x), slot.x0 = std::move(x0);
     slot.nlgeom = state.nlgeom, slot.friction = friction, slot.valid = true;
   }
   use(slot.terms);
+}
+
+const std::vector<Vec2T<Dual2>>& MortarTermCache::face_normals(const MortarPair& pair, int e, const Entry& entry,
+                                                               const std::vector<Vec2T<double>>& x, int order) {
+  const int n = 2 * static_cast<int>(entry.nodes.size());
+  const bool second = order >= 2;
+  const auto m = static_cast<std::size_t>(entry.n_slave);
+  const auto holds = [&](const NormalSlot& s) {
+    if (s.e != e || s.n != n || s.second != second || s.x.size() != m) return false;
+    for (std::size_t a = 0; a < m; ++a)
+      if (!(s.x[a].x == x[a].x && s.x[a].y == x[a].y)) return false;
+    return true;
+  };
+  for (const NormalSlot& s : normal_slots_)
+    if (holds(s)) return s.normals;
+  NormalSlot& s = normal_slots_[next_normal_slot_];
+  next_normal_slot_ = (next_normal_slot_ + 1) % normal_slots_.size();
+  // The same variables as compute() makes for the term (index 2a, 2a + 1 of
+  // n), over the slave nodes only: the normals depend on no others.
+  const std::vector<int> slave_nodes(entry.nodes.begin(), entry.nodes.begin() + entry.n_slave);
+  std::vector<Vec2T<Dual2>> d;
+  d.reserve(m);
+  for (std::size_t a = 0; a < m; ++a) {
+    const int i = 2 * static_cast<int>(a);
+    d.push_back({Dual2::variable(x[a].x, i, n, second), Dual2::variable(x[a].y, i + 1, n, second)});
+  }
+  s.e = -1;
+  s.normals.clear();
+  for (int q : pair.setup().slave_faces[static_cast<std::size_t>(e)])
+    s.normals.push_back(normal_at<Dual2>(pair, slave_nodes, d, q));
+  s.x.assign(x.begin(), x.begin() + entry.n_slave);
+  s.e = e, s.n = n, s.second = second;
+  return s.normals;
 }
 
 std::size_t MortarTermCache::size() {

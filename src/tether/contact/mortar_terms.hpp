@@ -111,15 +111,35 @@ class MortarTermCache {
   struct Entry {
     int f = -1;
     std::vector<int> nodes;     ///< mortar_term_nodes(e, f)
+    int n_slave = 0;            ///< the first n_slave of `nodes` are slave nodes (the same for every f)
     std::array<Slot, 3> slots;  ///< by order
   };
+  /// The nodal normals (Dual2) of one slave face's nodes, for its terms
+  /// against every master face it sums: they depend only on the slave nodes,
+  /// which lead every term's unknowns of the face in the same order, so for
+  /// terms with the same number of unknowns they are the same bits. Keyed on
+  /// the face, the number of unknowns, the derivative order and the slave
+  /// nodes' positions.
+  struct NormalSlot {
+    int e = -1, n = 0;
+    bool second = false;
+    std::vector<Vec2T<double>> x;  ///< positions of the slave nodes
+    std::vector<Vec2T<Dual2>> normals;
+  };
+  /// The normals of slave face e for a term over `nodes` at positions `x`
+  /// (order 1: gradients, 2: and Hessians), from the slots or computed.
+  const std::vector<Vec2T<Dual2>>& face_normals(const MortarPair& pair, int e, const Entry& entry,
+                                                const std::vector<Vec2T<double>>& x, int order);
   std::mutex mutex_;
   std::vector<std::vector<Entry>> entries_;  ///< by slave face
+  std::array<NormalSlot, 4> normal_slots_;   ///< the last faces' normals (a few: bounded memory)
+  std::size_t next_normal_slot_ = 0;
 };
 
 /// The real nodes one term (slave face e, master face f) depends on: the
-/// nodes of e, of the slave faces around them (their normals), and of f.
-std::vector<int> mortar_term_nodes(const MortarPair& pair, int e, int f);
+/// nodes of e, of the slave faces around them (their normals), and of f;
+/// `n_slave` (when given): how many of them, first, are slave nodes.
+std::vector<int> mortar_term_nodes(const MortarPair& pair, int e, int f, int* n_slave = nullptr);
 
 /// Current position of node n (reference + displacement in u).
 Vec2T<double> mortar_position(const MortarPair& pair, const Eigen::VectorXd& u, int n);
