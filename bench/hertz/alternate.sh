@@ -12,19 +12,20 @@
 #   DECK: e.g. from /usr/bin/python3 tools/make_hertz_deck.py h230k.inp --dofs 230k --element CPE4 --increments 10
 #         (add --no-field-output for the deck measured against ccx: no .vtu, as ccx writes no field results)
 #   A_TETHER, B_TETHER: the two programs (e.g. a build of the commit before and build/bin/tether)
-# Environment: WORK=/tmp/hertz_alternate (run directories; the .vtu files are deleted after each run)
+# Environment: WORK=/tmp/hertz_alternate (run directories; the .vtu files are deleted after each run);
+#   DECK_B=OTHER.inp gives B its own deck (e.g. the mortar copy of DECK, one build for both)
 set -euo pipefail
 
 if [[ $# -lt 3 ]]; then
   sed -n '2,15p' "$0" >&2
   exit 2
 fi
-deck=$(realpath "$1")
+decks=("$(realpath "$1")" "$(realpath "${DECK_B:-$1}")")
 programs=("$(realpath "$2")" "$(realpath "$3")")
 repeats=${4:-3}
 work=${WORK:-/tmp/hertz_alternate}
 for p in "${programs[@]}"; do [[ -x $p ]] || { echo "alternate.sh: $p is not executable" >&2; exit 2; }; done
-[[ -f $deck ]] || { echo "alternate.sh: no deck $deck" >&2; exit 2; }
+[[ -f ${decks[0]} && -f ${decks[1]} ]] || { echo "alternate.sh: no deck ${decks[*]}" >&2; exit 2; }
 mkdir -p "$work"
 
 declare -a cpu_a cpu_b rss_a rss_b
@@ -32,7 +33,7 @@ for ((r = 1; r <= repeats; ++r)); do
   for k in 0 1; do
     label=$([[ $k == 0 ]] && echo A || echo B)
     dir=$work/$label.$r
-    rm -rf "$dir" && mkdir -p "$dir" && cp "$deck" "$dir/hertz.inp"
+    rm -rf "$dir" && mkdir -p "$dir" && cp "${decks[$k]}" "$dir/hertz.inp"
     load=$(cut -d' ' -f1 /proc/loadavg)
     (cd "$dir" && OMP_NUM_THREADS=1 /usr/bin/time -v "${programs[$k]}" run hertz.inp -o . -q 2> time.txt > /dev/null) ||
       { echo "alternate.sh: run $label.$r failed, see $dir/time.txt" >&2; exit 1; }
