@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -79,5 +81,17 @@ LEFT, 1
 U
 *END STEP
 )";
+
+inline /// The first `count` numbers of the ascii DataArray `name` after `from` in a .vtu.
+std::vector<double> vtu_values(const std::string& vtu, const std::string& name, std::size_t count,
+                               std::size_t from = 0) {
+  const auto at = vtu.find("Name=\"" + name + "\"", from);
+  if (at == std::string::npos) return {};
+  const auto begin = vtu.find('>', at) + 1;
+  std::istringstream in(vtu.substr(begin, vtu.find("</DataArray>", begin) - begin));
+  std::vector<double> values;
+  for (double v = 0; values.size() < count && in >> v;) values.push_back(v);
+  return values;
+}
 
 }  // namespace cli_test

@@ -12,22 +12,6 @@
 
 using namespace cli_test;
 
-namespace {
-
-/// The first `count` numbers of the ascii DataArray `name` after `from` in a .vtu.
-std::vector<double> vtu_values(const std::string& vtu, const std::string& name, std::size_t count,
-                               std::size_t from = 0) {
-  const auto at = vtu.find("Name=\"" + name + "\"", from);
-  if (at == std::string::npos) return {};
-  const auto begin = vtu.find('>', at) + 1;
-  std::istringstream in(vtu.substr(begin, vtu.find("</DataArray>", begin) - begin));
-  std::vector<double> values;
-  for (double v = 0; values.size() < count && in >> v;) values.push_back(v);
-  return values;
-}
-
-}  // namespace
-
 TEST(Cli, PlaneStressStripPulledByPressureRunsWithAllWritersAndReadsBackTheClosedForm) {
   const fs::path dir = scratch("plastic_strip_pressure");
   const fs::path deck = fs::path(TETHER_SOURCE_DIR) / "tests/analysis/decks/plastic_strip_pressure.inp";
