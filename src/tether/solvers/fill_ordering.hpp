@@ -24,7 +24,8 @@ namespace tether {
 /// nested dissection of the graph of `a` without them. Reads only the pattern
 /// of `a`, which may hold one triangle or both (it is symmetrized); the
 /// diagonal is ignored. Cost on the 231k-dof Hertz deck: about 0.6 s CPU
-/// (0.1 s the graph, 0.5 s METIS). Throws SolverError when METIS fails.
+/// (0.1 s the graph, 0.5 s METIS). Throws SolverError when METIS fails or
+/// CHOLMOD was built without it (MumpsSchur then keeps MUMPS's AMD).
 [[nodiscard]] std::vector<int> nested_dissection_last(const SparseMatrix& a, const std::vector<char>& last);
 
 }  // namespace tether

@@ -94,7 +94,13 @@ void MumpsSchur::factorize(const SparseMatrix& a, const std::vector<int>& interf
     id->listvar_schur = schur_list_.data();
     mumps_->icntl(19) = 1;  // Schur complement, centralized by rows on the host
     std::vector<int> perm_in;  // read by the analysis only
-    if (n_ > kMetisThreshold) perm_in = nested_dissection_last(a, in_interface);
+    if (n_ > kMetisThreshold) {
+      try {
+        perm_in = nested_dissection_last(a, in_interface);
+      } catch (const SolverError&) {
+        perm_in.clear();  // METIS failed (or CHOLMOD was built without it): MUMPS's AMD, as below the threshold
+      }
+    }
     id->perm_in = perm_in.empty() ? nullptr : perm_in.data();
     mumps_->icntl(7) = perm_in.empty() ? 0 : 1;
     analysed_ = false;  // until the analysis succeeds (a failed one must be redone, not factorized)
