@@ -152,6 +152,9 @@ class Assembler {
   [[nodiscard]] int relocations() const { return relocations_; }
 
  private:
+  /// Below this many contributions a colour is assembled (and the scatter
+  /// positions are built) on one thread: thread start-up costs more than it saves.
+  static constexpr int kParallelThreshold = 2048;
   void build_pattern();
   /// Positions, in the current pattern, of the contributions whose dof list
   /// differs from the one last placed; false (nothing changed) when an entry
