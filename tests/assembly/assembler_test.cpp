@@ -96,6 +96,22 @@ class DenseBlock final : public Contribution {
   Eigen::MatrixXd k_;
 };
 
+/// The 4 x 2 "quads" of 8 dofs of an nx x ny grid of nodes (dofs 2i, 2i+1;
+/// node = nx row + column), each with its own matrix; the fourth quad of the
+/// first row lists its first node's y before x (so it keeps full positions).
+std::vector<DenseBlock> grid_quads(int nx, int ny) {
+  std::vector<DenseBlock> quads;
+  quads.reserve(static_cast<std::size_t>((nx - 1) * (ny - 1)));
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+      std::vector<int> dofs{2 * a, 2 * a + 1, 2 * b, 2 * b + 1, 2 * c, 2 * c + 1, 2 * d, 2 * d + 1};
+      if (i == 3 && j == 0) std::swap(dofs[0], dofs[1]);
+      quads.emplace_back(dofs, 1.0 + static_cast<double>(quads.size()));
+    }
+  return quads;
+}
+
 }  // namespace
 
 TEST(Assembler, NodeBlockScatterMatchesDenseAssembly) {
@@ -106,15 +122,7 @@ TEST(Assembler, NodeBlockScatterMatchesDenseAssembly) {
   // those quads keep full positions. Blocked: the three quads of the first row
   // with normal order.
   const int nx = 5, ny = 3, n_nodes = nx * ny, n = 2 * n_nodes;
-  std::vector<DenseBlock> quads;
-  quads.reserve(8);
-  for (int j = 0; j + 1 < ny; ++j)
-    for (int i = 0; i + 1 < nx; ++i) {
-      const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
-      std::vector<int> dofs{2 * a, 2 * a + 1, 2 * b, 2 * b + 1, 2 * c, 2 * c + 1, 2 * d, 2 * d + 1};
-      if (i == 3 && j == 0) std::swap(dofs[0], dofs[1]);
-      quads.emplace_back(dofs, 1.0 + static_cast<double>(quads.size()));
-    }
+  std::vector<DenseBlock> quads = grid_quads(nx, ny);
   Spring spring(2 * 12, 2 * 14, 5.0);
   std::vector<Contribution*> list;
   for (auto& q : quads) list.push_back(&q);
@@ -153,15 +161,7 @@ TEST(Assembler, LowerTriangleIsTheFullTangentsLowerTriangleBitForBit) {
   // symmetric, so an entry taken from the wrong side of the diagonal, or
   // placed at the wrong position of a lower column, changes the result.
   const int nx = 5, ny = 3, n_nodes = nx * ny, n = 2 * n_nodes;
-  std::vector<DenseBlock> quads;
-  quads.reserve(8);
-  for (int j = 0; j + 1 < ny; ++j)
-    for (int i = 0; i + 1 < nx; ++i) {
-      const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
-      std::vector<int> dofs{2 * a, 2 * a + 1, 2 * b, 2 * b + 1, 2 * c, 2 * c + 1, 2 * d, 2 * d + 1};
-      if (i == 3 && j == 0) std::swap(dofs[0], dofs[1]);
-      quads.emplace_back(dofs, 1.0 + static_cast<double>(quads.size()));
-    }
+  std::vector<DenseBlock> quads = grid_quads(nx, ny);
   Spring spring(2 * 12, 2 * 14, 5.0);
   std::vector<Contribution*> list;
   for (auto& q : quads) list.push_back(&q);
