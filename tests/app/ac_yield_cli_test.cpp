@@ -114,6 +114,6 @@ TEST(Cli, AcYieldMisspelledIsNamedInTheWarningWithTheAvailableVariables) {
   ASSERT_EQ(run.code, 0) << run.out;
   const std::string messages = run.out + slurp(dir / "out" / "bar.msg");
   EXPECT_NE(messages.find("output variable AC YEILD is not available"), std::string::npos) << messages;
-  EXPECT_NE(messages.find("PE, AC YIELD)"), std::string::npos) << messages;
+  EXPECT_NE(messages.find("PE, AC YIELD, SDV)"), std::string::npos) << messages;
   EXPECT_EQ(slurp(dir / "out" / "bar.dat").find("actively yielding"), std::string::npos);
 }

@@ -13,7 +13,8 @@ splits them from the set and the time), as DatWriter documents them:
 *NODE PRINT U -> displacements, RF -> forces (and total force with
 TOTALS=YES; only total force with TOTALS=ONLY); *EL PRINT S -> stresses,
 E -> strains, PEEQ -> equivalent plastic strain, PE -> plastic strains,
-AC YIELD (ACYIELD) -> actively yielding;
+AC YIELD (ACYIELD) -> actively yielding, SDV -> internal state variables
+(only when a *USER MATERIAL has *DEPVAR: a UMAT's state variables);
 *CONTACT PRINT CSTR/CSTRESS -> contact stress, CDIS/CDISP ->
 relative contact displacement (one block for all pairs, set ""), CFN/CFS ->
 total normal/shear contact force per pair (no variables: CSTR, CDIS), and
@@ -74,7 +75,10 @@ def read(path):
             current["kinds"][name] = []  # the first request of a kind replaces the carried ones
         return current["kinds"][name]
 
-    for keyword, params, data in _blocks(path):
+    cards = _blocks(path)
+    keywords = {keyword for keyword, _, _ in cards}
+    user_state = "*USER MATERIAL" in keywords and "*DEPVAR" in keywords
+    for keyword, params, data in cards:
         if keyword in _CONSTRAINT_KEYWORDS:
             constraints = True
         elif keyword == "*CONTACT PAIR":
@@ -116,7 +120,8 @@ def read(path):
             if frequency == 0:
                 continue
             elset = params.get("ELSET", "EALL").upper()
-            blocks += [(t, elset) for v in _variables(data) for t in _ELEMENT_TITLES.get(v, [])]
+            titles = dict(_ELEMENT_TITLES, SDV=["internal state variables"] if user_state else [])
+            blocks += [(t, elset) for v in _variables(data) for t in titles.get(v, [])]
         elif keyword == "*CONTACT PRINT":
             blocks = kind("contact")
             if _frequency(params) == 0:

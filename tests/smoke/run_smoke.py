@@ -49,6 +49,7 @@ _COLUMNS = {
     "displacements": (4, 0, None), "forces": (4, 0, None), "total force": (3, None, None),
     "stresses": (8, None, 0), "strains": (8, None, 0),
     "equivalent plastic strain": (3, None, 0), "plastic strains": (8, None, 0), "actively yielding": (3, None, 0),
+    "internal state variables": (None, None, 0),  # 2 + NSTATV, the same in every row
     "contact stress": (4, 0, None), "relative contact displacement": (4, 0, None),
     "contact state": (10, 0, 7), "total normal contact force": (3, None, None),
     "total shear contact force": (3, None, None), "constraint multipliers": (4, None, None),
@@ -103,6 +104,8 @@ def check_dat(dat_path, requests, step_ends, node_ids, element_ids):
     for b in blocks:
         columns, node_col, element_col = _COLUMNS[kind_of(b["title"])]
         where = f"{dat_path}: block '{b['title']}' for set {b['set']!r} at time {b['time']}"
+        if columns is None:  # a width of the deck's (SDV: 2 + NSTATV)
+            columns = max(3, len(b["rows"][0]) if b["rows"] else 3)
         for row in b["rows"]:
             if len(row) != columns:
                 raise SmokeError(f"{where}: row {row} has {len(row)} columns, expected {columns}")

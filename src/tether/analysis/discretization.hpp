@@ -5,6 +5,7 @@
 /// builds the per-step loads. Constraints and contact pairs add their
 /// contributions and multiplier blocks here, through the same DofMap.
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -32,6 +33,15 @@ class Discretization {
   [[nodiscard]] const Model& model() const { return model_; }
   [[nodiscard]] const DofMap& dofs() const { return dofs_; }
   [[nodiscard]] const std::vector<std::unique_ptr<ContinuumElement>>& elements() const { return elements_; }
+  /// The largest number of user-material state variables (SDV) of the
+  /// materials that sections use (ConstitutiveModel::n_user_state); 0
+  /// without a UMAT.
+  [[nodiscard]] int n_user_state() const {
+    int n = 0;
+    for (const auto& section : model_.sections)
+      if (section.material >= 0) n = std::max(n, materials_[static_cast<std::size_t>(section.material)]->n_user_state());
+    return n;
+  }
   /// Constraints enforced as contributions (multipliers, penalty, augmented Lagrangian).
   [[nodiscard]] const std::vector<std::unique_ptr<ConstraintElement>>& constraints() const { return constraints_; }
   /// A linear constraint enforced by elimination (ENFORCEMENT=ELIMINATION).

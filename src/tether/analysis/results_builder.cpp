@@ -72,6 +72,22 @@ void add_plastic_results(const ContinuumElement& element, int e, const std::vect
   }
 }
 
+/// Element e's SDV: the mean over its points into element_sdv, the
+/// extrapolation to its nodes added to the nodal sums of nodal_sdv.
+void add_sdv_results(const ContinuumElement& element, int e, const std::vector<PointValues>& points,
+                     std::vector<double>& nodal, IncrementResults& r) {
+  const int n = r.n_sdv;
+  double* mean = r.element_sdv.data() + static_cast<std::ptrdiff_t>(e) * n;
+  for (const PointValues& p : points)
+    for (int k = 0; k < std::min(n, static_cast<int>(p.sdv.size())); ++k)
+      mean[k] += p.sdv[static_cast<std::size_t>(k)] / static_cast<double>(points.size());
+  element.extrapolate_sdv_to_nodes(points, n, nodal);
+  const auto& nodes = element.nodes();
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (int k = 0; k < n; ++k)
+      r.nodal_sdv[static_cast<std::size_t>(nodes[a]) * n + k] += nodal[a * static_cast<std::size_t>(n) + k];
+}
+
 /// `full_residual` plus the forces of the eliminated constraints `lambda`
 /// (so reactions at prescribed dofs they involve are complete).
 Eigen::VectorXd with_eliminated_forces(const EquationMap& equations, const Eigen::VectorXd& full_residual,
@@ -152,8 +168,9 @@ IncrementResults node_results(const Discretization& discretization, const Evalua
 constexpr int kPointBlock = 8192;
 
 /// Adds the element fields to `r` (see IncrementResults::element_fields):
-/// the nodal averages of each element's extrapolation, per-element PEEQ and,
-/// when streamed, the mean stresses; without `stream` every element's points.
+/// the nodal averages of each element's extrapolation, per-element PEEQ and
+/// SDV and, when streamed, the mean stresses; without `stream` every
+/// element's points.
 void add_element_fields(const Discretization& discretization, const EvaluationState& state,
                         const ElementPointSource* stream, IncrementResults& r) {
   const int n_nodes = discretization.dofs().n_nodes();
@@ -177,9 +194,13 @@ void add_element_fields(const Discretization& discretization, const EvaluationSt
   if (plastic) start_plastic_results(discretization, r);
   const bool thermal = !r.temperature.empty();
   if (thermal) r.nodal_thermal_strain.assign(n_nodes, Tensor4{});
+  if (r.n_sdv > 0) {
+    r.element_sdv.assign(static_cast<std::size_t>(n_elements) * r.n_sdv, 0.0);
+    r.nodal_sdv.assign(static_cast<std::size_t>(n_nodes) * r.n_sdv, 0.0);
+  }
   std::vector<int> count(n_nodes, 0);
   std::vector<Tensor4> element_stress, element_strain, element_pe, element_the;
-  std::vector<double> element_peeq;
+  std::vector<double> element_peeq, element_sdv;
   for (int first = 0; first < n_elements; first += kPointBlock) {
     const int last = std::min(n_elements, first + kPointBlock);
     const auto points_of = [&](int e) -> std::vector<PointValues>& {
@@ -193,6 +214,7 @@ void add_element_fields(const Discretization& discretization, const EvaluationSt
       elements[e]->extrapolate_to_nodes(points, element_stress, element_strain);
       const auto& nodes = elements[e]->nodes();
       if (plastic) add_plastic_results(*elements[e], e, points, element_peeq, element_pe, r);
+      if (r.n_sdv > 0) add_sdv_results(*elements[e], e, points, element_sdv, r);
       if (thermal) {
         elements[e]->extrapolate_thermal_to_nodes(points, element_the);
         for (std::size_t a = 0; a < nodes.size(); ++a)
@@ -212,6 +234,7 @@ void add_element_fields(const Discretization& discretization, const EvaluationSt
       for (int k = 0; k < 4; ++k) r.nodal_stress[i][k] /= count[i], r.nodal_strain[i][k] /= count[i];
       if (thermal)
         for (int k = 0; k < 4; ++k) r.nodal_thermal_strain[i][k] /= count[i];
+      for (int k = 0; k < r.n_sdv; ++k) r.nodal_sdv[static_cast<std::size_t>(i) * r.n_sdv + k] /= count[i];
       if (!plastic) continue;
       r.nodal_peeq[i] /= count[i];
       r.nodal_ac_yield[i] /= count[i];
@@ -234,6 +257,7 @@ IncrementResults build_results(const Discretization& discretization, const Evalu
   IncrementResults r = node_results(discretization, state, full_residual, equations, lambda);
   r.point_source = stream;
   r.element_fields = element_fields;
+  r.n_sdv = discretization.n_user_state();
   if (element_fields) add_element_fields(discretization, state, stream, r);
   add_multipliers(discretization, state, lambda, r);
   return r;

@@ -391,6 +391,8 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
       pv.plastic_strain = {pe(0), pe(1), pe(2), 0.5 * pe(3)};
       const double eth = thermal ? thermal->thermal_strain(context(s, q, g)) : 0.0;
       pv.thermal_strain = {eth, eth, eth, 0.0};
+      const std::span<const double> user = material_->user_state(state);
+      pv.sdv.assign(user.begin(), user.end());
     }
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
@@ -501,6 +503,18 @@ void ContinuumElement::extrapolate_plastic_to_nodes(const std::vector<PointValue
     for (int q = 0; q < n_points_; ++q) {
       nodal_peeq[a] += E(a, q) * points[q].peeq;
       for (int c = 0; c < 4; ++c) nodal_plastic_strain[a][c] += E(a, q) * points[q].plastic_strain[c];
+    }
+}
+
+void ContinuumElement::extrapolate_sdv_to_nodes(const std::vector<PointValues>& points, int n,
+                                                std::vector<double>& nodal) const {
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  nodal.assign(static_cast<std::size_t>(n_nodes_ * n), 0.0);
+  for (int a = 0; a < n_nodes_; ++a)
+    for (int q = 0; q < n_points_; ++q) {
+      const std::vector<double>& sdv = points[static_cast<std::size_t>(q)].sdv;
+      const int own = std::min(n, static_cast<int>(sdv.size()));
+      for (int k = 0; k < own; ++k) nodal[static_cast<std::size_t>(a * n + k)] += E(a, q) * sdv[static_cast<std::size_t>(k)];
     }
 }
 

@@ -143,6 +143,9 @@ class ContinuumElement final : public Contribution {
   /// As extrapolate_to_nodes, for PEEQ and the plastic strain PE.
   void extrapolate_plastic_to_nodes(const std::vector<PointValues>& points, std::vector<double>& nodal_peeq,
                                     std::vector<Tensor4>& nodal_plastic_strain) const;
+  /// As extrapolate_to_nodes, for the first `n` state variables SDV of each
+  /// point (zeros beyond a point's own): nodal[a * n + k] for node a.
+  void extrapolate_sdv_to_nodes(const std::vector<PointValues>& points, int n, std::vector<double>& nodal) const;
 
  private:
   /// Geometry of one integration point, recomputed from the reference

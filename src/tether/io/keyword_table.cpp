@@ -322,15 +322,18 @@ std::vector<KeywordSpec> build_table() {
        handle_node_print, ""},
       {"EL PRINT", kAnyStep, "Element integration-point values in the text report.",
        "variables: S, E, THE (thermal strain), PEEQ (equivalent plastic strain), PE (plastic strain), AC YIELD "
-       "(1 where the point flowed plastically in the increment, else 0; also ACYIELD; 0 for a user material)",
+       "(1 where the point flowed plastically in the increment, else 0; also ACYIELD; 0 for a user material), SDV "
+       "(a user material's state variables STATEV, CalculiX's block: all NSTATV values of a point on one line, zeros "
+       "where a material has fewer; ABAQUS's meaning: tether's own materials have none)",
        {name("ELSET", "Element set (default: all elements)."), frequency_param()}, handle_el_print, ""},
       {"NODE FILE", kAnyStep, "Nodal values in the result files (VTU; V and A are written in dynamic steps).", "variables: U, RF, V, A",
        {name("NSET", "Node set (default: all nodes)."), frequency_param(),
         name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
        handle_node_file, ""},
       {"EL FILE", kAnyStep, "Element values in the result files (VTU; PEEQ, PE, AC_YIELD and ALLPD are written "
-       "whenever a material is plastic, THE whenever the deck gives temperatures).",
-       "variables: S, E, THE, PEEQ, PE, AC YIELD",
+       "whenever a material is plastic, THE whenever the deck gives temperatures, SDV1, SDV2, ... (per cell the "
+       "mean over its points, per node extrapolated and averaged as S) whenever a user material has *DEPVAR).",
+       "variables: S, E, THE, PEEQ, PE, AC YIELD, SDV",
        {name("ELSET", "Element set (default: all elements)."), frequency_param(),
         name("OUTPUT", "Accepted for CalculiX compatibility (2D/3D) and ignored.")},
        handle_el_file, ""},
@@ -356,7 +359,7 @@ std::vector<KeywordSpec> build_table() {
       {"NODE OUTPUT", kAnyStep, "Nodal variables of the current *OUTPUT block.", "variables: U, RF",
        {name("NSET", "Node set (default: all nodes).")}, handle_node_output, ""},
       {"ELEMENT OUTPUT", kAnyStep, "Element variables of the current *OUTPUT block.",
-       "variables: S, E, THE, PEEQ, PE, AC YIELD",
+       "variables: S, E, THE, PEEQ, PE, AC YIELD, SDV",
        {name("ELSET", "Element set (default: all elements).")}, handle_element_output, ""},
       // --- model data: constraints ---
       {"EQUATION", kModelData, "Linear constraint sum_i c_i u_i = 0 between dofs (ABAQUS syntax).",

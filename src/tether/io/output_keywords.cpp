@@ -11,8 +11,8 @@ namespace tether::deck {
 namespace {
 
 const std::vector<std::string_view> kNodeVariables = {"U", "RF", "V", "A", "NT"};
-const std::vector<std::string_view> kElementVariables = {"S", "E", "THE", "PEEQ", "PE", "AC YIELD"};
-constexpr std::string_view kElementList = "S, E, THE, PEEQ, PE, AC YIELD";
+const std::vector<std::string_view> kElementVariables = {"S", "E", "THE", "PEEQ", "PE", "AC YIELD", "SDV"};
+constexpr std::string_view kElementList = "S, E, THE, PEEQ, PE, AC YIELD, SDV";
 
 /// The variable name of a data field: upper case, blanks collapsed, and
 /// ABAQUS's two-word AC YIELD also when written without the blank (ACYIELD).
@@ -37,6 +37,20 @@ void warn_user_material_yield_flag(const DeckState& state, const SourceLocation&
   }
 }
 
+/// SDV means a user material's state variables (ABAQUS); CalculiX also
+/// prints its built-in materials' internal variables under that name. Says
+/// so when no section uses a user material with *DEPVAR (nothing to write).
+void warn_without_state_variables(const DeckState& state, const SourceLocation& where) {
+  for (const std::string& name : state.section_material) {
+    const auto& materials = state.model.materials;
+    const auto m = std::find_if(materials.begin(), materials.end(), [&](const MaterialData& d) { return d.name == name; });
+    if (m != materials.end() && m->user && m->depvar.value_or(0) > 0) return;
+  }
+  state.warn(where, "SDV: no section uses a user material with *DEPVAR, so there are no state variables to write "
+                    "(SDV is a UMAT's STATEV, as in ABAQUS; CalculiX also writes its built-in materials' internal "
+                    "variables as SDV, which tether writes as PEEQ, PE and AC YIELD)");
+}
+
 bool is_nodal(OutputRequest::Kind k) {
   return k == OutputRequest::Kind::NodePrint || k == OutputRequest::Kind::NodeFile;
 }
@@ -58,6 +72,8 @@ std::vector<std::string> read_variables(DeckState& state, const KeywordBlock& bl
       }
       if (v == "AC YIELD" && std::find(vars.begin(), vars.end(), v) == vars.end())
         warn_user_material_yield_flag(state, line.where());
+      if (v == "SDV" && std::find(vars.begin(), vars.end(), v) == vars.end())
+        warn_without_state_variables(state, line.where());
       if (std::find(vars.begin(), vars.end(), v) == vars.end()) vars.push_back(v);
     }
   return vars;

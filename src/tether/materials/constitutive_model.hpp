@@ -118,6 +118,17 @@ class ConstitutiveModel {
   /// docs/theory/plasticity.md).
   [[nodiscard]] virtual bool actively_yielding(std::span<const double> /*state*/) const { return false; }
 
+  /// Number of a user material's (UMAT's) solution-dependent state
+  /// variables, NSTATV of `*DEPVAR`: the SDV written to the output (ABAQUS's
+  /// meaning). 0 for tether's own models, whose history is written under its
+  /// own names (PEEQ, PE, AC YIELD; CalculiX prints its built-in materials'
+  /// internal variables as SDV, tether does not).
+  [[nodiscard]] virtual int n_user_state() const { return 0; }
+
+  /// The n_user_state() state variables STATEV within a state (a committed
+  /// one or a trial one of update_*); empty for tether's own models.
+  [[nodiscard]] virtual std::span<const double> user_state(std::span<const double> /*state*/) const { return {}; }
+
   /// Initial (small-strain) shear modulus mu [force/area].
   [[nodiscard]] virtual double shear_modulus() const = 0;
 

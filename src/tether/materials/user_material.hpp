@@ -50,6 +50,11 @@ class UserMaterial final : public ConstitutiveModel {
   void update_finite_strain(Eigen::Matrix3d& C, bool plane_stress, std::span<const double> old_state,
                             std::span<double> new_state, const PointContext& where,
                             MaterialResponse& out) const override;
+  [[nodiscard]] int n_user_state() const override { return n_statev_; }
+  /// STATEV: the last NSTATV values of a state.
+  [[nodiscard]] std::span<const double> user_state(std::span<const double> state) const override {
+    return state.subspan(kHeader, static_cast<std::size_t>(n_statev_));
+  }
   [[nodiscard]] bool linear_small_strain() const override { return false; }
   /// False: tether cannot vouch for a user routine's DDSDDE.
   [[nodiscard]] bool symmetric_tangent(bool /*nlgeom*/) const override { return false; }

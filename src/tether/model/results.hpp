@@ -31,6 +31,9 @@ struct PointValues {
   /// (zero without *EXPANSION). Under NLGEOM too it is eps_th, the thermal
   /// stretch minus one (F_th = (1 + eps_th) I), not a Green-Lagrange measure.
   Tensor4 thermal_strain{};
+  /// SDV: a user material's (UMAT's) state variables STATEV, NSTATV values;
+  /// empty for tether's own materials.
+  std::vector<double> sdv;
 };
 
 /// The force a constraint exerts on one node: -sum_k lambda_k df_k/du over
@@ -177,6 +180,12 @@ struct IncrementResults {
   /// the node, in [0, 1] (not extrapolated: a flag has no gradient); 1 only
   /// when every point of every element around it yields, 0 when none does.
   std::vector<double> nodal_ac_yield;
+  /// SDV (all empty when no material is a user material with *DEPVAR):
+  /// n_sdv = the largest NSTATV; an element with fewer (or none) counts as
+  /// zeros beyond its own.
+  int n_sdv = 0;
+  std::vector<double> element_sdv;  ///< n_elements x n_sdv, row by element: mean over the element's points
+  std::vector<double> nodal_sdv;    ///< n_nodes x n_sdv, row by node: extrapolated and averaged as nodal_stress
   std::optional<double> plastic_dissipation;  ///< ALLPD: plastic dissipation of the model up to now [energy]
   std::vector<std::vector<PointValues>> points;  ///< per element, per integration point (empty when streamed)
   std::vector<Tensor4> element_stress;        ///< streamed only: per element, mean of its point stresses

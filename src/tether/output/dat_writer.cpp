@@ -204,6 +204,25 @@ void write_yield_flags(Out out, const Model& model, const Selection& sel, const 
   }
 }
 
+/// SDV: a user material's state variables, CalculiX's block and line layout
+/// (all n_sdv values of a point on its line; zeros beyond a point's own).
+void write_state_variables(Out out, const Model& model, const Selection& sel, const IncrementResults& r) {
+  write_header(out, "internal state variables (elem, integ.pnt.,values)", sel.name, r.total_time);
+  std::vector<PointValues> buffer;
+  for (const int e : sel.indices) {
+    const auto& points = element_points(r, static_cast<std::size_t>(e), buffer);
+    const int label = model.elements[static_cast<std::size_t>(e)].id - sel.label_offset;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      fmt::format_to(out, "{:10d}{:4d}", label, k + 1);
+      const std::vector<double>& sdv = points[k].sdv;
+      for (int i = 0; i < r.n_sdv; ++i)
+        fmt::format_to(out, " {:13.6E}",
+                       static_cast<std::size_t>(i) < sdv.size() ? unsigned_zero(sdv[static_cast<std::size_t>(i)]) : 0.0);
+      fmt::format_to(out, "\n");
+    }
+  }
+}
+
 // ---------------------------------------------------------------- contact
 
 bool closed(const ContactNodeValues& v) { return v.status != ContactNodeValues::Status::Open; }
@@ -440,10 +459,11 @@ void DatWriter::check(const Model& model, const OutputRequest& r) {
   }
   for (const auto& v : r.variables) {
     const bool ok = nodal ? (v == "U" || v == "RF" || v == "V" || v == "A" || v == "NT")
-                          : (v == "S" || v == "E" || v == "THE" || v == "PEEQ" || v == "PE" || v == "AC YIELD");
+                          : (v == "S" || v == "E" || v == "THE" || v == "PEEQ" || v == "PE" || v == "AC YIELD" ||
+                             v == "SDV");
     if (!ok)
       throw InputError(r.where, fmt::format("{}: variable '{}' cannot be printed (tether prints {})", keyword, v,
-                                            nodal ? "U, RF, V, A and NT" : "S, E, THE, PEEQ, PE and AC YIELD"));
+                                            nodal ? "U, RF, V, A and NT" : "S, E, THE, PEEQ, PE, AC YIELD and SDV"));
   }
 }
 
@@ -526,6 +546,8 @@ void DatWriter::write_increment(const IncrementResults& results, const std::vect
         write_plastic_points(out, model_, sel, results, v == "PEEQ");
       else if (v == "AC YIELD")
         write_yield_flags(out, model_, sel, results);
+      else if (v == "SDV" && results.n_sdv > 0)  // without a user material: nothing (the reader warned)
+        write_state_variables(out, model_, sel, results);
     }
   }
   if (contact_due) write_contact_state_blocks(text, model_, results.contact, results.total_time);

@@ -359,6 +359,10 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (!r.nodal_ac_yield.empty())  // the fraction of yielding points around the node (see IncrementResults)
     write_data_array<double>(sink, enc, kIndent, "AC_YIELD", 1, n_nodes,
                              indexed([&](std::size_t i) { return r.nodal_ac_yield[i]; }));
+  for (int k = 0; k < r.n_sdv && !r.nodal_sdv.empty(); ++k)  // SDV1, SDV2, ...: one array each
+    write_data_array<double>(sink, enc, kIndent, "SDV" + std::to_string(k + 1), 1, n_nodes, indexed([&](std::size_t i) {
+                               return r.nodal_sdv[i * static_cast<std::size_t>(r.n_sdv) + static_cast<std::size_t>(k)];
+                             }));
   if (!r.multipliers.empty()) {
     SparseNodal<double> lambda;
     SparseNodal<Eigen::Vector3d> lambdas;  // constraints of 2 or 3 equations, at their first node
@@ -443,6 +447,12 @@ void VtuWriter::write(const IncrementResults& r, std::ostream& out) const {
   if (!r.element_ac_yield.empty())  // the fraction of the element's points that yield
     write_data_array<double>(sink, enc, kIndent, "AC_YIELD", 1, n_cells, indexed([&](std::size_t c) {
                                return c < n_elements ? r.element_ac_yield[c] : 0.0;
+                             }));
+  for (int k = 0; k < r.n_sdv && !r.element_sdv.empty(); ++k)  // the mean over the element's points
+    write_data_array<double>(sink, enc, kIndent, "SDV" + std::to_string(k + 1), 1, n_cells, indexed([&](std::size_t c) {
+                               return c < n_elements ? r.element_sdv[c * static_cast<std::size_t>(r.n_sdv) +
+                                                                     static_cast<std::size_t>(k)]
+                                                     : 0.0;
                              }));
   sink.append("      </CellData>\n      <Points>\n");
   write_data_array<double>(sink, enc, kIndent, "Points", 3, 3 * n_nodes,
