@@ -225,7 +225,7 @@ class ContinuumElement final : public Contribution {
   // the 230k-dof Hertz deck): the type is shared, the name kept only when it
   // is not the label, the per-node arrays in one block and the history only
   // for a material that has one. See docs/performance.md, "ContinuumElement
-  // and the model's element table made smaller".
+  // and the model's tables made smaller".
   int label_;
   int n_state_;                        ///< material state values per point
   QuadratureRule rule_;
