@@ -160,6 +160,34 @@ TEST(ContinuumElement, DescribesItselfAndRefusesInvertedElements) {
   }
 }
 
+// The element is one of 115k at the 230k-dof Hertz deck: its type shared, its
+// name kept only when it is not the label, its per-node arrays in one block
+// and no history record without a history (docs/performance.md).
+TEST(ContinuumElement, KeepsItsDataCompactAndNamesItselfAsBefore) {
+  EXPECT_LE(sizeof(ContinuumElement), 96u);
+  const LinearElastic steel(210.0, 0.3);
+  const ElementType cpe4 = *find_element_type("CPE4");
+  const std::vector<Eigen::Vector2d> X = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  DofMap dofs(std::vector<int>{7, 8, 9, 10, 11});
+  ContinuumElement e(12, cpe4, {4, 1, 2, 3}, X, steel, 1.0, dofs);
+  EXPECT_EQ(&e.type(), &intern_element_type(cpe4));
+  EXPECT_EQ(std::vector<int>(e.nodes().begin(), e.nodes().end()), (std::vector<int>{4, 1, 2, 3}));
+  EXPECT_EQ(std::vector<int>(e.dofs().begin(), e.dofs().end()), (std::vector<int>{8, 9, 2, 3, 4, 5, 6, 7}));
+  EXPECT_FALSE(e.has_history());
+  e.set_name("12");  // the label's text: describe() as without a name
+  EXPECT_EQ(e.describe(), "element 12 (CPE4)");
+  e.set_name("PART-1-1.3");
+  EXPECT_EQ(e.describe(), "element PART-1-1.3 (CPE4)");
+  e.set_name("");
+  EXPECT_EQ(e.describe(), "element 12 (CPE4)");
+  // The strain energy of u = 0.01 x over the 2 x 1 square reads the reference
+  // coordinates from the block: W = (lambda + 2 mu) eps^2 / 2 * area.
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(dofs.n_dofs());
+  for (int a = 0; a < 4; ++a) u(e.dofs()[2 * a]) = 0.01 * X[static_cast<std::size_t>(a)].x();
+  const double lambda = 210.0 * 0.3 / (1.3 * 0.4), mu = 210.0 / 2.6;
+  EXPECT_NEAR(e.strain_energy({u, u, 1, 1, 1, false}), 0.5 * (lambda + 2 * mu) * 1e-4 * 2.0, 1e-12);
+}
+
 TEST(ContinuumElement, VolumeWeightsIntegrateAreaThicknessAndRevolution) {
   // Uniform hydrostatic strain field: residual of a unit square = boundary tractions.
   // Simpler check through the energy of a uniform strain: W * volume.

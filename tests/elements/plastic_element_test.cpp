@@ -178,7 +178,7 @@ TEST(PlasticElement, PlaneStressPressureTangentFollowsTheThicknessOfTheHistory) 
       ContinuumElement& e = *pe.element;
       const Eigen::VectorXd u1 = stretch(e, 0.05, 1);
       e.commit({u1, u1, 1, 1, 1, true});
-      std::vector<int> nodes(e.nodes());
+      std::vector<int> nodes(e.nodes().begin(), e.nodes().end());
       for (int face = 0; face < n_faces(type.shape); ++face) {
         FacePressure load(3, type, nodes, distorted_element(type.shape), face, 0.5, m, pe.dofs);
         load.set_pressure(-0.3);

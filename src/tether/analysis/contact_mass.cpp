@@ -47,7 +47,7 @@ ContactMassSummary redistribute_contact_mass(const Discretization& disc,
   for (const bool b : on) summary.nodes += b ? 1 : 0;
   if (summary.nodes == 0) return summary;
   for (const auto& m : inertia) {
-    const std::vector<int>& nodes = m->element().nodes();
+    const std::span<const int> nodes = m->element().nodes();
     std::vector<bool> massless(nodes.size());
     bool any = false;
     for (std::size_t a = 0; a < nodes.size(); ++a) any |= (massless[a] = on[static_cast<std::size_t>(nodes[a])]);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <memory>
 #include <fmt/format.h>
 #include <numbers>
 
@@ -39,37 +40,44 @@ ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vect
                                    const ConstitutiveModel& material, double thickness,
                                    const DofMap& dofs, const MaterialData* material_data)
     : label_(label),
-      type_(type),
-      n_nodes_(n_nodes(type.shape)),
-      nodes_(std::move(node_indices)),
-      ref_coords_(std::move(ref_coords)),
+      n_state_(material.n_state()),
+      rule_(default_rule(type)),
+      n_nodes_(static_cast<std::uint8_t>(n_nodes(type.shape))),
+      n_points_(static_cast<std::uint8_t>(quadrature_points(rule_).size())),
+      type_(&intern_element_type(type)),
       material_(&material),
       material_data_(material_data),
-      thickness_(thickness),
-      rule_(default_rule(type)),
-      n_points_(static_cast<int>(quadrature_points(rule_).size())),
-      n_state_(material.n_state()) {
+      thickness_(thickness) {
   if (const std::string why = unsupported_reason(type); !why.empty())
     throw ModelError(describe() + ": " + why);
-  if (static_cast<int>(nodes_.size()) != n_nodes_ || static_cast<int>(ref_coords_.size()) != n_nodes_)
-    throw ModelError(fmt::format("{}: expected {} nodes, got {}", describe(), n_nodes_, nodes_.size()));
+  if (static_cast<int>(node_indices.size()) != n_nodes_ || static_cast<int>(ref_coords.size()) != n_nodes_)
+    throw ModelError(fmt::format("{}: expected {} nodes, got {}", describe(), n_nodes_, node_indices.size()));
   const bool axisymmetric = type.family == Family::Axisymmetric;
   if (!axisymmetric && !(thickness > 0))
     throw ModelError(fmt::format("{}: thickness must be positive (got {:g})", describe(), thickness));
 
-  if (n_state_ > 0) {
-    const int record = kRecordState + n_state_;
-    history_.assign(static_cast<std::size_t>(n_points_ * record), 0.0);
-    for (int q = 0; q < n_points_; ++q)
-      material.initial_state(std::span<double>(history_).subspan(static_cast<std::size_t>(q * record + kRecordState),
-                                                                 static_cast<std::size_t>(n_state_)));
-    committed_u_.assign(static_cast<std::size_t>(2 * n_nodes_), 0.0);
+  // The block of storage_: coordinates, then dofs, then nodes (operator new[]
+  // aligns it for Eigen::Vector2d; the ints follow 16-byte coordinates).
+  const auto n = static_cast<std::size_t>(n_nodes_);
+  storage_ = std::make_unique_for_overwrite<std::byte[]>(coords_bytes() + 3 * n * sizeof(int));
+  std::uninitialized_copy(ref_coords.begin(), ref_coords.end(),
+                          reinterpret_cast<Eigen::Vector2d*>(storage_.get()));
+  int* ints = reinterpret_cast<int*>(storage_.get() + coords_bytes());
+  for (std::size_t a = 0; a < n; ++a) {
+    ::new (ints + 2 * a) int(dofs.displacement(node_indices[a], 0));
+    ::new (ints + 2 * a + 1) int(dofs.displacement(node_indices[a], 1));
+    ::new (ints + 2 * n + a) int(node_indices[a]);
   }
 
-  dofs_.reserve(2 * n_nodes_);
-  for (int node : nodes_) {
-    dofs_.push_back(dofs.displacement(node, 0));
-    dofs_.push_back(dofs.displacement(node, 1));
+  if (n_state_ > 0) {
+    history_ = std::make_unique<History>();
+    const int record = kRecordState + n_state_;
+    history_->records.assign(static_cast<std::size_t>(n_points_ * record), 0.0);
+    for (int q = 0; q < n_points_; ++q)
+      material.initial_state(std::span<double>(history_->records)
+                                 .subspan(static_cast<std::size_t>(q * record + kRecordState),
+                                          static_cast<std::size_t>(n_state_)));
+    history_->committed_u.assign(static_cast<std::size_t>(2 * n_nodes_), 0.0);
   }
 
   PointGeometry g;
@@ -87,20 +95,20 @@ ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vect
 }
 
 double ContinuumElement::point_geometry(int q, PointGeometry& g) const {
-  const TabulatedShapes& shapes = rule_shapes(type_.shape, rule_);
+  const TabulatedShapes& shapes = rule_shapes(type_->shape, rule_);
   const ShapeVector& N = shapes.N[static_cast<std::size_t>(q)];
   const ShapeGradient& dN = shapes.dN[static_cast<std::size_t>(q)];
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // J(i,j) = dX_i/dxi_j
   Eigen::Vector2d X = Eigen::Vector2d::Zero();
   for (int a = 0; a < n_nodes_; ++a) {
-    J += ref_coords_[a] * dN.row(a);
-    X += N(a) * ref_coords_[a];
+    J += ref_coords()[a] * dN.row(a);
+    X += N(a) * ref_coords()[a];
   }
   const double detJ = J.determinant();
   g.N = N;
   g.R = X.x();
   g.Y = X.y();
-  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  const bool axisymmetric = type_->family == Family::Axisymmetric;
   const double measure = axisymmetric ? 2 * std::numbers::pi * X.x() : thickness_;
   g.dV = shapes.weight[static_cast<std::size_t>(q)] * detJ * measure;
   if (detJ > 0) g.G = dN * J.inverse();  // dN/dX
@@ -109,26 +117,32 @@ double ContinuumElement::point_geometry(int q, PointGeometry& g) const {
 }
 
 std::string ContinuumElement::describe() const {
-  return name_.empty() ? fmt::format("element {} ({})", label_, type_.name)
-                       : fmt::format("element {} ({})", name_, type_.name);
+  return name_ == nullptr ? fmt::format("element {} ({})", label_, type_->name)
+                          : fmt::format("element {} ({})", *name_, type_->name);
+}
+
+void ContinuumElement::set_name(std::string name) {
+  if (name.empty() || name == std::to_string(label_)) name_.reset();  // describe() gives the same text
+  else name_ = std::make_unique<const std::string>(std::move(name));
 }
 
 void ContinuumElement::gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const {
-  for (int i = 0; i < 2 * n_nodes_; ++i) ue(i) = u(dofs_[i]);
+  const int* d = dofs().data();
+  for (int i = 0; i < 2 * n_nodes_; ++i) ue(i) = u(d[i]);
 }
 
 std::span<const double> ContinuumElement::committed_state(int q) const {
   if (n_state_ == 0) return {};
   const int record = kRecordState + n_state_;
-  return std::span<const double>(history_).subspan(static_cast<std::size_t>(q * record + kRecordState),
+  return std::span<const double>(history_->records).subspan(static_cast<std::size_t>(q * record + kRecordState),
                                                    static_cast<std::size_t>(n_state_));
 }
 
 bool ContinuumElement::committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue, double total_time) const {
   if (n_state_ == 0) return false;
-  if (total_time != committed_time_) return false;  // a rate-dependent material differs at the same strain
+  if (total_time != history_->committed_time) return false;  // a rate-dependent material differs at the same strain
   for (int i = 0; i < 2 * n_nodes_; ++i)
-    if (ue(i) != committed_u_[static_cast<std::size_t>(i)]) return false;
+    if (ue(i) != history_->committed_u[static_cast<std::size_t>(i)]) return false;
   return true;
 }
 
@@ -143,7 +157,7 @@ PointContext ContinuumElement::context(const EvaluationState& s, int q, const Po
   c.dt = s.dt;
   if (temperatures_ != nullptr)
     for (int a = 0; a < n_nodes_; ++a) {
-      const int node = nodes_[static_cast<std::size_t>(a)];
+      const int node = nodes()[static_cast<std::size_t>(a)];
       const double end = temperatures_->current(node, s.step_time, s.total_time);
       c.temperature += g.N(a) * end;
       c.temperature_increment += g.N(a) * (end - temperatures_->current(node, s.step_time - s.dt, s.total_time - s.dt));
@@ -165,11 +179,11 @@ void ContinuumElement::material_point(int q, const PointGeometry& g, const doubl
     ur += ue[2 * a] * g.N(a);
   }
   const double hoop = ur / g.R;
-  if (type_.hybrid) return hybrid_point(q, g, H, hoop, mean, s, mp, trial);
+  if (type_->hybrid) return hybrid_point(q, g, H, hoop, mean, s, mp, trial);
   if (s.nlgeom)
-    finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
+    finite_strain_point(*material_, type_->family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
   else
-    small_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
+    small_strain_point(*material_, type_->family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
 }
 
 template <int NN>
@@ -182,7 +196,7 @@ void ContinuumElement::evaluate_kernel(const double* ue_ptr, const EvaluationSta
   const Eigen::Map<const Eigen::Matrix<double, 2, NN>> U(ue_ptr);  // column a = displacement of node a
   Eigen::Map<Eigen::Matrix<double, ND, 1>> r(out.residual.data());
   Eigen::Map<Eigen::Matrix<double, ND, ND>> K(out.tangent.data());
-  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  const bool axisymmetric = type_->family == Family::Axisymmetric;
   MaterialPoint mp;
   Eigen::Matrix<double, 4, ND> B;
   PointGeometry g;
@@ -196,9 +210,9 @@ void ContinuumElement::evaluate_kernel(const double* ue_ptr, const EvaluationSta
     H.col(1).noalias() = U * Gy;
     const double hoop = axisymmetric ? U.row(0).dot(N) / R : 0.0;
     if (nlgeom)
-      finite_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
+      finite_strain_point(*material_, type_->family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
     else
-      small_strain_point(*material_, type_.family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
+      small_strain_point(*material_, type_->family, H, hoop, committed_state(q), trial, context(s, q, g), mp);
 
     // B: rows (11, 22, 33, 2*12) of the strain variation; F = I for small strain.
     const Eigen::Matrix2d& F = mp.F;
@@ -237,9 +251,9 @@ void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool
   Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2 * kMaxElementNodes, 1> ue(2 * n_nodes_);
   gather(s.u, ue);
   try {
-    if (type_.hybrid && s.nlgeom) return evaluate_hybrid_finite(ue.data(), s, out, need_tangent);
-    if (type_.hybrid) return evaluate_hybrid_small(ue.data(), s, out, need_tangent);
-    switch (type_.shape) {
+    if (type_->hybrid && s.nlgeom) return evaluate_hybrid_finite(ue.data(), s, out, need_tangent);
+    if (type_->hybrid) return evaluate_hybrid_small(ue.data(), s, out, need_tangent);
+    switch (type_->shape) {
       case Shape::Tri3: evaluate_kernel<3>(ue.data(), s, out, need_tangent); break;
       case Shape::Quad4: evaluate_kernel<4>(ue.data(), s, out, need_tangent); break;
       case Shape::Tri6: evaluate_kernel<6>(ue.data(), s, out, need_tangent); break;
@@ -252,15 +266,15 @@ void ContinuumElement::evaluate(const EvaluationState& s, LocalSystem& out, bool
 
 double ContinuumElement::thickness_stretch(const EvaluationState& s, const Eigen::Vector2d& xi,
                                            Eigen::VectorXd& dF33_du) const {
-  if (type_.family != Family::PlaneStress || !s.nlgeom)
+  if (type_->family != Family::PlaneStress || !s.nlgeom)
     throw ModelError(describe() + ": the thickness stretch is asked of a plane-stress element under NLGEOM only");
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
   ShapeVector N;
   ShapeGradient dN;
-  shape_functions(type_.shape, xi, N, dN);
+  shape_functions(type_->shape, xi, N, dN);
   // Weights of the point values at xi: N(xi)^T E, E the extrapolation matrix.
-  const Eigen::RowVectorXd w = N.head(n_nodes_).transpose() * extrapolation_matrix(type_.shape, rule_);
+  const Eigen::RowVectorXd w = N.head(n_nodes_).transpose() * extrapolation_matrix(type_->shape, rule_);
   MaterialPoint mp;
   PointGeometry g;
   std::vector<double> trial(static_cast<std::size_t>(n_state_));
@@ -294,7 +308,7 @@ double ContinuumElement::strain_energy(const EvaluationState& s) const {
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
       if (from_records) {
-        energy += history_[static_cast<std::size_t>(q * record + kRecordEnergy)] * g.dV;
+        energy += history_->records[static_cast<std::size_t>(q * record + kRecordEnergy)] * g.dV;
         continue;
       }
       material_point(q, g, ue.data(), s, mp, trial, mean);
@@ -320,7 +334,7 @@ double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
     const double mean = element_mean(ue.data(), s.nlgeom);
     for (int q = 0; q < n_points_; ++q) {
       point_geometry(q, g);
-      double density = history_[static_cast<std::size_t>(q * record + kRecordDissipation)];
+      double density = history_->records[static_cast<std::size_t>(q * record + kRecordDissipation)];
       if (!from_records) {
         material_point(q, g, ue.data(), s, mp, trial, mean);
         density += mp.dissipation;
@@ -372,14 +386,14 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
       material_point(q, g, ue.data(), s, mp, trial, mean);
       std::span<const double> state = trial;
       if (from_records) {  // the committed values of this very state (equal to mp's up to round-off)
-        const double* r = history_.data() + static_cast<std::ptrdiff_t>(q * record);
+        const double* r = history_->records.data() + static_cast<std::ptrdiff_t>(q * record);
         mp.stress = Eigen::Map<const Vec6>(r + kRecordStress);
         mp.strain = Eigen::Map<const Vec6>(r + kRecordStrain);
         state = committed_state(q);
       }
       Eigen::Vector2d x = Eigen::Vector2d::Zero();
       for (int a = 0; a < n_nodes_; ++a)
-        x += g.N(a) * (ref_coords_[a] + Eigen::Vector2d(ue(2 * a), ue(2 * a + 1)));
+        x += g.N(a) * (ref_coords()[a] + Eigen::Vector2d(ue(2 * a), ue(2 * a + 1)));
       const Eigen::Vector4d sigma = cauchy_stress(s.nlgeom, mp);
       PointValues& pv = out[q];
       pv.x = x;
@@ -405,7 +419,7 @@ void ContinuumElement::commit(const EvaluationState& s) {
   gather(s.u, ue);
   if (committed_at(ue, s.total_time)) return;  // already the committed state of these displacements
   const int record = kRecordState + n_state_;
-  std::vector<double> next(history_.size());
+  std::vector<double> next(history_->records.size());
   MaterialPoint mp;
   PointGeometry g;
   try {
@@ -417,14 +431,14 @@ void ContinuumElement::commit(const EvaluationState& s) {
       Eigen::Map<Vec6>(r + kRecordStress) = mp.stress;
       Eigen::Map<Vec6>(r + kRecordStrain) = mp.strain;
       r[kRecordEnergy] = mp.elastic_energy;
-      r[kRecordDissipation] = history_[static_cast<std::size_t>(q * record + kRecordDissipation)] + mp.dissipation;
+      r[kRecordDissipation] = history_->records[static_cast<std::size_t>(q * record + kRecordDissipation)] + mp.dissipation;
     }
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
   }
-  history_.swap(next);
-  committed_u_.assign(ue.data(), ue.data() + ue.size());
-  committed_time_ = s.total_time;
+  history_->records.swap(next);
+  history_->committed_u.assign(ue.data(), ue.data() + ue.size());
+  history_->committed_time = s.total_time;
 }
 
 namespace {
@@ -436,9 +450,9 @@ void ContinuumElement::save_state(std::vector<double>& out) const {
   out.push_back(kHistoryTag);
   out.push_back(n_points_);
   out.push_back(kRecordState + n_state_);
-  out.insert(out.end(), history_.begin(), history_.end());
-  out.insert(out.end(), committed_u_.begin(), committed_u_.end());
-  out.push_back(committed_time_);
+  out.insert(out.end(), history_->records.begin(), history_->records.end());
+  out.insert(out.end(), history_->committed_u.begin(), history_->committed_u.end());
+  out.push_back(history_->committed_time);
 }
 
 void ContinuumElement::load_state(std::span<const double>& in) {
@@ -447,13 +461,13 @@ void ContinuumElement::load_state(std::span<const double>& in) {
   saved_state::take_int(in, n_points_, n_points_, "number of integration points");
   const int record = kRecordState + n_state_;
   saved_state::take_int(in, record, record, "history record size");
-  const std::size_t n = history_.size() + committed_u_.size() + 1;
+  const std::size_t n = history_->records.size() + history_->committed_u.size() + 1;
   if (in.size() < n) throw std::runtime_error("its saved state is too short");
-  std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(history_.size()), history_.begin());
-  in = in.subspan(history_.size());
-  std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(committed_u_.size()), committed_u_.begin());
-  in = in.subspan(committed_u_.size());
-  committed_time_ = in.front();
+  std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(history_->records.size()), history_->records.begin());
+  in = in.subspan(history_->records.size());
+  std::copy(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(history_->committed_u.size()), history_->committed_u.begin());
+  in = in.subspan(history_->committed_u.size());
+  history_->committed_time = in.front();
   in = in.subspan(1);
 }
 
@@ -464,7 +478,7 @@ void ContinuumElement::mass(MassKind kind, Eigen::MatrixXd& out) const {
     throw ModelError(fmt::format("{}: *DENSITY missing for material {} ({})", describe(), material_data_->name,
                                  material_data_->where.str()));
   try {
-    expand_to_components(scalar_mass(kind, type_, ref_coords_, *material_data_->density, thickness_), 2, out);
+    expand_to_components(scalar_mass(kind, *type_, ref_coords(), *material_data_->density, thickness_), 2, out);
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
   }
@@ -473,7 +487,7 @@ void ContinuumElement::mass(MassKind kind, Eigen::MatrixXd& out) const {
 void ContinuumElement::extrapolate_to_nodes(const std::vector<PointValues>& points,
                                             std::vector<Tensor4>& nodal_stress,
                                             std::vector<Tensor4>& nodal_strain) const {
-  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_->shape, rule_);
   nodal_stress.assign(n_nodes_, Tensor4{});
   nodal_strain.assign(n_nodes_, Tensor4{});
   for (int a = 0; a < n_nodes_; ++a)
@@ -486,7 +500,7 @@ void ContinuumElement::extrapolate_to_nodes(const std::vector<PointValues>& poin
 
 void ContinuumElement::extrapolate_thermal_to_nodes(const std::vector<PointValues>& points,
                                                     std::vector<Tensor4>& nodal_thermal_strain) const {
-  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_->shape, rule_);
   nodal_thermal_strain.assign(n_nodes_, Tensor4{});
   for (int a = 0; a < n_nodes_; ++a)
     for (int q = 0; q < n_points_; ++q)
@@ -496,7 +510,7 @@ void ContinuumElement::extrapolate_thermal_to_nodes(const std::vector<PointValue
 void ContinuumElement::extrapolate_plastic_to_nodes(const std::vector<PointValues>& points,
                                                     std::vector<double>& nodal_peeq,
                                                     std::vector<Tensor4>& nodal_plastic_strain) const {
-  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_->shape, rule_);
   nodal_peeq.assign(n_nodes_, 0.0);
   nodal_plastic_strain.assign(n_nodes_, Tensor4{});
   for (int a = 0; a < n_nodes_; ++a)

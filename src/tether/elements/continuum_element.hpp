@@ -3,6 +3,10 @@
 /// supported shape, small strain or total Lagrangian finite strain.
 
 #include <Eigen/Core>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <new>
 #include <span>
 #include <string>
 #include <vector>
@@ -42,7 +46,10 @@ class ContinuumElement final : public Contribution {
                    std::vector<Eigen::Vector2d> ref_coords, const ConstitutiveModel& material,
                    double thickness, const DofMap& dofs, const MaterialData* material_data = nullptr);
 
-  [[nodiscard]] std::span<const int> dofs() const override { return dofs_; }
+  [[nodiscard]] std::span<const int> dofs() const override {
+    return {std::launder(reinterpret_cast<const int*>(storage_.get() + coords_bytes())),
+            static_cast<std::size_t>(2 * n_nodes_)};
+  }
 
   /// Small strain when !s.nlgeom, total Lagrangian when s.nlgeom. Throws
   /// ModelError naming the element when det F <= 0 at an integration point.
@@ -96,10 +103,15 @@ class ContinuumElement final : public Contribution {
   [[nodiscard]] int label() const { return label_; }
   /// The name describe() gives the element (default: its label); the
   /// analysis sets `INSTANCE.label` for an element of an ABAQUS/CAE instance.
-  void set_name(std::string name) { name_ = std::move(name); }
-  [[nodiscard]] const ElementType& type() const { return type_; }
+  /// A name equal to the label's digits is not stored (describe() prints the
+  /// same text without it).
+  void set_name(std::string name);
+  [[nodiscard]] const ElementType& type() const { return *type_; }
   [[nodiscard]] int n_points() const { return n_points_; }
-  [[nodiscard]] const std::vector<int>& nodes() const { return nodes_; }
+  /// Mesh node indices, ABAQUS order.
+  [[nodiscard]] std::span<const int> nodes() const {
+    return {dofs().data() + 2 * n_nodes_, static_cast<std::size_t>(n_nodes_)};
+  }
 
   /// Stored strain energy [energy] (total over 2 pi for axisymmetry); its
   /// gradient with respect to the element dofs is the residual.
@@ -195,22 +207,42 @@ class ContinuumElement final : public Contribution {
   static constexpr int kRecordStress = 0, kRecordStrain = 6, kRecordEnergy = 12, kRecordDissipation = 13,
                        kRecordState = 14;
 
+  /// Reference coordinates of the nodes [length], ABAQUS order.
+  [[nodiscard]] std::span<const Eigen::Vector2d> ref_coords() const {
+    return {std::launder(reinterpret_cast<const Eigen::Vector2d*>(storage_.get())),
+            static_cast<std::size_t>(n_nodes_)};
+  }
+  /// Bytes of storage_ taken by the reference coordinates (the dofs follow).
+  [[nodiscard]] std::size_t coords_bytes() const {
+    return static_cast<std::size_t>(n_nodes_) * sizeof(Eigen::Vector2d);
+  }
+
+  /// The committed records and their stamp; only for a material with history.
+  struct History {
+    std::vector<double> records;      ///< n_points_ x (kRecordState + n_state_)
+    std::vector<double> committed_u;  ///< local displacements of the records (the stamp, with the time)
+    double committed_time = 0;        ///< total time of the records (the stamp, with committed_u)
+  };
+
+  // The object is kept small (about 90 bytes; one per mesh element, 115k at
+  // the 230k-dof Hertz deck): the type is shared, the name kept only when it
+  // is not the label, the per-node arrays in one block and the history only
+  // for a material that has one. See docs/performance.md, "ContinuumElement
+  // and the model's tables made smaller".
   int label_;
-  std::string name_;  ///< set_name(); empty: the label
-  ElementType type_;
-  int n_nodes_;
-  std::vector<int> nodes_;
-  std::vector<int> dofs_;
-  std::vector<Eigen::Vector2d> ref_coords_;
+  int n_state_;                        ///< material state values per point
+  QuadratureRule rule_;
+  std::uint8_t n_nodes_;
+  std::uint8_t n_points_;
+  const ElementType* type_;            ///< interned (intern_element_type)
+  std::unique_ptr<const std::string> name_;  ///< set_name(); null: the label
+  /// One block: n_nodes_ reference coordinates (Eigen::Vector2d), then the
+  /// 2 n_nodes_ dofs (x, y per node), then the n_nodes_ mesh node indices (int).
+  std::unique_ptr<std::byte[]> storage_;
   const ConstitutiveModel* material_;
   const MaterialData* material_data_;  ///< for mass(); may be null
   double thickness_;
-  QuadratureRule rule_;
-  int n_points_;
-  int n_state_;                        ///< material state values per point
-  std::vector<double> history_;        ///< committed records, n_points_ x (kRecordState + n_state_); empty without history
-  std::vector<double> committed_u_;    ///< local displacements of the committed records (the stamp, with the time)
-  double committed_time_ = 0;          ///< total time of the committed records (the stamp, with committed_u_)
+  std::unique_ptr<History> history_;   ///< null without history (n_state_ == 0)
   const NodalTemperatureField* temperatures_ = nullptr;  ///< nodal temperatures; null: all 0
 };
 

@@ -17,8 +17,8 @@ constexpr int kMaxPoints = 9;  ///< integration points of any rule of a quadrila
 }  // namespace
 
 double ContinuumElement::element_mean(const double* ue, bool nlgeom) const {
-  if (!type_.hybrid) return 0;
-  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  if (!type_->hybrid) return 0;
+  const bool axisymmetric = type_->family == Family::Axisymmetric;
   PointGeometry g;
   double volume = 0, current = 0;  // V; v (finite) or the integral of tr eps (small)
   for (int q = 0; q < n_points_; ++q) {
@@ -37,7 +37,7 @@ double ContinuumElement::element_mean(const double* ue, bool nlgeom) const {
 
 void ContinuumElement::hybrid_point(int q, const PointGeometry& g, const Eigen::Matrix2d& H, double hoop, double mean,
                                     const EvaluationState& s, MaterialPoint& mp, std::span<double> trial) const {
-  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  const bool axisymmetric = type_->family == Family::Axisymmetric;
   if (s.nlgeom) {
     const Eigen::Matrix2d F = Eigen::Matrix2d::Identity() + H;
     const double F33 = axisymmetric ? 1 + hoop : 1.0;
@@ -47,13 +47,13 @@ void ContinuumElement::hybrid_point(int q, const PointGeometry& g, const Eigen::
                                    "volume ratio {:.3g}): the element is inverted",
                                    J, F33, mean));
     const double alpha = dilatation_scale(mean, J);
-    finite_strain_point_at(*material_, type_.family, alpha * F, alpha * F33, committed_state(q), trial,
+    finite_strain_point_at(*material_, type_->family, alpha * F, alpha * F33, committed_state(q), trial,
                            context(s, q, g), mp);
     return;
   }
   Vec6 strain;
   strain << H(0, 0), H(1, 1), axisymmetric ? hoop : 0.0, H(0, 1) + H(1, 0), 0, 0;
-  small_strain_point_at(*material_, type_.family, mean_dilatation_strain(strain, mean), committed_state(q), trial,
+  small_strain_point_at(*material_, type_->family, mean_dilatation_strain(strain, mean), committed_state(q), trial,
                         context(s, q, g), mp);
 }
 
@@ -63,7 +63,7 @@ void ContinuumElement::evaluate_hybrid_small(const double* ue, const EvaluationS
   // residual is sum B_bar^T sigma dV and the tangent sum B_bar^T D B_bar dV.
   assert(n_points_ <= kMaxPoints);
   const int nd = 2 * n_nodes_;
-  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  const bool axisymmetric = type_->family == Family::Axisymmetric;
   std::array<PointGeometry, kMaxPoints> geo;
   double volume = 0;
   ElementVector b_bar = ElementVector::Zero(nd);
@@ -96,7 +96,7 @@ void ContinuumElement::evaluate_hybrid_finite(const double* ue, const Evaluation
   // (docs/theory/elements.md, "Mean dilatation").
   assert(n_points_ <= kMaxPoints);
   const int nd = 2 * n_nodes_;
-  const bool axisymmetric = type_.family == Family::Axisymmetric;
+  const bool axisymmetric = type_->family == Family::Axisymmetric;
   std::array<PointGeometry, kMaxPoints> geo;
   std::array<VolumePoint, kMaxPoints> vol;
   double volume = 0, current = 0;

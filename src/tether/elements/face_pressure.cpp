@@ -76,7 +76,7 @@ void FacePressure::prepare_thickness_stretch(const std::vector<int>& element_nod
 }
 
 void FacePressure::set_element(const ContinuumElement& element) {
-  if (element.nodes() != element_nodes_ && !element_nodes_.empty())
+  if (!std::ranges::equal(element.nodes(), element_nodes_) && !element_nodes_.empty())
     throw ModelError(describe() + ": set_element() was given another element (" + element.describe() + ")");
   element_ = &element;
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <deque>
+#include <mutex>
 
 namespace tether {
 
@@ -58,6 +60,17 @@ std::string plane_stress_hybrid_reason(const std::string& name) {
 }
 
 }  // namespace
+
+const ElementType& intern_element_type(const ElementType& type) {
+  static std::mutex mutex;
+  static std::deque<ElementType> stored;  // a deque: references stay valid as it grows
+  const std::scoped_lock lock(mutex);
+  for (const ElementType& t : stored)
+    if (t.name == type.name && t.family == type.family && t.shape == type.shape && t.n_nodes == type.n_nodes &&
+        t.reduced == type.reduced && t.hybrid == type.hybrid)
+      return t;
+  return stored.emplace_back(type);
+}
 
 std::optional<ElementType> find_element_type(std::string_view name) {
   for (const auto& t : kCatalogue)

@@ -6,6 +6,7 @@
 /// checks need.
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,18 +14,19 @@
 namespace tether {
 
 /// Kinematic assumption of a 2D continuum element.
-enum class Family { PlaneStrain, PlaneStress, Axisymmetric };
+enum class Family : std::uint8_t { PlaneStrain, PlaneStress, Axisymmetric };
 
 /// Reference shape of an element (ABAQUS node ordering: corners first,
 /// counter-clockwise, then mid-side nodes starting on edge 1-2).
-enum class Shape { Tri3, Quad4, Tri6, Quad8 };
+enum class Shape : std::uint8_t { Tri3, Quad4, Tri6, Quad8 };
 
-/// One row of the catalogue.
+/// One row of the catalogue. 24 bytes (the enums and counts are single
+/// bytes): the model keeps one per element.
 struct ElementType {
   std::string_view name;  ///< ABAQUS name, e.g. "CPE8R"
   Family family;
   Shape shape;
-  int n_nodes;
+  std::uint8_t n_nodes;
   bool reduced;           ///< reduced integration (R suffix)
   /// Hybrid (H suffix): mixed displacement-pressure. tether has the
   /// constant-pressure 4-node CPE4H and CAX4H, formulated as mean dilatation
@@ -33,6 +35,14 @@ struct ElementType {
   /// unsupported_reason() can refuse them.
   bool hybrid = false;
 };
+
+/// The one stored copy of `type` (equal in every field, the name compared by
+/// its text): a reference that stays valid for the life of the program, so
+/// that many elements of a type can share one ElementType (8 bytes each
+/// instead of 32). Thread-safe. The name's characters are not copied: they
+/// must outlive the program's use of the returned type, as for any copy of
+/// `type` (the catalogue's names are static).
+const ElementType& intern_element_type(const ElementType& type);
 
 /// Looks up an ABAQUS element name (case-insensitive). Returns nothing for an
 /// unknown name. Reduced-integration 4-node types and the hybrid types other

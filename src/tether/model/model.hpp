@@ -20,6 +20,7 @@
 #include "tether/model/constraint_data.hpp"
 #include "tether/model/contact_data.hpp"
 #include "tether/model/element_type.hpp"
+#include "tether/model/label_map.hpp"
 #include "tether/model/part_instance.hpp"
 #include "tether/model/temperature_data.hpp"
 #include "tether/model/pretension_section.hpp"
@@ -27,11 +28,12 @@
 namespace tether {
 
 /// A continuum element of the mesh.
+/// (The two ints first: 96 bytes, not 104, one per mesh element.)
 struct Element {
   int id = 0;                ///< user label
+  int section = -1;          ///< index into Model::sections, -1 until assigned
   ElementType type;          ///< from the catalogue
   std::vector<int> nodes;    ///< node indices (not labels), ABAQUS order
-  int section = -1;          ///< index into Model::sections, -1 until assigned
   SourceLocation where;
 };
 
@@ -306,9 +308,9 @@ struct Model {
   // --- mesh ---
   std::vector<int> node_ids;              ///< label of node i
   std::vector<Eigen::Vector2d> coords;    ///< reference coordinates of node i (x,y) or (r,z)
-  std::unordered_map<int, int> node_index;     ///< label -> index
+  LabelMap node_index;                    ///< label -> index
   std::vector<Element> elements;
-  std::unordered_map<int, int> element_index;  ///< label -> index
+  LabelMap element_index;                 ///< label -> index
   /// ABAQUS/CAE part instances (empty for a flat deck): which labels belong to
   /// which instance, for naming them `INSTANCE.label` (label_text()).
   std::vector<PartInstance> instances;
