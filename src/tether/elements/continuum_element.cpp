@@ -522,7 +522,7 @@ void ContinuumElement::extrapolate_plastic_to_nodes(const std::vector<PointValue
 
 void ContinuumElement::extrapolate_sdv_to_nodes(const std::vector<PointValues>& points, int n,
                                                 std::vector<double>& nodal) const {
-  const Eigen::MatrixXd& E = extrapolation_matrix(type_.shape, rule_);
+  const Eigen::MatrixXd& E = extrapolation_matrix(type_->shape, rule_);
   nodal.assign(static_cast<std::size_t>(n_nodes_ * n), 0.0);
   for (int a = 0; a < n_nodes_; ++a)
     for (int q = 0; q < n_points_; ++q) {
