@@ -304,17 +304,21 @@ void integrate_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::array<std:
 ///   E_k = ∫ Φ_k η dA = c (α_k Σ w_q η_q + β_k Σ w_q ξ_q η_q),
 ///   D_k += S_k,  M_k0 = (S_k - E_k)/2,  M_k1 = (S_k + E_k)/2.
 /// Only η_q carries derivatives per point (Σ w_q and Σ w_q s_q are
-/// numbers); the sums equal integrate_overlap's up to round-off.
+/// numbers); the sums equal integrate_overlap's up to round-off. The point
+/// x(ξ_q) and normal n(ξ_q) that η_q projects are affine in s_q too:
+/// x(ξ_q) = x(centre) + s_q half x', likewise n.
 template <class T>
 void integrate_linear_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::array<std::array<T, 3>, 3>& M) {
   const T half = 0.5 * (o.hi - o.lo), centre = 0.5 * (o.hi + o.lo);
+  std::array<T, 3> Nc, dNc;
+  segment_shapes(2, centre, Nc, dNc);
+  const Vec2T<T> xc = interpolate(o.x, Nc), nc = interpolate(o.normals, Nc);
+  const Vec2T<T> xh = half * interpolate(o.x, dNc), nh = half * interpolate(o.normals, dNc);
+  const auto at = [](const Vec2T<T>& c, const Vec2T<T>& h, double s) { return Vec2T<T>{c.x + s * h.x, c.y + s * h.y}; };
   double sum_w = 0, sum_ws = 0;
   T sum_w_eta(0.0), sum_ws_eta(0.0);  // Σ w_q η_q, Σ w_q s_q η_q
   for (const LinePoint& q : o.gauss) {
-    const T xi = centre + q.s * half;
-    std::array<T, 3> N, dN;
-    segment_shapes(2, xi, N, dN);
-    const std::optional<T> eta = project_onto_master<T>(interpolate(o.x, N), interpolate(o.normals, N), o.y);
+    const std::optional<T> eta = project_onto_master<T>(at(xc, xh, q.s), at(nc, nh, q.s), o.y);
     if (!eta) continue;
     sum_w += q.weight, sum_ws += q.weight * q.s;
     add_product(sum_w_eta, T(q.weight), *eta);
