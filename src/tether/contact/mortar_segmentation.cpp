@@ -233,7 +233,8 @@ std::optional<std::array<T, 2>> overlap_of(std::span<const Vec2T<T>> x, std::spa
     if (xi && std::abs(*xi) <= inside) ends.push_back({std::max(-1.0, std::min(1.0, *xi)), end});
   }
   if (ends.size() < 2) return std::nullopt;
-  const auto [lo, hi] = std::minmax_element(ends.begin(), ends.end(), [](const End& a, const End& b) { return a.xi < b.xi; });
+  const auto by_xi = [](const End& a, const End& b) { return a.xi < b.xi; };
+  const auto [lo, hi] = std::minmax_element(ends.begin(), ends.end(), by_xi);
   if (!(hi->xi - lo->xi > 1e-14)) return std::nullopt;
   const auto at = [&](const End& end) -> T {
     if constexpr (std::is_same_v<T, double>) {
@@ -457,7 +458,8 @@ SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const 
   // From reference positions the coefficients are numbers: computed in
   // double (Dual2 constants took the same operations, but for divisions by
   // a reciprocal: the same to round-off).
-  const std::array<std::array<T, 3>, 3> A = measure.empty() ? dual_coefficients<T>(x) : constant_coefficients<T>(measure);
+  const std::array<std::array<T, 3>, 3> A =
+      measure.empty() ? dual_coefficients<T>(x) : constant_coefficients<T>(measure);
   const std::vector<LinePoint>& gauss = gauss_rule(n_gauss);
   const Vec2T<double> slave_dir = values(x[1]) - values(x[0]);
   for (std::size_t f = 0; f < masters.size(); ++f) {
