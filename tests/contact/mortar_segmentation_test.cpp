@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -188,6 +189,103 @@ TEST(MortarSegmentation, ExactDerivativesMatchFiniteDifferences) {
     // Dual2 stores the lower triangle only: the Hessian is symmetric bit for bit.
     const Dual2::Hessian hs = s.hessian();
     EXPECT_TRUE(hs == hs.transpose()) << trial;
+  }
+}
+
+/// A linear slave segment p1-p2 whose nodal normals are averaged with its
+/// neighbours p0-p1 and p2-p3 (they differ from the segment's own normal
+/// and from each other) against two linear master segments p4-p5, p5-p6
+/// that cut it: Σ_k c_k D_k + Σ c_fka M[f][k][a] over all 14 coordinates.
+/// `reference`: the integrals' measure from fixed reference positions (a
+/// geometrically linear step), else the current one. The 2-node against
+/// 2-node overlaps take integrate_segment's affine sums.
+template <class T>
+T linear_summary(const std::vector<T>& q, bool reference) {
+  auto p = [&](int i) { return Vec2T<T>{q[static_cast<std::size_t>(2 * i)], q[static_cast<std::size_t>(2 * i + 1)]}; };
+  const std::vector<Vec2T<T>> left{p(0), p(1)}, x{p(1), p(2)}, right{p(2), p(3)};
+  const std::vector<std::vector<Vec2T<T>>> around1{left, x}, around2{x, right};
+  const std::array<int, 2> at1{1, 0}, at2{1, 0};
+  const std::vector<Vec2T<T>> normals{nodal_normal<T>(around1, at1), nodal_normal<T>(around2, at2)};
+  const std::vector<std::vector<Vec2T<T>>> masters{{p(4), p(5)}, {p(5), p(6)}};
+  const std::vector<V> measure = reference ? std::vector<V>{{0.02, -0.01}, {1.97, 0.22}} : std::vector<V>{};
+  const SegmentMortar<T> m = integrate_segment<T>(x, normals, masters, 0.7, 6, measure);
+  T s(0.0);
+  for (int k = 0; k < 2; ++k) {
+    s += (1.0 + 0.3 * k) * m.D[static_cast<std::size_t>(k)];
+    for (int f = 0; f < 2; ++f)
+      for (int a = 0; a < 2; ++a)
+        s += (0.2 + 0.1 * k - 0.4 * f + 0.25 * a) * m.M[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)][static_cast<std::size_t>(a)];
+  }
+  return s;
+}
+
+TEST(MortarSegmentation, LinearSegmentsExactDerivativesMatchFiniteDifferences) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+  const std::vector<double> base{-1, -0.2, 0, 0, 2, 0.2, 3, 0.6, 2.6, -0.05, 1.3, -0.12, -0.5, -0.02};
+  for (int trial = 0; trial < 6; ++trial) {
+    const bool reference = trial % 2 == 1;
+    std::vector<double> q = base;
+    for (double& v : q) v += jitter(rng);
+    const int n = static_cast<int>(q.size());
+    const auto variables = [n](const std::vector<double>& at) {
+      std::vector<Dual2> d;
+      for (int i = 0; i < n; ++i) d.push_back(Dual2::variable(at[static_cast<std::size_t>(i)], i, n));
+      return d;
+    };
+    const Dual2 s = linear_summary<Dual2>(variables(q), reference);
+    EXPECT_NEAR(s.value(), linear_summary<double>(q, reference), 1e-13);
+    const double h = 1e-5;
+    double grad_error = 0, hess_error = 0, scale = 1;
+    for (int i = 0; i < n; ++i) {
+      std::vector<double> qp = q, qm = q;
+      qp[static_cast<std::size_t>(i)] += h;
+      qm[static_cast<std::size_t>(i)] -= h;
+      grad_error = std::max(grad_error, std::abs(s.gradient()[i] - (linear_summary<double>(qp, reference) -
+                                                                    linear_summary<double>(qm, reference)) / (2 * h)));
+      const Eigen::VectorXd fd =
+          (linear_summary<Dual2>(variables(qp), reference).gradient() - linear_summary<Dual2>(variables(qm), reference).gradient()) /
+          (2 * h);
+      hess_error = std::max(hess_error, (s.hessian().col(i) - fd).cwiseAbs().maxCoeff());
+      scale = std::max(scale, s.hessian().col(i).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(grad_error, 1e-8) << trial;
+    EXPECT_LT(hess_error / scale, 1e-7) << trial;
+    // The Hessian is not trivially small: the normals and projections enter.
+    EXPECT_GT(scale, 0.05) << trial;
+  }
+}
+
+TEST(MortarSegmentation, LinearMasterSumsEqualTheGeneralQuadrature) {
+  // The same straight master once as a 2-node segment (integrate_segment's
+  // affine sums) and once as a 3-node one with its mid node at the middle
+  // (the general Gauss-point loop): y(η) is the same map, so D and the
+  // weighted gap vectors Σ_a M_ka y_a agree to round-off, and so do the
+  // overlaps. Nodal normals that differ from each other (a curved field).
+  const std::vector<V> x{{0, 0}, {2, 0.3}};
+  const std::vector<V> normals{{0.25, -0.968245836551854}, {-0.05, -0.998749217771909}};
+  const V y0{2.4, -0.1}, y1{0.9, -0.25}, y2{-0.6, -0.05};
+  for (bool reference : {false, true}) {
+    const std::vector<V> measure = reference ? std::vector<V>{{0.0, 0.05}, {2.1, 0.3}} : std::vector<V>{};
+    const std::vector<std::vector<V>> two{{y0, y1}, {y1, y2}};
+    const std::vector<std::vector<V>> three{{y0, y1, 0.5 * (y0 + y1)}, {y1, y2, 0.5 * (y1 + y2)}};
+    const SegmentMortar<double> a = integrate_segment<double>(x, normals, two, 0.4, 6, measure);
+    const SegmentMortar<double> b = integrate_segment<double>(x, normals, three, 0.4, 6, measure);
+    for (std::size_t k = 0; k < 2; ++k) {
+      EXPECT_NEAR(a.D[k], b.D[k], 1e-14) << k;
+      for (std::size_t f = 0; f < 2; ++f) {
+        V va{0, 0}, vb{0, 0};
+        for (std::size_t m = 0; m < 2; ++m) va = va + a.M[f][k][m] * two[f][m];
+        for (std::size_t m = 0; m < 3; ++m) vb = vb + b.M[f][k][m] * three[f][m];
+        EXPECT_NEAR(va.x, vb.x, 1e-14) << k << f;
+        EXPECT_NEAR(va.y, vb.y, 1e-14) << k << f;
+      }
+    }
+    for (std::size_t f = 0; f < 2; ++f) {
+      EXPECT_NEAR(a.overlap[f][0], b.overlap[f][0], 1e-14);
+      EXPECT_NEAR(a.overlap[f][1], b.overlap[f][1], 1e-14);
+      EXPECT_LT(a.overlap[f][0], a.overlap[f][1]) << "both masters overlap the slave";
+    }
   }
 }
 

@@ -141,16 +141,13 @@ struct MasterRay {
 };
 
 /// Newton on a scalar equation given by `residual_double(xi, f, df)`, then
-/// `polish_steps` more Newton steps, then (T = Dual2) the root's gradient
-/// and Hessian by the implicit function theorem from one evaluation of
-/// `residual_t` (the same equation on T) at the root, with f'' from
-/// `residual_t.curvature` (exact at a root; Dual2::implicit_root). The
-/// polishing steps compute t - f/f' as the Newton steps on T did before
-/// (Dual2 divides by multiplying with 1/f'), so the roots' values are the
-/// bits they were. None when it does not converge or leaves |ξ| <= limit.
-template <class T, class DoubleResidual, class TResidual>
-std::optional<T> solve_scalar(double start, double limit, DoubleResidual residual_double, TResidual residual_t,
-                              int polish_steps = kPolishSteps) {
+/// `polish_steps` more Newton steps: the root's value as solve_scalar<T>
+/// has it. The polishing steps compute t - f/f' as the Newton steps on T
+/// did before (Dual2 divides by multiplying with 1/f'), so the roots'
+/// values are the bits they were. None when it does not converge or leaves
+/// |ξ| <= limit.
+template <class T, class DoubleResidual>
+std::optional<double> scalar_root(double start, double limit, DoubleResidual residual_double, int polish_steps) {
   double xi = start;
   bool converged = false;
   for (int it = 0; it < kMaxNewton; ++it) {
@@ -176,35 +173,172 @@ std::optional<T> solve_scalar(double start, double limit, DoubleResidual residua
       f *= 1 / df;
     root -= f;
   }
+  return root;
+}
+
+/// The root of scalar_root, then (T = Dual2) its gradient and Hessian by
+/// the implicit function theorem from one evaluation of `residual_t` (the
+/// same equation on T) at the root, with f'' from `residual_t.curvature`
+/// (exact at a root; Dual2::implicit_root).
+template <class T, class DoubleResidual, class TResidual>
+std::optional<T> solve_scalar(double start, double limit, DoubleResidual residual_double, TResidual residual_t,
+                              int polish_steps = kPolishSteps) {
+  const std::optional<double> root = scalar_root<T>(start, limit, residual_double, polish_steps);
+  if (!root) return std::nullopt;
   if constexpr (std::is_same_v<T, double>) {
-    return root;
+    return *root;
   } else {
     T f, df;
-    residual_t(T(root), f, df);
-    return Dual2::implicit_root(root, f, df, residual_t.curvature(root));
+    residual_t(T(*root), f, df);
+    return Dual2::implicit_root(*root, f, df, residual_t.curvature(*root));
   }
 }
+
+/// Newton's start for the projection of p along the normals of slave segment x:
+/// the closest point of its chord, in [-2, 2].
+double slave_projection_start(const Vec2T<double>& p, const std::vector<Vec2T<double>>& x) {
+  const Vec2T<double> chord = x[1] - x[0], mid = 0.5 * (x[0] + x[1]);
+  return std::clamp(2 * dot(p - mid, chord) / dot(chord, chord), -2.0, 2.0);
+}
+
+/// Polishing steps of a projection onto master segment y (its equation is linear on a 2-node one).
+int master_polish_steps(std::size_t nodes) { return nodes == 2 ? 1 : kPolishSteps; }
 
 /// The overlap [ξ_lo, ξ_hi] on slave segment x of master segment y: the
 /// slave points whose normal ray meets y. Its ends are slave ends whose
 /// nodal normal ray meets y (|η| <= 1) and projections of master ends that
-/// fall on the slave (|ξ| <= 1). None when that leaves no interval.
+/// fall on the slave (|ξ| <= 1), clipped to [-1, 1]. None when that leaves
+/// no interval. The ends are chosen on the projections' values (the bits
+/// the T projections have); with T = Dual2 only a chosen master end strictly
+/// inside the slave is projected again for its derivatives (a slave end or
+/// a clipped one is a constant, and the projections onto the master only
+/// decide), so the result is the same as projecting every end in T.
 template <class T>
 std::optional<std::array<T, 2>> overlap_of(std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals,
                                            std::span<const Vec2T<T>> y) {
   constexpr double inside = 1 + 1e-12;
-  std::vector<T> ends;
+  const std::vector<Vec2T<double>> xd = values(x), nd = values(normals), yd = values(y);
+  struct End {
+    double xi = 0;
+    int master = -1;  ///< the master end projected, -1 for a slave end
+  };
+  std::vector<End> ends;
   for (int end = 0; end < 2; ++end) {
-    const std::optional<T> eta = project_onto_master<T>(x[static_cast<std::size_t>(end)],
-                                                        normals[static_cast<std::size_t>(end)], y);
-    if (eta && std::abs(value_of(*eta)) <= inside) ends.push_back(T(end == 0 ? -1.0 : 1.0));
-    const std::optional<T> xi = project_along_slave_normals<T>(y[static_cast<std::size_t>(end)], x, normals);
-    if (xi && std::abs(value_of(*xi)) <= inside) ends.push_back(std::max(T(-1.0), std::min(T(1.0), *xi)));
+    const auto e = static_cast<std::size_t>(end);
+    const std::optional<double> eta =
+        scalar_root<T>(0.0, 3.0, MasterRay<double>(xd[e], nd[e], yd), master_polish_steps(yd.size()));
+    if (eta && std::abs(*eta) <= inside) ends.push_back({end == 0 ? -1.0 : 1.0, -1});
+    const std::optional<double> xi =
+        scalar_root<T>(slave_projection_start(yd[e], xd), 3.0, SlaveRay<double>(yd[e], xd, nd), kPolishSteps);
+    if (xi && std::abs(*xi) <= inside) ends.push_back({std::max(-1.0, std::min(1.0, *xi)), end});
   }
   if (ends.size() < 2) return std::nullopt;
-  const auto [lo, hi] = std::minmax_element(ends.begin(), ends.end());
-  if (!(value_of(*hi) - value_of(*lo) > 1e-14)) return std::nullopt;
-  return std::array<T, 2>{*lo, *hi};
+  const auto by_xi = [](const End& a, const End& b) { return a.xi < b.xi; };
+  const auto [lo, hi] = std::minmax_element(ends.begin(), ends.end(), by_xi);
+  if (!(hi->xi - lo->xi > 1e-14)) return std::nullopt;
+  const auto at = [&](const End& end) -> T {
+    if constexpr (std::is_same_v<T, double>) {
+      return end.xi;
+    } else {
+      if (end.master < 0 || !(end.xi > -1.0 && end.xi < 1.0)) return T(end.xi);
+      return *project_along_slave_normals<T>(y[static_cast<std::size_t>(end.master)], x, normals);
+    }
+  };
+  return std::array<T, 2>{at(*lo), at(*hi)};
+}
+
+/// dual_coefficients of the (constant) positions x, as T.
+template <class T>
+std::array<std::array<T, 3>, 3> constant_coefficients(std::span<const Vec2T<double>> x) {
+  const std::array<std::array<double, 3>, 3> a = dual_coefficients<double>(x);
+  std::array<std::array<T, 3>, 3> out;
+  for (std::size_t k = 0; k < 3; ++k)
+    for (std::size_t l = 0; l < 3; ++l) out[k][l] = T(a[k][l]);
+  return out;
+}
+
+/// One overlap [lo, hi] of a slave segment x (nodal normals, dual
+/// coefficients A, Jacobian from `jacobian_of`) with master segment y.
+template <class T>
+struct Overlap {
+  std::span<const Vec2T<T>> x, normals, y, jacobian_of;
+  const std::array<std::array<T, 3>, 3>& A;
+  double thickness;
+  const std::vector<LinePoint>& gauss;
+  const T &lo, &hi;
+};
+
+/// Adds the overlap's ∫ Φ_k dA to D[k] and sets M[k][a] = ∫ Φ_k N_a(η) dA
+/// (any segments): at each Gauss point ξ_q, η_q is the projection of x(ξ_q)
+/// along n(ξ_q) onto y; points without one are skipped.
+template <class T>
+void integrate_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::array<std::array<T, 3>, 3>& M) {
+  const int n = static_cast<int>(o.x.size());
+  const T half = 0.5 * (o.hi - o.lo), centre = 0.5 * (o.hi + o.lo);
+  for (const LinePoint& q : o.gauss) {
+    const T xi = centre + q.s * half;
+    std::array<T, 3> N, dN;
+    segment_shapes(n, xi, N, dN);
+    const Vec2T<T> dx = interpolate(o.jacobian_of, dN);
+    const T w = (q.weight * o.thickness) * half * sqrt(dot(dx, dx));
+    const std::optional<T> eta = project_onto_master<T>(interpolate(o.x, N), interpolate(o.normals, N), o.y);
+    if (!eta) continue;
+    std::array<T, 3> Nm, dNm;
+    segment_shapes(static_cast<int>(o.y.size()), *eta, Nm, dNm);
+    for (int k = 0; k < n; ++k) {
+      T phi(0.0);
+      for (int l = 0; l < n; ++l) add_product(phi, o.A[k][l], N[l]);
+      const T wphi = w * phi;
+      D[k] += wphi;
+      for (std::size_t m = 0; m < o.y.size(); ++m) add_product(M[k][m], wphi, Nm[m]);
+    }
+  }
+}
+
+/// integrate_overlap for a 2-node slave and a 2-node master segment, with
+/// the same Gauss points and projections but one accumulation per point.
+/// There the dual basis is affine, Φ_k = α_k + β_k ξ (α_k = (A_k0 + A_k1)/2,
+/// β_k = (A_k1 - A_k0)/2), the master shapes are (1 ∓ η)/2 and the
+/// Jacobian J is constant, so with c = t J half and w_q the Gauss weights
+/// of the points that project (ξ_q = centre + s_q half):
+///   S_k = ∫ Φ_k dA   = c (α_k Σ w_q + β_k Σ w_q ξ_q),
+///   E_k = ∫ Φ_k η dA = c (α_k Σ w_q η_q + β_k Σ w_q ξ_q η_q),
+///   D_k += S_k,  M_k0 = (S_k - E_k)/2,  M_k1 = (S_k + E_k)/2.
+/// Only η_q carries derivatives per point (Σ w_q and Σ w_q s_q are
+/// numbers); the sums equal integrate_overlap's up to round-off. The point
+/// x(ξ_q) and normal n(ξ_q) that η_q projects are affine in s_q too:
+/// x(ξ_q) = x(centre) + s_q half x', likewise n.
+template <class T>
+void integrate_linear_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::array<std::array<T, 3>, 3>& M) {
+  const T half = 0.5 * (o.hi - o.lo), centre = 0.5 * (o.hi + o.lo);
+  std::array<T, 3> Nc, dNc;
+  segment_shapes(2, centre, Nc, dNc);
+  const Vec2T<T> xc = interpolate(o.x, Nc), nc = interpolate(o.normals, Nc);
+  const Vec2T<T> xh = half * interpolate(o.x, dNc), nh = half * interpolate(o.normals, dNc);
+  const auto at = [](const Vec2T<T>& c, const Vec2T<T>& h, double s) { return Vec2T<T>{c.x + s * h.x, c.y + s * h.y}; };
+  double sum_w = 0, sum_ws = 0;
+  T sum_w_eta(0.0), sum_ws_eta(0.0);  // Σ w_q η_q, Σ w_q s_q η_q
+  for (const LinePoint& q : o.gauss) {
+    const std::optional<T> eta = project_onto_master<T>(at(xc, xh, q.s), at(nc, nh, q.s), o.y);
+    if (!eta) continue;
+    sum_w += q.weight, sum_ws += q.weight * q.s;
+    add_product(sum_w_eta, T(q.weight), *eta);
+    add_product(sum_ws_eta, T(q.weight * q.s), *eta);
+  }
+  if (sum_w == 0) return;
+  std::array<T, 3> N, dN;
+  segment_shapes(2, T(0.0), N, dN);
+  const Vec2T<T> dx = interpolate(o.jacobian_of, dN);
+  const T c = (o.thickness * half) * sqrt(dot(dx, dx));
+  const T w0 = c * sum_w, w1 = c * (centre * sum_w + half * sum_ws);
+  const T w_eta = c * sum_w_eta, w1_eta = c * (centre * sum_w_eta + half * sum_ws_eta);
+  for (int k = 0; k < 2; ++k) {
+    const T alpha = 0.5 * (o.A[k][0] + o.A[k][1]), beta = 0.5 * (o.A[k][1] - o.A[k][0]);
+    const T S = alpha * w0 + beta * w1, E = alpha * w_eta + beta * w1_eta;
+    D[k] += S;
+    M[k][0] = 0.5 * (S - E);
+    M[k][1] = 0.5 * (S + E);
+  }
 }
 
 }  // namespace
@@ -255,11 +389,7 @@ std::optional<T> project_along_slave_normals(const Vec2T<T>& p, std::span<const 
                                              std::span<const Vec2T<T>> normals) {
   const Vec2T<double> pd = values(p);
   const std::vector<Vec2T<double>> xd = values(x), nd = values(normals);
-  const Vec2T<double> chord = xd[1] - xd[0], mid = 0.5 * (xd[0] + xd[1]);
-  const double start = 2 * dot(pd - mid, chord) / dot(chord, chord);
-  return solve_scalar<T>(
-      std::clamp(start, -2.0, 2.0), 3.0,
-      SlaveRay<double>(pd, xd, nd), SlaveRay<T>(p, x, normals));
+  return solve_scalar<T>(slave_projection_start(pd, xd), 3.0, SlaveRay<double>(pd, xd, nd), SlaveRay<T>(p, x, normals));
 }
 
 template <class T>
@@ -267,7 +397,7 @@ std::optional<T> project_onto_master(const Vec2T<T>& p, const Vec2T<T>& d, std::
   const Vec2T<double> pd = values(p), dd = values(d);
   const std::vector<Vec2T<double>> yd = values(y);
   return solve_scalar<T>(
-      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y), y.size() == 2 ? 1 : kPolishSteps);
+      0.0, 3.0, MasterRay<double>(pd, dd, yd), MasterRay<T>(p, d, y), master_polish_steps(y.size()));
 }
 
 template <class T>
@@ -325,7 +455,11 @@ SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const 
   std::vector<Vec2T<T>> measure_t;
   for (const Vec2T<double>& p : measure) measure_t.push_back({T(p.x), T(p.y)});
   const std::span<const Vec2T<T>> jacobian_of = measure.empty() ? x : std::span<const Vec2T<T>>(measure_t);
-  const auto A = dual_coefficients<T>(jacobian_of);
+  // From reference positions the coefficients are numbers: computed in
+  // double (Dual2 constants took the same operations, but for divisions by
+  // a reciprocal: the same to round-off).
+  const std::array<std::array<T, 3>, 3> A =
+      measure.empty() ? dual_coefficients<T>(x) : constant_coefficients<T>(measure);
   const std::vector<LinePoint>& gauss = gauss_rule(n_gauss);
   const Vec2T<double> slave_dir = values(x[1]) - values(x[0]);
   for (std::size_t f = 0; f < masters.size(); ++f) {
@@ -335,28 +469,12 @@ SegmentMortar<T> integrate_segment(std::span<const Vec2T<T>> x, std::span<const 
     if (!(dot(values(y[1]) - values(y[0]), slave_dir) < 0)) continue;  // not facing the slave
     const std::optional<std::array<T, 2>> range = overlap_of<T>(x, normals, y);
     if (!range) continue;
-    const T& lo = (*range)[0];
-    const T& hi = (*range)[1];
-    out.overlap[f] = {value_of(lo), value_of(hi)};
-    const T half = 0.5 * (hi - lo), centre = 0.5 * (hi + lo);
-    for (const LinePoint& q : gauss) {
-      const T xi = centre + q.s * half;
-      std::array<T, 3> N, dN;
-      segment_shapes(n, xi, N, dN);
-      const Vec2T<T> dx = interpolate(jacobian_of, dN);
-      const T w = (q.weight * thickness) * half * sqrt(dot(dx, dx));
-      const std::optional<T> eta = project_onto_master<T>(interpolate(x, N), interpolate(normals, N), y);
-      if (!eta) continue;
-      std::array<T, 3> Nm, dNm;
-      segment_shapes(static_cast<int>(y.size()), *eta, Nm, dNm);
-      for (int k = 0; k < n; ++k) {
-        T phi(0.0);
-        for (int l = 0; l < n; ++l) add_product(phi, A[k][l], N[l]);
-        const T wphi = w * phi;
-        out.D[k] += wphi;
-        for (std::size_t m = 0; m < y.size(); ++m) add_product(out.M[f][k][m], wphi, Nm[m]);
-      }
-    }
+    out.overlap[f] = {value_of((*range)[0]), value_of((*range)[1])};
+    const Overlap<T> o{x, normals, y, jacobian_of, A, thickness, gauss, (*range)[0], (*range)[1]};
+    if (n == 2 && y.size() == 2)
+      integrate_linear_overlap<T>(o, out.D, out.M[f]);
+    else
+      integrate_overlap<T>(o, out.D, out.M[f]);
   }
   return out;
 }
