@@ -283,4 +283,30 @@ std::vector<int> contact_equations(const std::vector<std::unique_ptr<ContactPair
   return out;
 }
 
+std::vector<DualNodeEquations> contact_dual_equations(const std::vector<std::unique_ptr<ContactPair>>& pairs,
+                                                      const DofMap& dofs, const EquationMap& equations,
+                                                      const std::vector<int>& other_contact_nodes) {
+  // Per node: slave rows it carries (any pair) and whether it is shared otherwise.
+  std::map<int, int> slave_rows;
+  std::set<int> shared(other_contact_nodes.begin(), other_contact_nodes.end());
+  for (const auto& pair : pairs) {
+    for (int i = 0; i < pair->n_slaves(); ++i) ++slave_rows[pair->slave(i).node];
+    for (const auto& face : pair->setup().master_faces) shared.insert(face.begin(), face.end());
+  }
+  const auto single = [&](int dof) {
+    const auto w = equations.weights(dof);
+    return w.size() == 1 && w[0].weight == 1 ? w[0].equation : -1;
+  };
+  std::vector<DualNodeEquations> out;
+  for (const auto& pair : pairs)
+    for (int i = 0; i < pair->n_slaves(); ++i) {
+      const ContactSlave& s = pair->slave(i);
+      if (s.normal_multiplier < 0 || slave_rows[s.node] > 1 || shared.count(s.node) > 0) continue;
+      out.push_back({single(s.normal_multiplier),
+                     {single(dofs.displacement(s.node, 0)), single(dofs.displacement(s.node, 1))}});
+    }
+  return out;
+}
+
 }  // namespace tether
+
