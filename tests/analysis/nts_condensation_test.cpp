@@ -56,7 +56,7 @@ Registered registered(const std::string& deck, const std::vector<std::pair<int, 
   std::vector<bool> prescribed(static_cast<std::size_t>(disc.dofs().n_dofs()), false);
   for (const auto& [label, c] : prescribed_node_dofs)
     prescribed[static_cast<std::size_t>(disc.dofs().displacement(model.node_index.at(label), c))] = true;
-  const EquationMap map(prescribed);
+  const EquationMap map(prescribed, disc.elimination_rows());
   std::vector<int> other;
   for (int label : other_labels) other.push_back(model.node_index.at(label));
   Registered out;
@@ -114,6 +114,13 @@ TEST(NtsDualEquations, RefusesANodeWithASecondContactRowOrOnAMasterSurface) {
   EXPECT_EQ(r4.equations.size(), 7u);
   EXPECT_FALSE(has(r4, 2));
   EXPECT_FALSE(has(r4, 5));
+  // Nodes 6 and 7 tied in x by an eliminated *EQUATION (6's x dependent):
+  // they share an equation, and neither is registered.
+  const Registered tied =
+      registered(before_step(base, "*EQUATION, ENFORCEMENT=ELIMINATION\n2\n6, 1, 1.0, 7, 1, -1.0\n"), {}, {});
+  EXPECT_EQ(tied.equations.size(), 7u);
+  EXPECT_FALSE(has(tied, 6));
+  EXPECT_FALSE(has(tied, 7));
   // Friction adds tangential multipliers, which are not registered; soft laws no multiplier at all.
   const Registered friction =
       registered(tether::testing::block_on_foundation(0.5123, kHard + "*FRICTION\n0.3\n"), {}, {});

@@ -286,12 +286,30 @@ std::vector<int> contact_equations(const std::vector<std::unique_ptr<ContactPair
 std::vector<DualNodeEquations> contact_dual_equations(const std::vector<std::unique_ptr<ContactPair>>& pairs,
                                                       const DofMap& dofs, const EquationMap& equations,
                                                       const std::vector<int>& other_contact_nodes) {
-  // Per node: slave rows it carries (any pair) and whether it is shared otherwise.
+  // Equations of a node's displacements (each dof through `equations`: an
+  // MPC-dependent dof counts as the equations it expands to).
+  const auto node_equations = [&](int node) {
+    std::vector<int> out;
+    for (int c = 0; c < kDofsPerNode; ++c)
+      for (const EquationWeight& w : equations.weights(dofs.displacement(node, c))) out.push_back(w.equation);
+    return out;
+  };
+  // Displacement equations carried by a master node or another pair's node,
+  // and how many slave rows touch each one.
+  std::set<int> shared;
   std::map<int, int> slave_rows;
-  std::set<int> shared(other_contact_nodes.begin(), other_contact_nodes.end());
+  for (int node : other_contact_nodes)
+    for (int e : node_equations(node)) shared.insert(e);
   for (const auto& pair : pairs) {
-    for (int i = 0; i < pair->n_slaves(); ++i) ++slave_rows[pair->slave(i).node];
-    for (const auto& face : pair->setup().master_faces) shared.insert(face.begin(), face.end());
+    for (const auto& face : pair->setup().master_faces)
+      for (int node : face)
+        for (int e : node_equations(node)) shared.insert(e);
+    for (int i = 0; i < pair->n_slaves(); ++i) {
+      std::vector<int> own = node_equations(pair->slave(i).node);
+      std::sort(own.begin(), own.end());
+      own.erase(std::unique(own.begin(), own.end()), own.end());
+      for (int e : own) ++slave_rows[e];
+    }
   }
   const auto single = [&](int dof) {
     const auto w = equations.weights(dof);
@@ -301,7 +319,10 @@ std::vector<DualNodeEquations> contact_dual_equations(const std::vector<std::uni
   for (const auto& pair : pairs)
     for (int i = 0; i < pair->n_slaves(); ++i) {
       const ContactSlave& s = pair->slave(i);
-      if (s.normal_multiplier < 0 || slave_rows[s.node] > 1 || shared.count(s.node) > 0) continue;
+      if (s.normal_multiplier < 0) continue;
+      const std::vector<int> own = node_equations(s.node);
+      if (std::any_of(own.begin(), own.end(), [&](int e) { return slave_rows[e] > 1 || shared.count(e) > 0; }))
+        continue;
       out.push_back({single(s.normal_multiplier),
                      {single(dofs.displacement(s.node, 0)), single(dofs.displacement(s.node, 1))}});
     }
@@ -309,4 +330,3 @@ std::vector<DualNodeEquations> contact_dual_equations(const std::vector<std::uni
 }
 
 }  // namespace tether
-

@@ -39,10 +39,13 @@ std::vector<int> contact_equations(const std::vector<std::unique_ptr<ContactPair
 /// weight 1: prescribed, or eliminated by *EQUATION/MPC with a weight; never
 /// a pivot). Tangential (friction) multipliers are not listed: they stay.
 /// Left out, so that a pivot is coupled to no other closed multiplier's row
-/// and the eliminated block stays as well conditioned as a single node's:
-/// a node that is a slave of more than one pair, a node on any pair's master
-/// surface, and the nodes in `other_contact_nodes` (node indices, e.g. those
-/// of mortar pairs). Pairs without multipliers (soft laws, penalty) add nothing.
+/// and the eliminated block stays as well conditioned as a single node's: a
+/// node whose displacement equations (through `equations`, so an
+/// MPC-dependent dof counts as the equations it expands to) are also those
+/// of another slave row (a slave of two pairs; two slaves tied together), of
+/// a node of any pair's master surface, or of a node in `other_contact_nodes`
+/// (node indices, e.g. those of mortar pairs). Pairs without multipliers
+/// (soft laws, penalty) add nothing.
 std::vector<DualNodeEquations> contact_dual_equations(const std::vector<std::unique_ptr<ContactPair>>& pairs,
                                                       const DofMap& dofs, const EquationMap& equations,
                                                       const std::vector<int>& other_contact_nodes);
