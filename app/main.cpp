@@ -287,7 +287,8 @@ int main(int argc, char** argv) {
       ->add_flag("--mortar-condensation{sparse}", mortar_condensation,
                  "With mortar contact, how its multipliers are eliminated (all give the same answer to round-off; "
                  "docs/theory/mortar.md): =dense (default) from the dense system of the contact equations when "
-                 "the solver condenses onto them, the rest factorized by Cholesky when it can be; =kept: not "
+                 "the solver condenses onto them (so are the normal multipliers of node-to-surface HARD pairs), "
+                 "the rest factorized by Cholesky when it can be; =kept: not "
                  "eliminated, the dense system factorized by LU; without a value or =sparse: from the whole "
                  "matrix, which is then factorized at every iteration (no condensation onto the contact equations)")
       ->check(CLI::IsMember({"dense", "kept", "sparse"}, CLI::ignore_case));

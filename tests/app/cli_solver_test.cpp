@@ -251,20 +251,17 @@ std::vector<double> vtu_array(const std::string& vtu, const std::string& name) {
 
 }  // namespace
 
-TEST(Cli, MortarMultipliersEliminatedFromTheDenseInterfaceSystemWithAllWriters) {
-  // The Hertz example (5k dofs) with its pair made mortar, run with every
-  // writer (.dat with node and contact prints, .sta, .msg, .pvd and ASCII
-  // .vtu per increment): by default the mortar multipliers are eliminated
-  // from the dense system of the contact equations (the .msg says so and
-  // gives its size, 2 × (slave + master nodes) less the closed nodes);
-  // --mortar-condensation=kept factorizes the whole interface system by LU.
-  // The same increments and iterations, the .dat's printed values the same
-  // to their printed digits (1e-6 relative; 1e-9 of the file's largest
-  // value for those near zero), the last .vtu's displacements within 1e-10
-  // of the largest. A wrong mode is refused.
-  const fs::path dir = scratch("mortar_dense");
-  const std::string path = write_mortar_hertz(dir);
-  ASSERT_FALSE(path.empty());
+namespace {
+
+/// The deck at `path` (in `dir`) run with every writer (.dat, .sta, .msg,
+/// .pvd and ASCII .vtu per increment) by default and with
+/// --mortar-condensation=kept: the default's .msg names the dual
+/// elimination and a Cholesky, kept's an LU and none; the same increments
+/// and iterations, the .dat's printed values the same to their printed
+/// digits (1e-6 relative; 1e-9 of the file's largest value for those near
+/// zero), the last .vtu's displacements within 1e-10 of the largest. A wrong
+/// mode is refused.
+void expect_dense_same_as_kept(const fs::path& dir, const std::string& path) {
   const auto dense = tether("run " + path + " -q --ascii -o " + (dir / "dense").string());
   const auto kept = tether("run " + path + " -q --ascii --mortar-condensation=kept -o " + (dir / "kept").string());
   ASSERT_EQ(dense.code, 0) << dense.out;
@@ -277,7 +274,7 @@ TEST(Cli, MortarMultipliersEliminatedFromTheDenseInterfaceSystemWithAllWriters) 
     EXPECT_TRUE(fs::exists(dir / "kept" / file)) << file;
   }
   const std::string dense_log = slurp(dir / "dense" / "hertz.msg"), kept_log = slurp(dir / "kept" / "hertz.msg");
-  EXPECT_NE(dense_log.find("after the dual elimination of the mortar multipliers"), std::string::npos) << dense_log;
+  EXPECT_NE(dense_log.find("after the dual elimination of the contact multipliers"), std::string::npos) << dense_log;
   EXPECT_NE(dense_log.find(", Cholesky, reciprocal condition"), std::string::npos) << dense_log;
   EXPECT_EQ(kept_log.find("dual elimination"), std::string::npos) << kept_log;
   EXPECT_NE(kept_log.find(", LU, reciprocal condition"), std::string::npos) << kept_log;
@@ -304,4 +301,34 @@ TEST(Cli, MortarMultipliersEliminatedFromTheDenseInterfaceSystemWithAllWriters) 
   double umax = 0, du = 0;
   for (std::size_t k = 0; k < u.size(); ++k) umax = std::max(umax, std::abs(v[k])), du = std::max(du, std::abs(u[k] - v[k]));
   EXPECT_LT(du, 1e-10 * umax) << last;
+}
+
+}  // namespace
+
+TEST(Cli, MortarMultipliersEliminatedFromTheDenseInterfaceSystemWithAllWriters) {
+  // The Hertz example (5k dofs) with its pair made mortar, run with every
+  // writer (.dat with node and contact prints, .sta, .msg, .pvd and ASCII
+  // .vtu per increment): by default the mortar multipliers are eliminated
+  // from the dense system of the contact equations (the .msg says so and
+  // gives its size, 2 × (slave + master nodes) less the closed nodes);
+  // --mortar-condensation=kept factorizes the whole interface system by LU.
+  // The same increments and iterations, the .dat's printed values the same
+  // to their printed digits (1e-6 relative; 1e-9 of the file's largest
+  // value for those near zero), the last .vtu's displacements within 1e-10
+  // of the largest. A wrong mode is refused.
+  const fs::path dir = scratch("mortar_dense");
+  const std::string path = write_mortar_hertz(dir);
+  ASSERT_FALSE(path.empty());
+  expect_dense_same_as_kept(dir, path);
+}
+
+TEST(Cli, NodeToSurfaceMultipliersEliminatedFromTheDenseInterfaceSystemWithAllWriters) {
+  // The node-to-surface Hertz example (5k dofs) as it is: its closed normal
+  // multipliers are eliminated from the dense system of the contact
+  // equations like mortar ones (the .msg says so), with the same answers as
+  // with them kept.
+  const fs::path dir = scratch("nts_dense");
+  fs::create_directories(dir);
+  write(dir / "hertz.inp", slurp(fs::path(TETHER_SOURCE_DIR) / "examples/hertz/hertz.inp"));
+  expect_dense_same_as_kept(dir, (dir / "hertz.inp").string());
 }

@@ -283,4 +283,50 @@ std::vector<int> contact_equations(const std::vector<std::unique_ptr<ContactPair
   return out;
 }
 
+std::vector<DualNodeEquations> contact_dual_equations(const std::vector<std::unique_ptr<ContactPair>>& pairs,
+                                                      const DofMap& dofs, const EquationMap& equations,
+                                                      const std::vector<int>& other_contact_nodes) {
+  // Equations of a node's displacements (each dof through `equations`: an
+  // MPC-dependent dof counts as the equations it expands to).
+  const auto node_equations = [&](int node) {
+    std::vector<int> out;
+    for (int c = 0; c < kDofsPerNode; ++c)
+      for (const EquationWeight& w : equations.weights(dofs.displacement(node, c))) out.push_back(w.equation);
+    return out;
+  };
+  // Displacement equations carried by a master node or another pair's node,
+  // and how many slave rows touch each one.
+  std::set<int> shared;
+  std::map<int, int> slave_rows;
+  for (int node : other_contact_nodes)
+    for (int e : node_equations(node)) shared.insert(e);
+  for (const auto& pair : pairs) {
+    for (const auto& face : pair->setup().master_faces)
+      for (int node : face)
+        for (int e : node_equations(node)) shared.insert(e);
+    for (int i = 0; i < pair->n_slaves(); ++i) {
+      std::vector<int> own = node_equations(pair->slave(i).node);
+      std::sort(own.begin(), own.end());
+      own.erase(std::unique(own.begin(), own.end()), own.end());
+      for (int e : own) ++slave_rows[e];
+    }
+  }
+  const auto single = [&](int dof) {
+    const auto w = equations.weights(dof);
+    return w.size() == 1 && w[0].weight == 1 ? w[0].equation : -1;
+  };
+  std::vector<DualNodeEquations> out;
+  for (const auto& pair : pairs)
+    for (int i = 0; i < pair->n_slaves(); ++i) {
+      const ContactSlave& s = pair->slave(i);
+      if (s.normal_multiplier < 0) continue;
+      const std::vector<int> own = node_equations(s.node);
+      if (std::any_of(own.begin(), own.end(), [&](int e) { return slave_rows[e] > 1 || shared.count(e) > 0; }))
+        continue;
+      out.push_back({single(s.normal_multiplier),
+                     {single(dofs.displacement(s.node, 0)), single(dofs.displacement(s.node, 1))}});
+    }
+  return out;
+}
+
 }  // namespace tether

@@ -10,6 +10,7 @@
 #include "tether/assembly/equation_map.hpp"
 #include "tether/dofs/dof_map.hpp"
 #include "tether/model/model.hpp"
+#include "tether/solvers/dual_condensation.hpp"
 
 namespace tether {
 
@@ -28,5 +29,25 @@ std::unique_ptr<ContactPair> make_contact_pair(const Model& model, const Contact
 /// Sorted, unique. The interface of CondensedSolver.
 std::vector<int> contact_equations(const std::vector<std::unique_ptr<ContactPair>>& pairs, const DofMap& dofs,
                                    const EquationMap& equations);
+
+/// The node-to-segment slave nodes whose normal multiplier CondensedSolver
+/// eliminates from its dense interface system with a displacement of the
+/// node itself (CondensedSolver::eliminate_dual_multipliers; a closed row of
+/// slave node s is ∂g/∂u_s = n there, a unit vector): per such node of a
+/// HARD pair enforced by Lagrange multipliers, its normal multiplier and its
+/// two displacement equations (-1 where the dof is not a free equation of
+/// weight 1: prescribed, or eliminated by *EQUATION/MPC with a weight; never
+/// a pivot). Tangential (friction) multipliers are not listed: they stay.
+/// Left out, so that a pivot is coupled to no other closed multiplier's row
+/// and the eliminated block stays as well conditioned as a single node's: a
+/// node whose displacement equations (through `equations`, so an
+/// MPC-dependent dof counts as the equations it expands to) are also those
+/// of another slave row (a slave of two pairs; two slaves tied together), of
+/// a node of any pair's master surface, or of a node in `other_contact_nodes`
+/// (node indices, e.g. those of mortar pairs). Pairs without multipliers
+/// (soft laws, penalty) add nothing.
+std::vector<DualNodeEquations> contact_dual_equations(const std::vector<std::unique_ptr<ContactPair>>& pairs,
+                                                      const DofMap& dofs, const EquationMap& equations,
+                                                      const std::vector<int>& other_contact_nodes);
 
 }  // namespace tether

@@ -81,8 +81,9 @@ std::string dense_system(const CondensationStatistics& c) {
   char rcond[32];
   std::snprintf(rcond, sizeof rcond, "%.1e", c.smallest_dense_rcond);
   return "; dense system " + std::to_string(c.dense_equations) + " equations" +
-         (c.dual_eliminations > 0 ? " after the dual elimination of the mortar multipliers (" +
-                                        std::to_string(c.dual_eliminations) + " factorizations)"
+         (c.dual_eliminations > 0 ? " after the dual elimination of the contact multipliers (" +
+                                        std::to_string(c.dual_eliminations) + " factorizations, " +
+                                        std::to_string(c.dual_closed) + " closed in the last)"
                                   : "") +
          ", " + (c.dense_cholesky ? "Cholesky" : "LU") + ", reciprocal condition >= " + rcond;
 }

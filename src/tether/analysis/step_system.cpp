@@ -222,8 +222,20 @@ void StepSystem::make_solver(std::vector<int> interface) {
   }
   if (interface.empty()) return;
   auto c = std::make_unique<CondensedSolver>(std::move(interface), std::move(solver_), settings_.memory_budget_mb);
-  if (settings_.mortar_condensation == MortarCondensation::Dense && !mortar.empty())
-    c->eliminate_dual_multipliers(mortar_dual_equations(mortar, discretization_.dofs(), equations()));
+  if (settings_.mortar_condensation == MortarCondensation::Dense) {
+    // The closed normal multipliers of mortar and node-to-segment slave nodes
+    // alike, each with a displacement of its own node; an NTS node that also
+    // belongs to a mortar pair stays out (contact_dual_equations).
+    std::vector<DualNodeEquations> nodes = mortar_dual_equations(mortar, discretization_.dofs(), equations());
+    std::vector<int> mortar_nodes;
+    for (const auto& pair : mortar)
+      for (const auto* faces : {&pair->setup().slave_faces, &pair->setup().master_faces})
+        for (const auto& face : *faces) mortar_nodes.insert(mortar_nodes.end(), face.begin(), face.end());
+    const std::vector<DualNodeEquations> nts =
+        contact_dual_equations(discretization_.contact_pairs(), discretization_.dofs(), equations(), mortar_nodes);
+    nodes.insert(nodes.end(), nts.begin(), nts.end());
+    if (!nodes.empty()) c->eliminate_dual_multipliers(std::move(nodes));
+  }
   condensed_ = c.get();
   solver_ = std::move(c);
 }

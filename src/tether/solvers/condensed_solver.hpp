@@ -21,13 +21,16 @@
 /// decides and names the singular equation as it would have without
 /// condensation.
 ///
-/// With mortar pairs (eliminate_dual_multipliers()), the dense interface
-/// system is not factorized as it is: its closed dual multipliers are
-/// eliminated exactly with their pivot displacements and the open ones
-/// solved apart (DenseDualCondensation), and the remaining system — the
-/// interface displacements only, for frictionless HARD contact —
-/// factorized by Cholesky (LU with friction or soft laws). The bulk
-/// factorization is the same; the answer is the same to round-off.
+/// With mortar pairs or node-to-segment pairs with a HARD law
+/// (eliminate_dual_multipliers()), the dense interface system is not
+/// factorized as it is: its closed normal multipliers (dual mortar, or
+/// node-to-segment: a closed row of slave node s holds ∂g/∂u_s = n, a unit
+/// vector) are eliminated exactly with a pivot displacement of their own
+/// node and the open ones solved apart (DenseDualCondensation), and the
+/// remaining system — the interface displacements only, for frictionless
+/// HARD contact — factorized by Cholesky (LU with friction or regularised
+/// rows). The bulk factorization is the same; the answer is the same to
+/// round-off (one step of iterative refinement on the dense system).
 
 #include <memory>
 #include <vector>
@@ -78,11 +81,13 @@ class CondensedSolver final : public LinearSolver {
   /// The next factorize() takes the entries outside the interface as those of
   /// the previous call without comparing them (statistics().promised).
   void note_outer_unchanged() override { outer_unchanged_ = true; }
-  /// The mortar slave nodes' equations (mortar_dual_equations): from the
-  /// next factorize() on, their multipliers are eliminated from the dense
-  /// interface system (DenseDualCondensation); where that elimination finds
-  /// its block singular, the dense system is factorized as it is. Every
-  /// equation named must be in the interface.
+  /// The slave nodes' equations (mortar_dual_equations,
+  /// contact_dual_equations: one normal multiplier per node, no node twice):
+  /// from the next factorize() on, their multipliers are eliminated from the
+  /// dense interface system (DenseDualCondensation); where that elimination
+  /// finds its block singular, the dense system is factorized as it is.
+  /// Every equation named must be in the interface, else nothing is
+  /// eliminated.
   void eliminate_dual_multipliers(std::vector<DualNodeEquations> nodes) { dual_nodes_ = std::move(nodes); }
   /// One forward and one backward sweep over the bulk factors and the dense
   /// interface solve. When every entry of b outside the interface (b_R) is at
@@ -133,7 +138,7 @@ class CondensedSolver final : public LinearSolver {
   bool system_symmetric_ = false;  ///< the last factorize() was of a matrix declared symmetric
   double bulk_scale_ = 0;         ///< largest |b_i| outside the interface in the solves since the bulk factorization
   // Dense interface system (A_II + C), equilibrated and factorized by LAPACK
-  // (DenseFactor), or, with mortar pairs, D (A_II + C) D condensed by the dual elimination.
+  // (DenseFactor), or, with dual nodes, D (A_II + C) D condensed by the dual elimination.
   DenseFactor interface_factor_;
   std::vector<DualNodeEquations> dual_nodes_;
   DenseDualCondensation dual_;

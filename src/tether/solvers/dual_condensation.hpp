@@ -44,28 +44,34 @@ namespace tether {
 
 /// How the linear solver treats the multipliers of mortar pairs
 /// (`tether run --mortar-condensation`; docs/theory/mortar.md,
-/// "Condensation of the multipliers"). Every choice gives the answer of the
-/// full system to round-off.
+/// "Condensation of the multipliers") and, in the dense interface system of
+/// CondensedSolver, the normal multipliers of node-to-segment HARD pairs.
+/// Every choice gives the answer of the full system to round-off.
 enum class MortarCondensation {
   /// Where the solver condenses onto the contact equations (CondensedSolver),
-  /// the multipliers are eliminated from its dense interface system and the
-  /// rest factorized by Cholesky when it can be; elsewhere they stay in the matrix.
+  /// the mortar and node-to-segment normal multipliers are eliminated from
+  /// its dense interface system and the rest factorized by Cholesky when it
+  /// can be; elsewhere they stay in the matrix.
   Dense,
   /// The multipliers stay in the dense interface system (or the matrix),
   /// factorized by LU.
   Kept,
-  /// The multipliers are eliminated from the whole sparse matrix
+  /// The mortar multipliers are eliminated from the whole sparse matrix
   /// (DualCondensedSolver), whose condensed matrix the inner solver
-  /// factorizes at every iteration (no condensation onto the contact equations).
+  /// factorizes at every iteration (no condensation onto the contact
+  /// equations). Without mortar pairs, as Kept.
   Sparse,
 };
 
 /// "dense", "kept", "sparse" (any case); throws std::invalid_argument otherwise.
 [[nodiscard]] MortarCondensation parse_mortar_condensation(const std::string& name);
 
-/// The reduced equations of one mortar slave node: its normal multiplier and
-/// its two displacement components (-1 where the dof is not a free equation
-/// of weight 1, e.g. prescribed or eliminated by *EQUATION: never a pivot).
+/// The reduced equations of one slave node whose closed normal multiplier
+/// row couples to its own displacement by a diagonal weight (dual mortar:
+/// -D_j n_j) or a unit vector (node-to-segment: n): its normal multiplier
+/// and its two displacement components (-1 where the dof is not a free
+/// equation of weight 1, e.g. prescribed or eliminated by *EQUATION: never
+/// a pivot).
 struct DualNodeEquations {
   int multiplier = -1;
   std::array<int, 2> displacement{-1, -1};
@@ -86,7 +92,7 @@ struct DualElimination {
   int diagonal = 0;  ///< nodes eliminated alone (apart, or in B with their diagonal)
 };
 
-/// Classifies the mortar multiplier rows of `a` (every nonzero entry read;
+/// Classifies the multiplier rows of `nodes` in `a` (every nonzero entry read;
 /// explicit zeros, such as a reserved block's, count as absent) and pairs
 /// each closed multiplier (a row with no diagonal) with its pivot: the
 /// displacement equation of its own node with the largest |a_jk|, not yet
