@@ -256,26 +256,51 @@ void Assembler::mark_direct() {
         std::upper_bound(tangent_.outerIndexPtr(), tangent_.outerIndexPtr() + tangent_.cols() + 1, p) -
         tangent_.outerIndexPtr() - 1)] = 1;
   direct_.assign(contributions_.size(), 0);
+  timed_flag_.assign(contributions_.size(), 0);
+  timed_.clear();
   for (std::size_t c = 0; c < contributions_.size(); ++c) {
     bool direct = !linear_[c] || mixed_[c];
     for (int d : contributions_[c]->dofs()) direct = direct || equations_.equation(d) < 0;
     direct_[c] = direct;
+    if (!direct && contributions_[c]->residual_depends_on_time())
+      timed_flag_[c] = 1, timed_.push_back(static_cast<int>(c));
   }
 }
 
 void Assembler::enable_residual_updates(bool on) {
   updates_enabled_ = on;
-  reference_valid_ = false;
-  if (!on) Eigen::VectorXd().swap(reference_u_), Eigen::VectorXd().swap(reference_residual_);
+  if (on) timed_stale_ = true;  // the loads or the contributions' state may have changed
 }
 
 bool Assembler::reference_serves(const EvaluationState& state) const {
   if (!reference_valid_ || reference_generation_ != hold_generation_ || !linear_held(state) || nonlinear_moved_ ||
-      state.u.size() != reference_u_.size() || state.step_time != reference_time_[0] ||
-      state.total_time != reference_time_[1] || state.dt != reference_time_[2])
+      state.u.size() != reference_u_.size())
     return false;
-  for (int d = 0; d < equations_.n_dofs(); ++d)  // the prescribed values of the reference
-    if (equations_.equation(d) < 0 && state.u[d] != reference_u_[d]) return false;
+  // No prescribed dof is in L: other prescribed values than u_ref's change
+  // only the residuals of the direct contributions, which are evaluated.
+  return true;
+}
+
+bool Assembler::refresh_timed(const EvaluationState& state) {
+  const EvaluationState at_reference{reference_u_, state.u_start, state.step_time, state.total_time, state.dt,
+                                     state.nlgeom};
+  if (!timed_.empty()) reference_timed_.setZero(equations_.n_dofs());
+  LocalSystem local;
+  try {
+    for (int c : timed_) {
+      if (direct_[static_cast<std::size_t>(c)]) continue;  // left L in a relocation
+      const auto dofs = contributions_[static_cast<std::size_t>(c)]->dofs();
+      local.reset(static_cast<Eigen::Index>(dofs.size()));
+      contributions_[static_cast<std::size_t>(c)]->evaluate(at_reference, local, false);
+      for (std::size_t a = 0; a < dofs.size(); ++a)
+        reference_timed_[dofs[a]] += local.residual[static_cast<Eigen::Index>(a)];
+    }
+  } catch (...) {
+    reference_valid_ = false;  // this assembly records a new reference
+    return false;
+  }
+  reference_time_ = {state.step_time, state.total_time, state.dt};
+  timed_stale_ = false;
   return true;
 }
 
@@ -288,6 +313,10 @@ void Assembler::carry_reference(const EvaluationState& state, const std::vector<
   try {
     for (std::size_t c = 0; c < contributions_.size(); ++c) {
       if (before[c] || !direct_[c]) continue;
+      if (timed_flag_[c]) {  // r_T(u_ref) is evaluated anew without it
+        timed_stale_ = true;
+        continue;
+      }
       const auto dofs = contributions_[c]->dofs();
       local.reset(static_cast<Eigen::Index>(dofs.size()));
       contributions_[c]->evaluate(at_reference, local, false);
@@ -303,6 +332,7 @@ void Assembler::carry_reference(const EvaluationState& state, const std::vector<
 
 void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd& residual) const {
   residual += reference_residual_;
+  if (reference_timed_.size() > 0) residual += reference_timed_;
   const int* outer = tangent_.outerIndexPtr();
   const int* inner = tangent_.innerIndexPtr();
   const double* value = tangent_.valuePtr();
@@ -361,12 +391,19 @@ bool Assembler::prepare_updates(const EvaluationState& state, bool held, bool& r
   }
   const bool can_update = updates_enabled_ && held_ && !nonlinear_moved_ && linear_held(state) &&
                           !equations_.has_dependents();
-  const bool update = can_update && reference_serves(state);
+  bool update = can_update && reference_serves(state);
+  const std::array<double, 3> time{state.step_time, state.total_time, state.dt};
+  if (update && (timed_stale_ || time != reference_time_)) update = refresh_timed(state);
   record = can_update && !update;
   if (record) {
-    reference_time_ = {state.step_time, state.total_time, state.dt};
+    reference_time_ = time;
+    timed_stale_ = false;
     reference_u_ = state.u;
     reference_residual_.setZero(equations_.n_dofs());
+    if (timed_.empty())
+      Eigen::VectorXd().swap(reference_timed_);
+    else
+      reference_timed_.setZero(equations_.n_dofs());
   }
   return update;
 }
@@ -414,8 +451,10 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
       return;
     }
     for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
-    if (record && !direct_[static_cast<std::size_t>(c)])
-      for (Eigen::Index a = 0; a < m; ++a) reference_residual_[dofs[a]] += local.residual[a];
+    if (record && !direct_[static_cast<std::size_t>(c)]) {
+      Eigen::VectorXd& part = timed_flag_[static_cast<std::size_t>(c)] ? reference_timed_ : reference_residual_;
+      for (Eigen::Index a = 0; a < m; ++a) part[dofs[a]] += local.residual[a];
+    }
     const double* ke = local.tangent.data();  // column-major, like the positions
     if (subtract)
       for_each_entry(c, [&](int p, Eigen::Index e, double) {
