@@ -368,15 +368,23 @@ void Assembler::add_symmetric_update(const EvaluationState& state, Eigen::Vector
     const int dof = equations_.dof(j);
     du[j] = state.u[dof] - reference_u_[dof];
   }
+  // Row j's sum is kept in a register while column j is read (the rows i
+  // of its other entries are all > j): the same additions in the same order.
   for (int j = 0; j < n; ++j) {
     const double dj = du[j];
     const bool check = nonlinear_column_[static_cast<std::size_t>(j)] != 0;
+    double row_j = product[j];
     for (int p = outer[j]; p < outer[j + 1]; ++p) {
       if (check && nonlinear_entry_[static_cast<std::size_t>(p)]) continue;
       const int i = inner[p];
+      if (i == j) {
+        row_j += value[p] * dj;
+        continue;
+      }
       product[i] += value[p] * dj;
-      if (i != j) product[j] += value[p] * du[i];
+      row_j += value[p] * du[i];
     }
+    product[j] = row_j;
   }
   for (int i = 0; i < n; ++i) residual[equations_.dof(i)] += product[i];
 }
