@@ -34,7 +34,11 @@ void Assembler::set_equations(EquationMap equations) {
 
 bool Assembler::update_connectivity(const EvaluationState& state) {
   bool changed = false;
-  for (Contribution* c : contributions_) changed = c->update_connectivity(state) || changed;
+  if (linear_.empty()) {
+    for (Contribution* c : contributions_) changed = c->update_connectivity(state) || changed;
+  } else {  // held linear contributions keep their dofs (Contribution::linear_in_u)
+    for (int c : connecting_) changed = contributions_[static_cast<std::size_t>(c)]->update_connectivity(state) || changed;
+  }
   if (!changed || relocate()) return false;
   build_pattern();
   return true;
@@ -56,6 +60,7 @@ std::span<const int> Assembler::placed_dofs(std::size_t c) const {
 bool Assembler::relocate() {
   std::vector<int> changed;
   for (std::size_t c = 0; c < contributions_.size(); ++c) {
+    if (!linear_.empty() && linear_[c]) continue;  // the same dofs all step
     const auto now = contributions_[c]->dofs();
     const auto before = placed_dofs(c);
     if (!std::equal(now.begin(), now.end(), before.begin(), before.end())) changed.push_back(static_cast<int>(c));
@@ -166,6 +171,9 @@ void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
   if (linear.size() != contributions_.size())
     throw std::invalid_argument("Assembler::set_linear: one flag per contribution expected");
   linear_ = std::move(linear);
+  connecting_.clear();
+  for (std::size_t c = 0; c < linear_.size(); ++c)
+    if (!linear_[c]) connecting_.push_back(static_cast<int>(c));
   keyed_on_dt_ = keyed_on_dt;
   any_nonlinear_ = std::find(linear_.begin(), linear_.end(), std::uint8_t{0}) != linear_.end();
   held_ = false;

@@ -65,7 +65,9 @@ class Assembler {
   /// Replaces the equation map (prescribed set changed between steps); rebuilds the pattern.
   void set_equations(EquationMap equations);
 
-  /// Asks every contribution whether its connectivity changed; places the
+  /// Asks every contribution (after set_linear(), every one not declared
+  /// linear: linear_in_u promises the same dofs all step) whether its
+  /// connectivity changed; places the
   /// changed ones in the existing pattern, or rebuilds it when an entry is
   /// missing. Returns true on a rebuild (the solver must re-analyse).
   bool update_connectivity(const EvaluationState& state);
@@ -265,6 +267,7 @@ class Assembler {
   AssemblyTiming timing_;
   // Held linear tangents (set_linear()).
   std::vector<std::uint8_t> linear_;    ///< per contribution; empty: nothing held
+  std::vector<int> connecting_;         ///< the contributions not linear_ (asked by update_connectivity())
   bool keyed_on_dt_ = false;
   bool held_ = false;                   ///< the values hold the linear tangents of the last full assembly
   bool nonlinear_moved_ = false;        ///< a relocation since hold_linear()

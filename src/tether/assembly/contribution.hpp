@@ -82,8 +82,8 @@ class Contribution {
   /// True (the default) when it may change or tether cannot vouch for it.
   [[nodiscard]] virtual bool residual_depends_on_time() const { return true; }
 
-  /// Called before each Newton iteration; may change dofs() (contact re-pairing).
-  /// Returns true when dofs() changed so the assembler rebuilds its pattern.
+  /// Called before each Newton iteration (not once held linear: Assembler::set_linear); may change
+  /// dofs() (contact re-pairing). Returns true when dofs() changed so the assembler rebuilds its pattern.
   virtual bool update_connectivity(const EvaluationState& /*state*/) { return false; }
 
   /// Called when Newton has converged; Iterate asks for another Newton pass
