@@ -280,6 +280,11 @@ void Assembler::enable_residual_updates(bool on) {
   if (on) timed_stale_ = true;  // the loads or the contributions' state may have changed
 }
 
+void Assembler::restart_point() {
+  reference_valid_ = false;
+  defer_record_ = true;
+}
+
 bool Assembler::reference_serves(const EvaluationState& state) const {
   if (!reference_valid_ || reference_generation_ != hold_generation_ || !linear_held(state) || nonlinear_moved_ ||
       state.u.size() != reference_u_.size())
@@ -411,6 +416,7 @@ bool Assembler::prepare_updates(const EvaluationState& state, bool held, bool& r
   const std::array<double, 3> time{state.step_time, state.total_time, state.dt};
   if (update && (timed_stale_ || time != reference_time_)) update = refresh_timed(state);
   record = can_update && !update;
+  if (updates_enabled_ && defer_record_) record = false, defer_record_ = false;  // as a resumed run
   if (record) {
     reference_time_ = time;
     timed_stale_ = false;

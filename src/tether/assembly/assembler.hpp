@@ -137,6 +137,13 @@ class Assembler {
   /// of L and their part out of the reference. Off: every assembly
   /// evaluates every contribution (the reference is kept for a later on).
   void enable_residual_updates(bool on);
+  /// A restart state has been saved after the last assembly. A run resumed
+  /// from it starts with a new assembler, whose first assembly evaluates
+  /// everything and whose second records the reference; this one does the
+  /// same from here (drops its reference, records none at the next
+  /// assembly with updates enabled), so that both runs take the same sums
+  /// and continue bit for bit alike.
+  void restart_point();
 
   /// The tangent over the free equations, owned by the assembler: its
   /// structure is the pattern (built by the constructor, set_equations() and
@@ -295,6 +302,7 @@ class Assembler {
   /// (Contribution::residual_depends_on_time), by mark_direct(); timed_flag_ per contribution.
   std::vector<int> timed_;
   std::vector<std::uint8_t> timed_flag_;
+  bool defer_record_ = false;  ///< restart_point(): the next assembly with updates enabled records nothing
   bool timed_stale_ = true;                 ///< enable_residual_updates(true) since the last refresh_timed()
   Eigen::VectorXd reference_u_;             ///< u_ref over all dofs
   std::array<double, 3> reference_time_{};  ///< step time, total time and dt of reference_timed_
