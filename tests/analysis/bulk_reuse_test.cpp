@@ -171,3 +171,32 @@ TEST(BulkReuse, LinearStaticStepFactorizesOnce) {
   EXPECT_EQ(held.summary.timing.factorizations, 1);
   EXPECT_EQ(held.summary.timing.reused_factorizations, 3);
 }
+
+TEST(BulkReuse, ReferenceServesTheStepUnderAmplitudesAndMovingSupports) {
+  // Four static increments of an elastic plate: a pressure on its right side
+  // under one amplitude (a face load, evaluated again at u_ref per
+  // increment), a prescribed displacement of its top right corner under
+  // another (the elements at it are evaluated at every residual). The bulk's
+  // elements are evaluated for the step's first two residuals only; all
+  // later ones, across the increments, come from the held tangent, and the
+  // answer is the element loop's to round-off.
+  const Block plate{0, 2, 0, 1, 8, 4, false, 1, 1, "PLATE"};
+  std::ostringstream d;
+  plate.write(d);
+  d << "*MATERIAL, NAME=M\n*ELASTIC\n1000, 0.3\n*SOLID SECTION, ELSET=PLATE, MATERIAL=M\n";
+  d << "*NSET, NSET=LEFT, GENERATE\n" << plate.grid(0, 0) << ", " << plate.grid(0, plate.ny) << ", " << plate.nx + 1
+    << "\n*ELSET, ELSET=RIGHT, GENERATE\n" << plate.element(plate.nx - 1, 0) << ", "
+    << plate.element(plate.nx - 1, plate.ny - 1) << ", " << plate.nx << "\n";
+  d << "*BOUNDARY\nLEFT, 1, 1\n" << plate.grid(0, 0) << ", 2, 2\n";
+  d << "*AMPLITUDE, NAME=A\n0., 0., 0.25, 1., 0.5, 1.5, 0.75, 3.\n1., 3.5\n";
+  d << "*AMPLITUDE, NAME=B\n0., 0., 0.25, -1., 0.5, 0.5, 0.75, 2.\n1., 1.\n";
+  d << "*STEP\n*STATIC, DIRECT\n0.25, 1\n*DLOAD, AMPLITUDE=A\nRIGHT, P2, 20.\n";
+  d << "*BOUNDARY, AMPLITUDE=B\n" << plate.grid(plate.nx, plate.ny) << ", 2, 2, 0.01\n*END STEP\n";
+  const DeckRun held = expect_same_as_fresh(d.str());
+  const SolveTiming& t = held.summary.timing;
+  EXPECT_EQ(held.summary.increments, 4);
+  EXPECT_EQ(t.full_tangents, 1);
+  // One residual per iteration and one more per increment's Newton solve.
+  const int residuals = held.summary.iterations + held.summary.increments;
+  EXPECT_EQ(t.residual_updates, residuals - 2);
+}

@@ -87,8 +87,12 @@ class DenseBlock final : public Contribution {
   std::string describe() const override { return "dense block"; }
   bool symmetric_tangent(bool) const override { return symmetric_; }
   bool linear_in_u(bool) const override { return true; }
+  bool residual_depends_on_time() const override { return timed; }
   const Eigen::MatrixXd& matrix() const { return k_; }
   mutable int evaluations = 0;  ///< evaluate() calls
+  /// What residual_depends_on_time() says: the default true, or false (also
+  /// right, K u reads no time) to have the assembler keep the residual for the step.
+  bool timed = true;
 
  private:
   std::vector<int> dofs_;
@@ -544,26 +548,31 @@ TEST(Assembler, ResidualUpdatesFromTheHeldTangentMatchAFullAssembly) {
   }
   EXPECT_EQ(held.linear_reuse().residual_updates, 3);
   EXPECT_EQ(far.evaluations - evaluations, 3) << "the fresh assembler's only";
-  // Other prescribed values: a new reference, not an update from the old one.
+  // Other prescribed values: no prescribed dof is in L (the quads at node 0
+  // are evaluated), so the reference serves on.
   u[1] = 0.4;
   expect_match(false, "moved support");
-  EXPECT_EQ(held.linear_reuse().residual_updates, 3);
-  u[5] -= 0.3;
-  expect_match(true, "update from the new reference");
   EXPECT_EQ(held.linear_reuse().residual_updates, 4);
-  // Another time (loads may differ there): evaluated in full, not updated.
+  u[5] -= 0.3;
+  expect_match(true, "update after the moved support");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 5);
+  // Another time: the quads (residual_depends_on_time by default) are
+  // evaluated at u_ref at that time, and the update goes on.
+  const int before_time = far.evaluations;
   held.assemble(EvaluationState{u, u, 0.5, 0.5}, r_held, false);
   fresh.assemble(EvaluationState{u, u, 0.5, 0.5}, r_fresh, false);
-  EXPECT_EQ(r_held, r_fresh);
-  EXPECT_EQ(held.linear_reuse().residual_updates, 4);
-  // Enabled anew (new loads): the next assembly is a reference again.
+  EXPECT_LE((r_held - r_fresh).cwiseAbs().maxCoeff(), 1e-13 * r_fresh.cwiseAbs().maxCoeff()) << "another time";
+  EXPECT_EQ(held.linear_reuse().residual_updates, 6);
+  EXPECT_EQ(far.evaluations - before_time, 2) << "the fresh assembler's and the reference's";
+  // Enabled anew (new loads): the time-dependent part is evaluated again.
   held.enable_residual_updates(true);
-  expect_match(false, "reference after enabling");
-  EXPECT_EQ(held.linear_reuse().residual_updates, 4);
+  expect_match(false, "update after enabling");
+  EXPECT_EQ(held.linear_reuse().residual_updates, 7);
+  EXPECT_EQ(far.evaluations - before_time, 4);
   held.enable_residual_updates(false);
   u[7] += 0.1;
   expect_match(false, "disabled");
-  EXPECT_EQ(held.linear_reuse().residual_updates, 4);
+  EXPECT_EQ(held.linear_reuse().residual_updates, 7);
 }
 
 TEST(Assembler, ResidualUpdatesFromALowerTriangleMatchAFullAssembly) {
@@ -645,4 +654,97 @@ TEST(Assembler, ResidualUpdatesCarryTheReferenceAcrossARelocation) {
   u[3] *= 1.5;
   expect_match(after, false, "update after the relocation, residual only");
   EXPECT_EQ(held.linear_reuse().residual_updates, 3);
+}
+
+namespace {
+
+/// A load like a pressure under an *AMPLITUDE: residual -a(t) p (1 + a/2)
+/// at local dof a, with a(t) = 1 + t^2 of the step time and a magnitude p
+/// set per increment (as FacePressure::set_pressure); no stiffness. Linear
+/// in u; its residual depends on time (the default).
+class AmplitudeLoad final : public Contribution {
+ public:
+  explicit AmplitudeLoad(std::vector<int> dofs) : dofs_(std::move(dofs)) {}
+  std::span<const int> dofs() const override { return dofs_; }
+  void evaluate(const EvaluationState& s, LocalSystem& out, bool) const override {
+    ++evaluations;
+    const double amplitude = 1 + s.step_time * s.step_time;
+    for (Eigen::Index a = 0; a < out.residual.size(); ++a)
+      out.residual[a] = -amplitude * magnitude * (1 + 0.5 * static_cast<double>(a));
+  }
+  std::string describe() const override { return "amplitude load"; }
+  bool symmetric_tangent(bool) const override { return true; }
+  bool linear_in_u(bool) const override { return true; }
+  double magnitude = 1;         ///< p [force]
+  mutable int evaluations = 0;  ///< evaluate() calls
+
+ private:
+  std::vector<int> dofs_;
+};
+
+}  // namespace
+
+TEST(Assembler, ResidualUpdatesKeepTheReferenceAcrossIncrements) {
+  // Four increments of a step as the procedures run them: each a Newton
+  // solve with residual updates enabled anew (then off), at a new time, with
+  // new prescribed values (node 0), a load under an amplitude whose
+  // magnitude is also set per increment, and an inertia-like contribution
+  // reading u_start and dt. The quads whose residual is K u alone are
+  // evaluated for the step's first two assemblies only (the full tangent,
+  // then the reference); the time-dependent members of L once per increment
+  // and per other time, at u_ref; every residual matches a fresh assembly
+  // to round-off, the reactions bit for bit.
+  Grid grid;
+  for (DenseBlock& q : grid.quads) q.timed = false;
+  DenseBlock& far = grid.quads[3];     // nodes 3, 4, 10, 9
+  DenseBlock& heated = grid.quads[11];  // nodes 13, 14, 20, 19: flagged as time-dependent
+  heated.timed = true;
+  CubicBlock across({2 * 8, 2 * 8 + 1, 2 * 15, 2 * 15 + 1}, 0.7);
+  AmplitudeLoad load({2 * 10, 2 * 10 + 1, 2 * 16 + 1});
+  InertiaLike mass({2 * 9, 2 * 9 + 1, 2 * 20}, 0.3);
+  std::vector<Contribution*> list;
+  for (auto& q : grid.quads) list.push_back(&q);
+  list.push_back(&across);
+  list.push_back(&load);
+  list.push_back(&mass);
+  Assembler held(list, Grid::equations()), fresh(list, Grid::equations());
+  held.set_linear(linear_flags(list), true);
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(Grid::n, 0.1, 1.3), r_held, r_fresh;
+  Eigen::VectorXd u_start = u;
+  int assemblies = 0;
+  const auto expect_match = [&](double t, double dt, bool with_tangent, const std::string& what) {
+    const EvaluationState state{u, u_start, t, t, dt};
+    held.assemble(state, r_held, with_tangent);
+    fresh.assemble(state, r_fresh, with_tangent);
+    ++assemblies;
+    EXPECT_LE((r_held - r_fresh).cwiseAbs().maxCoeff(), 1e-13 * r_fresh.cwiseAbs().maxCoeff()) << what;
+    EXPECT_EQ(r_held[0], r_fresh[0]) << what;
+    EXPECT_EQ(r_held[1], r_fresh[1]) << what;
+    if (with_tangent) EXPECT_TRUE(same_bits(held.tangent(), fresh.tangent())) << what;
+  };
+  const double dt = 0.25;
+  for (int increment = 1; increment <= 4; ++increment) {
+    const double t = dt * increment;
+    const std::string name = "increment " + std::to_string(increment);
+    load.magnitude = 1.0 + increment;
+    u[0] = 0.1 * increment, u[1] = -0.05 * increment;  // the prescribed displacement
+    held.enable_residual_updates(true);
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      u.tail(Grid::n - 2) += Eigen::VectorXd::LinSpaced(Grid::n - 2, 0.02 * iteration, -0.03 * increment);
+      expect_match(t, dt, iteration != 1, name + ", iteration " + std::to_string(iteration));
+    }
+    if (increment == 2) {  // in the middle of the increment (at the same dt), and back
+      expect_match(t - dt / 2, dt, false, name + ", half way");
+      expect_match(t, dt, false, name + ", back at its end");
+    }
+    held.enable_residual_updates(false);
+    u_start = u;
+  }
+  EXPECT_EQ(held.linear_reuse().full, 1);
+  EXPECT_EQ(held.linear_reuse().residual_updates, assemblies - 2);
+  // Once per assembly by the fresh assembler; twice by the held one.
+  EXPECT_EQ(far.evaluations, assemblies + 2);
+  // And at u_ref in increments 2 to 4 and at the two time changes in increment 2.
+  EXPECT_EQ(heated.evaluations, assemblies + 2 + 3 + 2);
+  EXPECT_EQ(load.evaluations, assemblies + 2 + 3 + 2);
 }

@@ -88,6 +88,14 @@ TEST(ContinuumElement, DeclaredSymmetryAndLinearityHoldOnTheTangent) {
         EXPECT_TRUE(e.symmetric_tangent(nlgeom)) << what;
         EXPECT_LT(max_abs(a.tangent - a.tangent.transpose()), 1e-10 * max_abs(a.tangent)) << what;
         EXPECT_EQ(e.linear_in_u(nlgeom), !nlgeom) << what;
+        // Elastic, no history, no temperatures: the residual reads no time
+        // (the assembler keeps it for the step); checked at other times and dt.
+        EXPECT_FALSE(e.residual_depends_on_time()) << what;
+        const Eigen::VectorXd u = random_vector(se.dofs.n_dofs(), 0.1, 4);
+        LocalSystem later;
+        later.reset(a.residual.size());
+        e.evaluate(EvaluationState{u, Eigen::VectorXd::Zero(u.size()), 7.5, 9.25, 0.125, nlgeom}, later, false);
+        EXPECT_EQ(later.residual, a.residual) << what;
         if (nlgeom)
           EXPECT_GT(max_abs(a.tangent - b.tangent), 1e-6 * max_abs(a.tangent)) << what;
         else

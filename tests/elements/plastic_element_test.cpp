@@ -54,6 +54,7 @@ TEST(PlasticElement, TangentMatchesFiniteDifferencesFromACommittedPlasticState) 
       PlasticElement pe(type, m);
       ContinuumElement& e = *pe.element;
       EXPECT_FALSE(e.linear_in_u(false));
+      EXPECT_TRUE(e.residual_depends_on_time());  // its history changes at commit()
       const Eigen::VectorXd u1 = stretch(e, 0.004, 1);
       e.commit({u1, u1, 1, 1, 1, false});
       double peeq = 0;

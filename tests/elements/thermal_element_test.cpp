@@ -43,6 +43,7 @@ TEST(ThermalElement, TangentMatchesFiniteDifferencesUnderATemperatureField) {
       std::iota(nodes.begin(), nodes.end(), 1);
       ContinuumElement e(3, type, nodes, distorted_element(type.shape), material, 0.5, dofs);
       e.set_temperatures(&field);
+      EXPECT_TRUE(e.residual_depends_on_time()) << e.describe();  // the thermal strain follows the temperatures
       const Eigen::VectorXd u = random_vector(dofs.n_dofs(), nlgeom ? 0.1 : 0.02, 5);
       const LocalSystem sys = evaluate_at(e, u, nlgeom);
       const Eigen::MatrixXd fd = fd_tangent(e, u, nlgeom, 1e-6);

@@ -234,6 +234,10 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     summary.iterations += outcome.iterations;
     if (outcome.converged) {
       if (!after_converged(index, attempt, outcome, summary, clock, *procedure, u_step_start)) return false;
+      // A restart state was saved: go on as a run resumed from it (bit for bit).
+      if (system.has_assembler() && !attempt.time.ends_step && step.restart_frequency > 0 &&
+          clock.increment() % step.restart_frequency == 0)
+        system.assembler().restart_point();
       continue;
     }
     ++summary.cutbacks;

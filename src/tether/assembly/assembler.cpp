@@ -34,7 +34,11 @@ void Assembler::set_equations(EquationMap equations) {
 
 bool Assembler::update_connectivity(const EvaluationState& state) {
   bool changed = false;
-  for (Contribution* c : contributions_) changed = c->update_connectivity(state) || changed;
+  if (linear_.empty()) {
+    for (Contribution* c : contributions_) changed = c->update_connectivity(state) || changed;
+  } else {  // held linear contributions keep their dofs (Contribution::linear_in_u)
+    for (int c : connecting_) changed = contributions_[static_cast<std::size_t>(c)]->update_connectivity(state) || changed;
+  }
   if (!changed || relocate()) return false;
   build_pattern();
   return true;
@@ -56,6 +60,7 @@ std::span<const int> Assembler::placed_dofs(std::size_t c) const {
 bool Assembler::relocate() {
   std::vector<int> changed;
   for (std::size_t c = 0; c < contributions_.size(); ++c) {
+    if (!linear_.empty() && linear_[c]) continue;  // the same dofs all step
     const auto now = contributions_[c]->dofs();
     const auto before = placed_dofs(c);
     if (!std::equal(now.begin(), now.end(), before.begin(), before.end())) changed.push_back(static_cast<int>(c));
@@ -166,6 +171,9 @@ void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
   if (linear.size() != contributions_.size())
     throw std::invalid_argument("Assembler::set_linear: one flag per contribution expected");
   linear_ = std::move(linear);
+  connecting_.clear();
+  for (std::size_t c = 0; c < linear_.size(); ++c)
+    if (!linear_[c]) connecting_.push_back(static_cast<int>(c));
   keyed_on_dt_ = keyed_on_dt;
   any_nonlinear_ = std::find(linear_.begin(), linear_.end(), std::uint8_t{0}) != linear_.end();
   held_ = false;
@@ -256,26 +264,56 @@ void Assembler::mark_direct() {
         std::upper_bound(tangent_.outerIndexPtr(), tangent_.outerIndexPtr() + tangent_.cols() + 1, p) -
         tangent_.outerIndexPtr() - 1)] = 1;
   direct_.assign(contributions_.size(), 0);
+  timed_flag_.assign(contributions_.size(), 0);
+  timed_.clear();
   for (std::size_t c = 0; c < contributions_.size(); ++c) {
     bool direct = !linear_[c] || mixed_[c];
     for (int d : contributions_[c]->dofs()) direct = direct || equations_.equation(d) < 0;
     direct_[c] = direct;
+    if (!direct && contributions_[c]->residual_depends_on_time())
+      timed_flag_[c] = 1, timed_.push_back(static_cast<int>(c));
   }
 }
 
 void Assembler::enable_residual_updates(bool on) {
   updates_enabled_ = on;
+  if (on) timed_stale_ = true;  // the loads or the contributions' state may have changed
+}
+
+void Assembler::restart_point() {
   reference_valid_ = false;
-  if (!on) Eigen::VectorXd().swap(reference_u_), Eigen::VectorXd().swap(reference_residual_);
+  defer_record_ = true;
 }
 
 bool Assembler::reference_serves(const EvaluationState& state) const {
   if (!reference_valid_ || reference_generation_ != hold_generation_ || !linear_held(state) || nonlinear_moved_ ||
-      state.u.size() != reference_u_.size() || state.step_time != reference_time_[0] ||
-      state.total_time != reference_time_[1] || state.dt != reference_time_[2])
+      state.u.size() != reference_u_.size())
     return false;
-  for (int d = 0; d < equations_.n_dofs(); ++d)  // the prescribed values of the reference
-    if (equations_.equation(d) < 0 && state.u[d] != reference_u_[d]) return false;
+  // No prescribed dof is in L: other prescribed values than u_ref's change
+  // only the residuals of the direct contributions, which are evaluated.
+  return true;
+}
+
+bool Assembler::refresh_timed(const EvaluationState& state) {
+  const EvaluationState at_reference{reference_u_, state.u_start, state.step_time, state.total_time, state.dt,
+                                     state.nlgeom};
+  if (!timed_.empty()) reference_timed_.setZero(equations_.n_dofs());
+  LocalSystem local;
+  try {
+    for (int c : timed_) {
+      if (direct_[static_cast<std::size_t>(c)]) continue;  // left L in a relocation
+      const auto dofs = contributions_[static_cast<std::size_t>(c)]->dofs();
+      local.reset(static_cast<Eigen::Index>(dofs.size()));
+      contributions_[static_cast<std::size_t>(c)]->evaluate(at_reference, local, false);
+      for (std::size_t a = 0; a < dofs.size(); ++a)
+        reference_timed_[dofs[a]] += local.residual[static_cast<Eigen::Index>(a)];
+    }
+  } catch (...) {
+    reference_valid_ = false;  // this assembly records a new reference
+    return false;
+  }
+  reference_time_ = {state.step_time, state.total_time, state.dt};
+  timed_stale_ = false;
   return true;
 }
 
@@ -288,6 +326,10 @@ void Assembler::carry_reference(const EvaluationState& state, const std::vector<
   try {
     for (std::size_t c = 0; c < contributions_.size(); ++c) {
       if (before[c] || !direct_[c]) continue;
+      if (timed_flag_[c]) {  // r_T(u_ref) is evaluated anew without it
+        timed_stale_ = true;
+        continue;
+      }
       const auto dofs = contributions_[c]->dofs();
       local.reset(static_cast<Eigen::Index>(dofs.size()));
       contributions_[c]->evaluate(at_reference, local, false);
@@ -303,6 +345,7 @@ void Assembler::carry_reference(const EvaluationState& state, const std::vector<
 
 void Assembler::add_linear_update(const EvaluationState& state, Eigen::VectorXd& residual) const {
   residual += reference_residual_;
+  if (reference_timed_.size() > 0) residual += reference_timed_;
   const int* outer = tangent_.outerIndexPtr();
   const int* inner = tangent_.innerIndexPtr();
   const double* value = tangent_.valuePtr();
@@ -338,15 +381,23 @@ void Assembler::add_symmetric_update(const EvaluationState& state, Eigen::Vector
     const int dof = equations_.dof(j);
     du[j] = state.u[dof] - reference_u_[dof];
   }
+  // Row j's sum is kept in a register while column j is read (the rows i
+  // of its other entries are all > j): the same additions in the same order.
   for (int j = 0; j < n; ++j) {
     const double dj = du[j];
     const bool check = nonlinear_column_[static_cast<std::size_t>(j)] != 0;
+    double row_j = product[j];
     for (int p = outer[j]; p < outer[j + 1]; ++p) {
       if (check && nonlinear_entry_[static_cast<std::size_t>(p)]) continue;
       const int i = inner[p];
+      if (i == j) {
+        row_j += value[p] * dj;
+        continue;
+      }
       product[i] += value[p] * dj;
-      if (i != j) product[j] += value[p] * du[i];
+      row_j += value[p] * du[i];
     }
+    product[j] = row_j;
   }
   for (int i = 0; i < n; ++i) residual[equations_.dof(i)] += product[i];
 }
@@ -361,12 +412,20 @@ bool Assembler::prepare_updates(const EvaluationState& state, bool held, bool& r
   }
   const bool can_update = updates_enabled_ && held_ && !nonlinear_moved_ && linear_held(state) &&
                           !equations_.has_dependents();
-  const bool update = can_update && reference_serves(state);
+  bool update = can_update && reference_serves(state);
+  const std::array<double, 3> time{state.step_time, state.total_time, state.dt};
+  if (update && (timed_stale_ || time != reference_time_)) update = refresh_timed(state);
   record = can_update && !update;
+  if (updates_enabled_ && defer_record_) record = false, defer_record_ = false;  // as a resumed run
   if (record) {
-    reference_time_ = {state.step_time, state.total_time, state.dt};
+    reference_time_ = time;
+    timed_stale_ = false;
     reference_u_ = state.u;
     reference_residual_.setZero(equations_.n_dofs());
+    if (timed_.empty())
+      Eigen::VectorXd().swap(reference_timed_);
+    else
+      reference_timed_.setZero(equations_.n_dofs());
   }
   return update;
 }
@@ -414,8 +473,10 @@ void Assembler::assemble(const EvaluationState& state, Eigen::VectorXd& residual
       return;
     }
     for (Eigen::Index a = 0; a < m; ++a) residual[dofs[a]] += local.residual[a];
-    if (record && !direct_[static_cast<std::size_t>(c)])
-      for (Eigen::Index a = 0; a < m; ++a) reference_residual_[dofs[a]] += local.residual[a];
+    if (record && !direct_[static_cast<std::size_t>(c)]) {
+      Eigen::VectorXd& part = timed_flag_[static_cast<std::size_t>(c)] ? reference_timed_ : reference_residual_;
+      for (Eigen::Index a = 0; a < m; ++a) part[dofs[a]] += local.residual[a];
+    }
     const double* ke = local.tangent.data();  // column-major, like the positions
     if (subtract)
       for_each_entry(c, [&](int p, Eigen::Index e, double) {

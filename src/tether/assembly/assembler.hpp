@@ -65,7 +65,9 @@ class Assembler {
   /// Replaces the equation map (prescribed set changed between steps); rebuilds the pattern.
   void set_equations(EquationMap equations);
 
-  /// Asks every contribution whether its connectivity changed; places the
+  /// Asks every contribution (after set_linear(), every one not declared
+  /// linear: linear_in_u promises the same dofs all step) whether its
+  /// connectivity changed; places the
   /// changed ones in the existing pattern, or rebuilds it when an entry is
   /// missing. Returns true on a rebuild (the solver must re-analyse).
   bool update_connectivity(const EvaluationState& state);
@@ -117,17 +119,31 @@ class Assembler {
   /// the other linear contributions): a sparse product instead of element
   /// loops. Exact for affine contributions up to round-off (not bit for bit:
   /// the sums are taken in another order); the rows of prescribed dofs
-  /// (reactions) are bit for bit those of a full assembly. The caller must
-  /// enable it anew (dropping the reference) whenever anything but u
-  /// changes the linear contributions' residuals: loads, time, their
-  /// internal state (Contribution::on_converged). A reference at other
-  /// prescribed values, another time or dt (an evaluation in the middle of
-  /// the increment) or after a pattern change does not serve: the assembly
-  /// evaluates everything and records a new one; a relocation (re-pairing
-  /// inside the reserved block) moves the linear contributions that touch
-  /// its new entries out of L and their part out of the reference. Off:
-  /// every assembly evaluates every contribution.
+  /// (reactions) are bit for bit those of a full assembly.
+  /// The reference lasts for the step, across increments and Newton
+  /// solves: r_L(u_ref) is kept in two parts. That of the contributions
+  /// whose residual is a function of u alone
+  /// (Contribution::residual_depends_on_time() false: small-strain elastic
+  /// elements) is recorded once; that of the others in L (loads, inertia,
+  /// constraints with Uzawa multipliers) is evaluated again at u_ref (only
+  /// they) whenever the time, total time or dt differs from the last
+  /// assembly's and at every enable_residual_updates(true) (new loads,
+  /// state stored by on_converged() or commit()). L holds no prescribed
+  /// dof, so changed prescribed values need nothing (their K_fp (u_p -
+  /// u_p,ref) is in the direct contributions' evaluated residual). A new
+  /// reference is recorded after a pattern change or a full tangent
+  /// assembly (held_ anew); a relocation (re-pairing inside the reserved
+  /// block) moves the linear contributions that touch its new entries out
+  /// of L and their part out of the reference. Off: every assembly
+  /// evaluates every contribution (the reference is kept for a later on).
   void enable_residual_updates(bool on);
+  /// A restart state has been saved after the last assembly. A run resumed
+  /// from it starts with a new assembler, whose first assembly evaluates
+  /// everything and whose second records the reference; this one does the
+  /// same from here (drops its reference, records none at the next
+  /// assembly with updates enabled), so that both runs take the same sums
+  /// and continue bit for bit alike.
+  void restart_point();
 
   /// The tangent over the free equations, owned by the assembler: its
   /// structure is the pattern (built by the constructor, set_equations() and
@@ -199,8 +215,13 @@ class Assembler {
   /// carrying the reference), and returns true when the assembly updates the
   /// residual from the reference; `record`: it records a new one instead.
   bool prepare_updates(const EvaluationState& state, bool held, bool& record);
-  /// True when the reference of enable_residual_updates() serves `state`.
+  /// True when the reference of enable_residual_updates() serves `state`
+  /// (its time-dependent part perhaps after refresh_timed()).
   [[nodiscard]] bool reference_serves(const EvaluationState& state) const;
+  /// Evaluates the time-dependent part of the reference, r_T(u_ref), anew
+  /// at the times and dt of `state` (the contributions of timed_ still in
+  /// L). False, and the reference dropped, when an evaluation throws.
+  bool refresh_timed(const EvaluationState& state);
   /// Adds r_L(u_ref) + K_L (u - u_ref) with K_L from the held values (all of
   /// it but the nonlinear entries; the other linear contributions are
   /// subtracted as they are evaluated) to `residual`.
@@ -253,6 +274,7 @@ class Assembler {
   AssemblyTiming timing_;
   // Held linear tangents (set_linear()).
   std::vector<std::uint8_t> linear_;    ///< per contribution; empty: nothing held
+  std::vector<int> connecting_;         ///< the contributions not linear_ (asked by update_connectivity())
   bool keyed_on_dt_ = false;
   bool held_ = false;                   ///< the values hold the linear tangents of the last full assembly
   bool nonlinear_moved_ = false;        ///< a relocation since hold_linear()
@@ -276,9 +298,16 @@ class Assembler {
   std::uint64_t reference_generation_ = 0;  ///< hold_generation_ when the reference was recorded
   std::vector<std::uint8_t> direct_;        ///< per contribution: not in L (evaluated at every update)
   std::vector<std::uint8_t> nonlinear_column_;  ///< per equation: its column holds a nonlinear entry
+  /// Contributions of L whose residual depends on more than u
+  /// (Contribution::residual_depends_on_time), by mark_direct(); timed_flag_ per contribution.
+  std::vector<int> timed_;
+  std::vector<std::uint8_t> timed_flag_;
+  bool defer_record_ = false;  ///< restart_point(): the next assembly with updates enabled records nothing
+  bool timed_stale_ = true;                 ///< enable_residual_updates(true) since the last refresh_timed()
   Eigen::VectorXd reference_u_;             ///< u_ref over all dofs
-  std::array<double, 3> reference_time_{};  ///< step time, total time and dt of the reference state
-  Eigen::VectorXd reference_residual_;      ///< r_L(u_ref) over all dofs
+  std::array<double, 3> reference_time_{};  ///< step time, total time and dt of reference_timed_
+  Eigen::VectorXd reference_residual_;      ///< r_L(u_ref) of L minus timed_, over all dofs
+  Eigen::VectorXd reference_timed_;         ///< r_T(u_ref) of timed_ at reference_time_ (empty: none)
 };
 
 }  // namespace tether

@@ -72,8 +72,18 @@ class Contribution {
   /// update). Such contributions need to be assembled and factorized only once per step.
   [[nodiscard]] virtual bool linear_in_u(bool nlgeom) const = 0;
 
-  /// Called before each Newton iteration; may change dofs() (contact re-pairing).
-  /// Returns true when dofs() changed so the assembler rebuilds its pattern.
+  /// False only when, within one step, the residual at a given u is always
+  /// the same vector: evaluate() reads nothing of `state` but u (and nlgeom)
+  /// — not the times, dt or u_start — and nothing that changes between its
+  /// evaluations (a magnitude set per increment, an amplitude, temperatures,
+  /// history or multipliers stored by on_converged() or commit(), user code).
+  /// The assembler then keeps the residual of a linear contribution recorded
+  /// at one state for the rest of the step (Assembler::enable_residual_updates).
+  /// True (the default) when it may change or tether cannot vouch for it.
+  [[nodiscard]] virtual bool residual_depends_on_time() const { return true; }
+
+  /// Called before each Newton iteration (not once held linear: Assembler::set_linear); may change
+  /// dofs() (contact re-pairing). Returns true when dofs() changed so the assembler rebuilds its pattern.
   virtual bool update_connectivity(const EvaluationState& /*state*/) { return false; }
 
   /// Called when Newton has converged; Iterate asks for another Newton pass

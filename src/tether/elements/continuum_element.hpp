@@ -66,6 +66,12 @@ class ContinuumElement final : public Contribution {
   [[nodiscard]] bool linear_in_u(bool nlgeom) const override {
     return !nlgeom && material_->linear_small_strain();
   }
+  /// False for an elastic material (linear_small_strain: its stress reads no
+  /// time) without history and without temperatures: the residual is then a
+  /// function of u alone. True with a temperature field (thermal strain).
+  [[nodiscard]] bool residual_depends_on_time() const override {
+    return temperatures_ != nullptr || has_history() || !material_->linear_small_strain();
+  }
 
   /// Material history. Each integration point owns a committed record
   /// (stress, strain, elastic energy, accumulated dissipation and the
