@@ -235,8 +235,7 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
     if (outcome.converged) {
       if (!after_converged(index, attempt, outcome, summary, clock, *procedure, u_step_start)) return false;
       // A restart state was saved: go on as a run resumed from it (bit for bit).
-      if (system.has_assembler() && !attempt.time.ends_step && step.restart_frequency > 0 &&
-          clock.increment() % step.restart_frequency == 0)
+      if (system.has_assembler() && !attempt.time.ends_step && restart_due(step, clock))
         system.assembler().restart_point();
       continue;
     }
@@ -253,6 +252,10 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   return true;
 }
 
+bool StaticAnalysis::restart_due(const Step& step, const IncrementController& clock) {
+  return step.restart_frequency > 0 && clock.increment() % step.restart_frequency == 0;
+}
+
 bool StaticAnalysis::after_converged(int index, const IncrementAttempt& attempt, const IncrementOutcome& outcome,
                                      AnalysisSummary& summary, IncrementController& clock, const Procedure& procedure,
                                      const Eigen::VectorXd& u_step_start) {
@@ -262,7 +265,7 @@ bool StaticAnalysis::after_converged(int index, const IncrementAttempt& attempt,
   ++run_increments_;
   if (attempt.time.ends_step) return true;  // the end of the step is saved after the step
   const Step& step = model_.steps[index];
-  if (step.restart_frequency > 0 && clock.increment() % step.restart_frequency == 0)
+  if (restart_due(step, clock))
     observer_.on_restart_state(restart_state(index, false, summary, clock, procedure, u_step_start));
   if (options_.stop_after_increments > 0 && run_increments_ >= options_.stop_after_increments) {
     summary.message = "stopped after " + std::to_string(run_increments_) + " increment(s) as requested";

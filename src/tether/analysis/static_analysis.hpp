@@ -100,6 +100,9 @@ class StaticAnalysis {
  private:
   /// Runs step `index` (0-based); false when the analysis stops there (summary.message says why).
   bool run_step(int index, AnalysisSummary& summary);
+  /// True when a converged increment (not the step's last) writes a restart
+  /// state: every restart_frequency-th increment of the step.
+  static bool restart_due(const Step& step, const IncrementController& clock);
   /// After a converged increment: the counters, a restart point, a requested
   /// stop (false).
   bool after_converged(int index, const IncrementAttempt& attempt, const IncrementOutcome& outcome,
