@@ -325,7 +325,8 @@ struct LinearMasterProjection {
   std::optional<Dual2> operator()(double s) const {
     // The values of x_c + s x_h and n_c + s n_h as Vec2T<Dual2> has them.
     const Vec2T<double> p{xc_v.x + s * xh_v.x, xc_v.y + s * xh_v.y}, d{nc_v.x + s * nh_v.x, nc_v.y + s * nh_v.y};
-    const std::optional<double> eta = scalar_root<Dual2>(0.0, 3.0, MasterRay<double>(p, d, y_v), master_polish_steps(2));
+    const std::optional<double> eta =
+        scalar_root<Dual2>(0.0, 3.0, MasterRay<double>(p, d, y_v), master_polish_steps(2));
     if (!eta) return std::nullopt;
     Dual2 g = g0;
     g += s * g1;
