@@ -295,6 +295,49 @@ void integrate_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::array<std:
   }
 }
 
+/// The projections η(s) of x(s) = x_c + s x_h along n(s) = n_c + s n_h onto
+/// a 2-node master segment y (y(η) = y_c + η y_d), for any s: the equation
+///   f(η; s) = (y(η) - x(s)) × n(s) = F(s) + η G(s),
+///   F(s) = r × n_c + s (r × n_h - x_h × n_c) - s² x_h × n_h  (r = y_c - x_c),
+///   G(s) = y_d × n_c + s y_d × n_h,
+/// with its five coefficients built once per overlap. η's value comes from
+/// the same double Newton iteration as project_onto_master (the same bits,
+/// the same points skipped); its derivatives from Dual2::implicit_root with
+/// F + η G and G at the point (f'' = 0 on a straight master), instead of a
+/// MasterRay<Dual2> built and evaluated at every Gauss point.
+struct LinearMasterProjection {
+  Vec2T<double> xc_v, xh_v, nc_v, nh_v;
+  std::vector<Vec2T<double>> y_v;
+  Dual2 f0, f1, f2, g0, g1;
+  LinearMasterProjection(const Vec2T<Dual2>& xc, const Vec2T<Dual2>& xh, const Vec2T<Dual2>& nc,
+                         const Vec2T<Dual2>& nh, std::span<const Vec2T<Dual2>> y)
+      : xc_v(values(xc)), xh_v(values(xh)), nc_v(values(nc)), nh_v(values(nh)), y_v(values(y)) {
+    const Vec2T<Dual2> yc{0.5 * (y[0].x + y[1].x), 0.5 * (y[0].y + y[1].y)};
+    const Vec2T<Dual2> yd{0.5 * (y[1].x - y[0].x), 0.5 * (y[1].y - y[0].y)};
+    const Vec2T<Dual2> r = yc - xc;
+    f0 = cross(r, nc);
+    f1 = cross(r, nh) - cross(xh, nc);
+    f2 = -cross(xh, nh);
+    g0 = cross(yd, nc);
+    g1 = cross(yd, nh);
+  }
+  /// η at x(s) along n(s), or none where project_onto_master has none.
+  std::optional<Dual2> operator()(double s) const {
+    // The values of x_c + s x_h and n_c + s n_h as Vec2T<Dual2> has them.
+    const Vec2T<double> p{xc_v.x + s * xh_v.x, xc_v.y + s * xh_v.y}, d{nc_v.x + s * nh_v.x, nc_v.y + s * nh_v.y};
+    const std::optional<double> eta =
+        scalar_root<Dual2>(0.0, 3.0, MasterRay<double>(p, d, y_v), master_polish_steps(2));
+    if (!eta) return std::nullopt;
+    Dual2 g = g0;
+    g += s * g1;
+    Dual2 f = f0;
+    f += s * f1;
+    f += (s * s) * f2;
+    f += *eta * g;
+    return Dual2::implicit_root(*eta, f, g, 0.0);
+  }
+};
+
 /// integrate_overlap for a 2-node slave and a 2-node master segment, with
 /// the same Gauss points and projections but one accumulation per point.
 /// There the dual basis is affine, Φ_k = α_k + β_k ξ (α_k = (A_k0 + A_k1)/2,
@@ -318,12 +361,20 @@ void integrate_linear_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::arr
   const auto at = [](const Vec2T<T>& c, const Vec2T<T>& h, double s) { return Vec2T<T>{c.x + s * h.x, c.y + s * h.y}; };
   double sum_w = 0, sum_ws = 0;
   T sum_w_eta(0.0), sum_ws_eta(0.0);  // Σ w_q η_q, Σ w_q s_q η_q
-  for (const LinePoint& q : o.gauss) {
-    const std::optional<T> eta = project_onto_master<T>(at(xc, xh, q.s), at(nc, nh, q.s), o.y);
-    if (!eta) continue;
-    sum_w += q.weight, sum_ws += q.weight * q.s;
-    add_product(sum_w_eta, T(q.weight), *eta);
-    add_product(sum_ws_eta, T(q.weight * q.s), *eta);
+  const auto accumulate = [&](const auto& project) {
+    for (const LinePoint& q : o.gauss) {
+      const std::optional<T> eta = project(q.s);
+      if (!eta) continue;
+      sum_w += q.weight, sum_ws += q.weight * q.s;
+      add_product(sum_w_eta, T(q.weight), *eta);
+      add_product(sum_ws_eta, T(q.weight * q.s), *eta);
+    }
+  };
+  if constexpr (std::is_same_v<T, Dual2>) {
+    const LinearMasterProjection projection(xc, xh, nc, nh, o.y);
+    accumulate(projection);
+  } else {
+    accumulate([&](double s) { return project_onto_master<T>(at(xc, xh, s), at(nc, nh, s), o.y); });
   }
   if (sum_w == 0) return;
   std::array<T, 3> N, dN;
