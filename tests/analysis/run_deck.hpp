@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -48,6 +50,35 @@ struct Run {
     return s;
   }
 };
+
+/// The largest differences between two runs of one model, with their scales
+/// (the largest magnitudes of the first run): displacements over every
+/// recorded increment, contact pressures at the end. The runs must have
+/// recorded as many increments (checked).
+struct RunDifferences {
+  double displacement = 0, displacement_scale = 0;
+  double pressure = 0, pressure_scale = 0;
+};
+inline RunDifferences run_differences(const Run& a, const Run& b) {
+  RunDifferences d;
+  EXPECT_EQ(a.recorder.results.size(), b.recorder.results.size());
+  for (std::size_t i = 0; i < std::min(a.recorder.results.size(), b.recorder.results.size()); ++i)
+    for (std::size_t n = 0; n < a.recorder.results[i].displacement.size(); ++n) {
+      const Eigen::Vector2d& u = a.recorder.results[i].displacement[n];
+      d.displacement_scale = std::max(d.displacement_scale, u.cwiseAbs().maxCoeff());
+      d.displacement = std::max(d.displacement, (u - b.recorder.results[i].displacement[n]).cwiseAbs().maxCoeff());
+    }
+  for (std::size_t p = 0; p < a.last().contact.size(); ++p) {
+    const ContactPairValues& x = a.last().contact[p];
+    const ContactPairValues& y = b.last().contact.at(p);
+    EXPECT_EQ(x.nodes.size(), y.nodes.size());
+    for (std::size_t k = 0; k < std::min(x.nodes.size(), y.nodes.size()); ++k) {
+      d.pressure_scale = std::max(d.pressure_scale, std::abs(x.nodes[k].pressure));
+      d.pressure = std::max(d.pressure, std::abs(x.nodes[k].pressure - y.nodes[k].pressure));
+    }
+  }
+  return d;
+}
 
 /// Reads `text` (named "test.inp") and runs it.
 inline Run run_deck_text(const std::string& text, AnalysisOptions options = {}) {

@@ -215,9 +215,8 @@ void write_state_variables(Out out, const Model& model, const Selection& sel, co
     for (std::size_t k = 0; k < points.size(); ++k) {
       fmt::format_to(out, "{:10d}{:4d}", label, k + 1);
       const std::vector<double>& sdv = points[k].sdv;
-      for (int i = 0; i < r.n_sdv; ++i)
-        fmt::format_to(out, " {:13.6E}",
-                       static_cast<std::size_t>(i) < sdv.size() ? unsigned_zero(sdv[static_cast<std::size_t>(i)]) : 0.0);
+      for (std::size_t i = 0; i < static_cast<std::size_t>(r.n_sdv); ++i)
+        fmt::format_to(out, " {:13.6E}", i < sdv.size() ? unsigned_zero(sdv[i]) : 0.0);
       fmt::format_to(out, "\n");
     }
   }
