@@ -14,6 +14,7 @@
 #include <functional>
 #include <sstream>
 
+#include "dual_elimination_check.hpp"
 #include "run_deck.hpp"
 
 using namespace tether;
@@ -428,35 +429,12 @@ namespace {
 // decisions at the cone's edge rest on round-off.
 void expect_same_as_kept(const std::string& what, const std::string& deck, double tolerance,
                          int iteration_slack = 0) {
-  AnalysisOptions kept;
-  kept.condense_any_size = true;
-  kept.mortar_condensation = MortarCondensation::Kept;
-  AnalysisOptions dense = kept;
-  dense.mortar_condensation = MortarCondensation::Dense;
-  const auto a = run_deck_text(deck, kept);
-  const auto b = run_deck_text(deck, dense);
-  ASSERT_TRUE(a.summary.completed) << what << ": " << a.summary.message;
-  ASSERT_TRUE(b.summary.completed) << what << ": " << b.summary.message;
-  const auto condensation = [](const tether::testing::Run& run) {
-    std::string all;
-    for (const std::string& m : run.recorder.messages)
-      if (m.find("condensed onto") != std::string::npos) all += m + "\n";
-    return all;
-  };
-  const std::string a_log = condensation(a), b_log = condensation(b);
-  EXPECT_NE(a_log.find(", LU"), std::string::npos) << what << ": " << a_log;
-  EXPECT_EQ(a_log.find("dual elimination"), std::string::npos) << what << ": " << a_log;
-  EXPECT_NE(b_log.find("after the dual elimination"), std::string::npos) << what << ": " << b_log;
-  EXPECT_EQ(b.summary.increments, a.summary.increments) << what;
-  EXPECT_NEAR(b.summary.iterations, a.summary.iterations, iteration_slack) << what;
-  ASSERT_EQ(b.recorder.results.size(), a.recorder.results.size()) << what;
-  const tether::testing::RunDifferences d = tether::testing::run_differences(a, b);
-  std::printf("[ dual elimination ] %s: %d increments, %d iterations (kept %d); max |du| / max |u| %.1e, "
-              "max |dp| / max |p| %.1e\n%s",
-              what.c_str(), b.summary.increments, b.summary.iterations, a.summary.iterations,
-              d.displacement / d.displacement_scale, d.pressure / d.pressure_scale, b_log.c_str());
-  EXPECT_LT(d.displacement, tolerance * d.displacement_scale) << what;
-  EXPECT_LT(d.pressure, tolerance * d.pressure_scale) << what;
+  tether::testing::expect_elimination_same_as_kept(
+      "dual elimination", what, deck, tolerance, iteration_slack,
+      [&](const std::string& a_log, const std::string& b_log) {
+        EXPECT_NE(a_log.find(", LU"), std::string::npos) << what << ": " << a_log;
+        EXPECT_NE(b_log.find("after the dual elimination"), std::string::npos) << what << ": " << b_log;
+      });
 }
 
 std::string surface_to_surface(std::string deck) {
