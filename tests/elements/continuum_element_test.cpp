@@ -7,6 +7,9 @@
 #include <numbers>
 #include <algorithm>
 #include <numeric>
+#include <span>
+#include <type_traits>
+#include <utility>
 
 #include "element_fixtures.hpp"
 #include "tether/elements/continuum_element.hpp"
@@ -213,6 +216,14 @@ TEST(ContinuumElement, KeepsItsDataCompactAndNamesItselfAsBefore) {
   const double lambda = 210.0 * 0.3 / (1.3 * 0.4), mu = 210.0 / 2.6;
   EXPECT_NEAR(e.strain_energy({u, u, 1, 1, 1, false}), 0.5 * (lambda + 2 * mu) * 1e-4 * 2.0, 1e-12);
 }
+
+// The element keeps a pointer into the table: a temporary one is refused at
+// compile time, a named one accepted.
+static_assert(!std::is_constructible_v<ContinuumElement, int, const ElementType&, std::span<const int>,
+                                       std::vector<Eigen::Vector2d>, const ConstitutiveModel&, double, const DofMap&>);
+static_assert(std::is_constructible_v<ContinuumElement, int, const ElementType&, std::span<const int>,
+                                      const std::vector<Eigen::Vector2d>&, const ConstitutiveModel&, double,
+                                      const DofMap&>);
 
 // Two elements of one mesh share its coordinate table (their common nodes once)
 // and give, bit for bit, what each gives over a table of its own nodes only:
