@@ -28,7 +28,6 @@ double amplitude_integral(const Amplitude& amplitude, double from, double to, do
   const double shift = amplitude.total_time ? step_start_total : 0.0;
   const double a = from + shift, b = to + shift;  // in the table's own time
   const auto& ts = amplitude.times;
-  const auto& vs = amplitude.values;
   if (ts.empty() || !(b > a)) return 0.0;
   // Breakpoints inside (a, b): the integrand is linear between them.
   std::vector<double> knots{a};
