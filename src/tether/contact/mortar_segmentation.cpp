@@ -363,19 +363,32 @@ struct LinearMasterProjection {
         }
       }
     } w_eta, ws_eta;
+    // The gradients point by point, in the operations (and so the bits) of
+    // the Dual2 evaluation this replaces: ∇η = (∇F + η ∇G)(-1/G) with
+    // ∇F = (∇f0 + s ∇f1) + s² ∇f2, ∇G = ∇g0 + s ∇g1, added up as w ∇η.
+    const Eigen::Index n = std::max({f0.gradient().size(), f1.gradient().size(), f2.gradient().size(),
+                                     g0.gradient().size(), g1.gradient().size()});
+    const auto grad = [n](const Dual2& d) { return d.constant() ? Dual2::Gradient(Dual2::Gradient::Zero(n)) : d.gradient(); };
+    const Dual2::Gradient df0 = grad(f0), df1 = grad(f1), df2 = grad(f2), dg0 = grad(g0), dg1 = grad(g1);
+    Dual2::Gradient grad_w = Dual2::Gradient::Zero(n), grad_ws = grad_w;
     for (const LinePoint& q : gauss) {
       const std::optional<double> eta_q = eta(q.s);
       if (!eta_q) continue;
       sum_w += q.weight, sum_ws += q.weight * q.s;
-      const double s = q.s, G = g0.value() + s * g1.value();
+      const double s = q.s, G = g0.value() + s * g1.value(), to_eta = -1 / G;
       const std::array<double, 5> e{1.0, s, s * s, *eta_q, s * *eta_q};
       w_eta.add(q.weight, *eta_q, s, e, G);
       ws_eta.add(q.weight * q.s, *eta_q, s, e, G);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double d_eta = (((df0[i] + df1[i] * s) + df2[i] * (s * s)) + (dg0[i] + dg1[i] * s) * *eta_q) * to_eta;
+        grad_w[i] += d_eta * q.weight;
+        grad_ws[i] += d_eta * (q.weight * q.s);
+      }
     }
     const std::array<const Dual2*, 5> p{&f0, &f1, &f2, &g0, &g1};
     const std::array<const Dual2*, 2> g{&g0, &g1};
-    sum_w_eta = Dual2::combination(w_eta.value, p, w_eta.a, g, w_eta.b);
-    sum_ws_eta = Dual2::combination(ws_eta.value, p, ws_eta.a, g, ws_eta.b);
+    sum_w_eta = Dual2::combination(w_eta.value, p, w_eta.a, g, w_eta.b, n > 0 ? &grad_w : nullptr);
+    sum_ws_eta = Dual2::combination(ws_eta.value, p, ws_eta.a, g, ws_eta.b, n > 0 ? &grad_ws : nullptr);
   }
 };
 
