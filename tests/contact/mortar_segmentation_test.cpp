@@ -398,6 +398,87 @@ TEST(Dual2, ZeroHessiansAreSkippedWithTheSameBits) {
     }
 }
 
+// Dual2::combination (the closed-form sums over a straight master's Gauss
+// points, LinearMasterProjection::sums): value as given, gradient Σ a_k ∇p_k,
+// Hessian Σ a_k ∇²p_k + Σ_l (∇q_l w_lᵀ + w_l ∇q_lᵀ), w_l = Σ_k b_lk ∇p_k,
+// against the same written out with dense matrices; constants contribute
+// nothing, and operands over other variables are refused.
+TEST(Dual2, CombinationIsTheWeightedSumWithSymmetricOuterProducts) {
+  const int n = 4;
+  std::vector<Dual2> v;
+  for (int i = 0; i < n; ++i) v.push_back(Dual2::variable(0.4 + 0.3 * i, i, n));
+  const Dual2 p0 = v[0] * v[1] + sqrt(v[2] + v[3] * v[3]), p1 = v[1] / (v[2] + Dual2(2.0)), p2 = v[3] + v[0];
+  const Dual2 constant(7.0);
+  const std::array<const Dual2*, 4> p{&p0, &p1, &constant, &p2};
+  const std::array<double, 4> a{0.7, -1.3, 5.0, 0.25};
+  const std::array<const Dual2*, 2> q{&p1, &p2};
+  const std::array<std::array<double, 4>, 2> b{{{0.5, 2.0, 9.0, -0.75}, {-1.5, 0.1, 9.0, 0.3}}};
+  const Dual2 c = Dual2::combination(3.25, p, a, q, b);
+  EXPECT_EQ(c.value(), 3.25);
+  const std::array<const Dual2*, 3> varying{&p0, &p1, &p2};
+  const std::array<double, 3> av{a[0], a[1], a[3]};
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(n), w0 = g, w1 = g;
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(n, n);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t kk = k < 2 ? k : 3;  // index in p (skipping the constant)
+    g += av[k] * varying[k]->gradient();
+    h += av[k] * varying[k]->hessian();
+    w0 += b[0][kk] * varying[k]->gradient();
+    w1 += b[1][kk] * varying[k]->gradient();
+  }
+  h += p1.gradient() * w0.transpose() + w0 * p1.gradient().transpose();
+  h += p2.gradient() * w1.transpose() + w1 * p2.gradient().transpose();
+  EXPECT_LT((c.gradient() - g).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_LT((c.hessian() - h).cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_GT(h.cwiseAbs().maxCoeff(), 0.1);
+  // first order: the gradient only
+  const Dual2 f0 = Dual2::variable(0.4, 0, n, false) * Dual2::variable(0.7, 1, n, false);
+  const std::array<const Dual2*, 1> pf{&f0};
+  const std::array<const Dual2*, 1> qf{&f0};
+  const Dual2 cf = Dual2::combination(1.0, pf, std::array<double, 1>{2.0}, qf, std::array<std::array<double, 1>, 1>{{{1.0}}});
+  EXPECT_FALSE(cf.second());
+  EXPECT_EQ(cf.gradient()[0], 2.0 * 0.7);
+  // operands over other variables
+  const Dual2 other = Dual2::variable(1.0, 0, n + 1);
+  const std::array<const Dual2*, 2> mixed{&p0, &other};
+  EXPECT_THROW((void)Dual2::combination(0.0, mixed, std::array<double, 2>{1.0, 1.0}, q,
+                                        std::array<std::array<double, 2>, 2>{}),
+               std::invalid_argument);
+}
+
+// Dual2::embedded (the nodal normals computed over the variables of the
+// nodes they depend on, MortarTermCache::face_normals): a value computed over
+// 3 variables and embedded as variables 0, 2, 4 of 5 (in order) has the
+// entries of the same computation over the 5, bit for bit; out of order
+// (4, 0, 2), the same to round-off.
+TEST(Dual2, EmbeddedIsTheSameComputationOverMoreVariables) {
+  const std::array<double, 3> x{0.3, -1.1, 2.4};
+  const std::array<int, 3> to{0, 2, 4};
+  const auto f = [](const Dual2& a, const Dual2& b, const Dual2& c) {
+    const Dual2 s = sqrt(a * a + b * b + Dual2(1.0));
+    return (a * c - b) / s;
+  };
+  const Dual2 few = f(Dual2::variable(x[0], 0, 3), Dual2::variable(x[1], 1, 3), Dual2::variable(x[2], 2, 3));
+  const Dual2 all = f(Dual2::variable(x[0], to[0], 5), Dual2::variable(x[1], to[1], 5), Dual2::variable(x[2], to[2], 5));
+  const Dual2 e = few.embedded(to, 5);
+  EXPECT_EQ(e.value(), all.value());
+  EXPECT_TRUE(e.gradient() == all.gradient());
+  EXPECT_TRUE(e.hessian() == all.hessian());
+  EXPECT_NE(all.hessian()(4, 2), 0.0);  // entries between embedded variables
+  const std::array<int, 3> shuffled{4, 0, 2};
+  const Dual2 all_shuffled = f(Dual2::variable(x[0], shuffled[0], 5), Dual2::variable(x[1], shuffled[1], 5),
+                               Dual2::variable(x[2], shuffled[2], 5));
+  const Dual2 e_shuffled = few.embedded(shuffled, 5);
+  EXPECT_TRUE(e_shuffled.gradient() == all_shuffled.gradient());
+  EXPECT_LT((e_shuffled.hessian() - all_shuffled.hessian()).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_GT(e_shuffled.hessian().cwiseAbs().maxCoeff(), 0.1);
+  // a linear value stays flat; a first-order one has no Hessian
+  const Dual2 linear = Dual2::variable(1.0, 1, 3) + Dual2::variable(2.0, 2, 3);
+  EXPECT_TRUE(linear.embedded(to, 5).hessian() == Dual2::Hessian::Zero(5, 5));
+  EXPECT_FALSE(Dual2::variable(1.0, 0, 3, false).embedded(to, 5).second());
+  EXPECT_THROW((void)few.embedded(std::array<int, 2>{0, 1}, 5), std::invalid_argument);
+}
+
 // The projections take the derivatives of their roots from the implicit
 // function theorem (Dual2::implicit_root): here the root of
 // F(ξ; a, b) = a ξ² + ξ - b, whose closed form ξ = (√(1 + 4ab) - 1) / (2a)

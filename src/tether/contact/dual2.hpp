@@ -27,7 +27,10 @@
 /// is the same, but for the sign of an entry that is zero either way).
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -142,6 +145,102 @@ class Dual2 {
         if (with_df) t += dg[i] * g[j] + g[i] * dg[j];
         if (fh) t += *fh++;
         *out = scale * t;
+      }
+    return r;
+  }
+
+  /// A linear combination of the derivatives of p_1..p_K with symmetric
+  /// outer products, in one pass over the Hessian:
+  ///   value:    `value`,
+  ///   gradient: Σ_k a_k ∇p_k, or `gradient` when given (the same sum
+  ///             accumulated otherwise, e.g. point by point in the order of
+  ///             the code it replaces, so that its bits are kept),
+  ///   Hessian:  Σ_k a_k ∇²p_k + Σ_l (∇q_l w_lᵀ + w_l ∇q_lᵀ),  w_l = Σ_k b_lk ∇p_k.
+  /// This is what a sum over many points of the implicit-function roots of
+  /// equations linear in p reduces to (the weights a, b summed over the
+  /// points in double): one pass where each point took several. Constant
+  /// operands contribute nothing; the others must share one number of
+  /// variables and one order (std::invalid_argument otherwise). The result
+  /// is second order when they are.
+  template <std::size_t K, std::size_t L>
+  [[nodiscard]] static Dual2 combination(double value, const std::array<const Dual2*, K>& p,
+                                         const std::array<double, K>& a, const std::array<const Dual2*, L>& q,
+                                         const std::array<std::array<double, K>, L>& b,
+                                         const Gradient* gradient = nullptr) {
+    Dual2 r(value);
+    const Dual2* first = nullptr;
+    for (const Dual2* d : p)
+      if (!d->constant()) {
+        first = d;
+        break;
+      }
+    if (!first) return r;
+    const Eigen::Index n = first->g_.size();
+    const bool second = first->second();
+    const auto same = [&](const Dual2* d) { return d->constant() || (d->g_.size() == n && d->second() == second); };
+    for (const Dual2* d : p)
+      if (!same(d)) throw std::invalid_argument("Dual2::combination: operands over different variables");
+    for (const Dual2* d : q)
+      if (!same(d)) throw std::invalid_argument("Dual2::combination: operands over different variables");
+    if (gradient) {
+      if (gradient->size() != n) throw std::invalid_argument("Dual2::combination: gradient of another size");
+      r.g_ = *gradient;
+    } else {
+      r.g_ = Gradient::Zero(n);
+      for (std::size_t k = 0; k < K; ++k)
+        if (!p[k]->constant()) r.g_ += a[k] * p[k]->g_;
+    }
+    if (!second) return r;
+    std::array<Gradient, L> w;
+    for (std::size_t l = 0; l < L; ++l) {
+      w[l] = Gradient::Zero(n);
+      for (std::size_t k = 0; k < K; ++k)
+        if (!p[k]->constant()) w[l] += b[l][k] * p[k]->g_;
+    }
+    r.h_.resize(packed_size(n));
+    r.h_.setZero();
+    for (std::size_t l = 0; l < L; ++l) {
+      if (q[l]->constant()) continue;
+      const double* gq = q[l]->g_.data();
+      const double* wl = w[l].data();
+      double* out = r.h_.data();
+      for (Eigen::Index j = 0; j < n; ++j)
+        for (Eigen::Index i = j; i < n; ++i) *out++ += gq[i] * wl[j] + wl[i] * gq[j];
+    }
+    for (std::size_t k = 0; k < K; ++k)
+      if (!p[k]->constant() && !p[k]->flat_) r.h_ += a[k] * p[k]->h_;
+    r.flat_ = false;
+    return r;
+  }
+
+  /// This Dual2 over more variables: its variable i becomes variable
+  /// to[i] of n (to: distinct indices < n, one per variable; the others'
+  /// derivatives are zero). A value computed over the few variables it
+  /// depends on and then embedded with `to` increasing has the entries of
+  /// the same computation over all n bit for bit (the same operations on the
+  /// same numbers; only the zeros' signs may differ), at the cost of the
+  /// few; in another order, the same to round-off (the chain rule's
+  /// (f'' g_i) g_j then multiplies in the other order).
+  [[nodiscard]] Dual2 embedded(std::span<const int> to, int n) const {
+    Dual2 r(v_);
+    if (constant()) return r;
+    if (static_cast<Eigen::Index>(to.size()) != g_.size() || n > kDual2MaxVariables)
+      throw std::invalid_argument("Dual2::embedded: " + std::to_string(to.size()) + " indices for " +
+                                  std::to_string(g_.size()) + " variables, into " + std::to_string(n));
+    r.g_ = Gradient::Zero(n);
+    for (std::size_t i = 0; i < to.size(); ++i) r.g_[to[i]] = g_[static_cast<Eigen::Index>(i)];
+    if (!second()) return r;
+    r.h_.resize(packed_size(n));
+    r.flat_ = flat_;
+    if (flat_) return r;
+    r.h_.setZero();
+    const Eigen::Index m = g_.size();
+    const double* p = h_.data();
+    for (Eigen::Index j = 0; j < m; ++j)
+      for (Eigen::Index i = j; i < m; ++i) {
+        const Eigen::Index ti = to[static_cast<std::size_t>(i)], tj = to[static_cast<std::size_t>(j)];
+        const Eigen::Index a = std::max(ti, tj), b = std::min(ti, tj);  // lower triangle: row a >= column b
+        r.h_[b * n - b * (b - 1) / 2 + (a - b)] = *p++;
       }
     return r;
   }

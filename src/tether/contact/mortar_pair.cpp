@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "tether/assembly/saved_state.hpp"
 #include "tether/contact/mortar_node.hpp"
@@ -37,10 +38,15 @@ std::array<double, 4> box_of(const std::vector<Vec2T<double>>& p) {
   return b;
 }
 
-double box_distance(const std::array<double, 4>& a, const std::array<double, 4>& b) {
+/// Whether boxes a and b are within distance r of each other: hypot(dx, dy)
+/// <= r for their gaps dx, dy along the axes, tested only where neither gap
+/// alone exceeds r (hypot is never below either), so most pairs of a long
+/// surface are rejected without it.
+bool boxes_within(const std::array<double, 4>& a, const std::array<double, 4>& b, double r) {
   const double dx = std::max({0.0, a[0] - b[2], b[0] - a[2]});
   const double dy = std::max({0.0, a[1] - b[3], b[1] - a[3]});
-  return std::hypot(dx, dy);
+  if (dx > r || dy > r) return false;
+  return std::hypot(dx, dy) <= r;
 }
 
 }  // namespace
@@ -116,25 +122,31 @@ bool MortarPair::find_overlaps(const Eigen::VectorXd& u) {
     master_x.push_back(positions_of(f));
     master_box.push_back(box_of(master_x.back()));
   }
+  // The nodal normal of each slave node, computed once (a node is on two faces).
+  std::unordered_map<int, Vec2T<double>> normal_of;
+  normal_of.reserve(2 * setup_.slave_faces.size() + 1);
+  const auto normal_at = [&](int q) {
+    const auto [it, fresh] = normal_of.try_emplace(q);
+    if (!fresh) return it->second;
+    std::vector<std::vector<Vec2T<double>>> around;
+    std::vector<int> at;
+    for (const auto& [e2, k2] : faces_of_node_[static_cast<std::size_t>(q)]) {
+      around.push_back(positions_of(setup_.slave_faces[static_cast<std::size_t>(e2)]));
+      at.push_back(k2);
+    }
+    return it->second = nodal_normal<double>(around, at);
+  };
   bool changed = false;
   for (std::size_t e = 0; e < setup_.slave_faces.size(); ++e) {
     const std::vector<int>& face = setup_.slave_faces[e];
     const std::vector<Vec2T<double>> x = positions_of(face);
     std::vector<Vec2T<double>> normals;
-    for (int q : face) {
-      std::vector<std::vector<Vec2T<double>>> around;
-      std::vector<int> at;
-      for (const auto& [e2, k2] : faces_of_node_[static_cast<std::size_t>(q)]) {
-        around.push_back(positions_of(setup_.slave_faces[static_cast<std::size_t>(e2)]));
-        at.push_back(k2);
-      }
-      normals.push_back(nodal_normal<double>(around, at));
-    }
+    for (int q : face) normals.push_back(normal_at(q));
     const std::array<double, 4> box = box_of(x);
     std::vector<int> candidates;
     std::vector<std::vector<Vec2T<double>>> candidate_x;
     for (std::size_t f = 0; f < master_x.size(); ++f)
-      if (box_distance(box, master_box[f]) <= setup_.search_radius) {
+      if (boxes_within(box, master_box[f], setup_.search_radius)) {
         candidates.push_back(static_cast<int>(f));
         candidate_x.push_back(master_x[f]);
       }

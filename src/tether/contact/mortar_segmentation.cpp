@@ -196,7 +196,7 @@ std::optional<T> solve_scalar(double start, double limit, DoubleResidual residua
 
 /// Newton's start for the projection of p along the normals of slave segment x:
 /// the closest point of its chord, in [-2, 2].
-double slave_projection_start(const Vec2T<double>& p, const std::vector<Vec2T<double>>& x) {
+double slave_projection_start(const Vec2T<double>& p, std::span<const Vec2T<double>> x) {
   const Vec2T<double> chord = x[1] - x[0], mid = 0.5 * (x[0] + x[1]);
   return std::clamp(2 * dot(p - mid, chord) / dot(chord, chord), -2.0, 2.0);
 }
@@ -217,7 +217,16 @@ template <class T>
 std::optional<std::array<T, 2>> overlap_of(std::span<const Vec2T<T>> x, std::span<const Vec2T<T>> normals,
                                            std::span<const Vec2T<T>> y) {
   constexpr double inside = 1 + 1e-12;
-  const std::vector<Vec2T<double>> xd = values(x), nd = values(normals), yd = values(y);
+  // The values of the positions (with T = double, the positions themselves: no copies).
+  std::vector<Vec2T<double>> xv, nv, yv;
+  if constexpr (!std::is_same_v<T, double>) xv = values(x), nv = values(normals), yv = values(y);
+  const auto as_values = [](std::span<const Vec2T<T>> t, const std::vector<Vec2T<double>>& v) {
+    if constexpr (std::is_same_v<T, double>)
+      return t;
+    else
+      return std::span<const Vec2T<double>>(v);
+  };
+  const std::span<const Vec2T<double>> xd = as_values(x, xv), nd = as_values(normals, nv), yd = as_values(y, yv);
   struct End {
     double xi = 0;
     int master = -1;  ///< the master end projected, -1 for a slave end
@@ -300,11 +309,20 @@ void integrate_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::array<std:
 ///   f(η; s) = (y(η) - x(s)) × n(s) = F(s) + η G(s),
 ///   F(s) = r × n_c + s (r × n_h - x_h × n_c) - s² x_h × n_h  (r = y_c - x_c),
 ///   G(s) = y_d × n_c + s y_d × n_h,
-/// with its five coefficients built once per overlap. η's value comes from
-/// the same double Newton iteration as project_onto_master (the same bits,
-/// the same points skipped); its derivatives from Dual2::implicit_root with
-/// F + η G and G at the point (f'' = 0 on a straight master), instead of a
-/// MasterRay<Dual2> built and evaluated at every Gauss point.
+/// with its five coefficients p = (f0, f1, f2, g0, g1) built once per
+/// overlap. η's value comes from the same double Newton iteration as
+/// project_onto_master (the same bits, the same points skipped).
+///
+/// Its derivatives are summed over the points in closed form. At a point,
+/// with e = (1, s, s², η, sη) (so F + ηG = e·p) and G its value, the
+/// implicit function theorem (f'' = 0 on a straight master) gives
+///   ∇η = -(e·∇p) / G,   ∇²η = -(e·∇²p + ∇G ∇ηᵀ + ∇η ∇Gᵀ) / G,   ∇G = ∇g0 + s ∇g1,
+/// so a sum Σ_q c_q η_q has
+///   gradient Σ_k a_k ∇p_k,   Hessian Σ_k a_k ∇²p_k + Σ_{l=0,1} (∇g_l w_lᵀ + w_l ∇g_lᵀ),
+///   a = Σ_q (-c_q/G_q) e_q,  w_0 = Σ_q (-c_q/G_q) ∇η_q,  w_1 = Σ_q (-c_q/G_q) s_q ∇η_q,
+/// all weights in double: one pass over the Hessian per sum
+/// (Dual2::combination), where Dual2::implicit_root and the sums took about
+/// fifteen per point. The same derivatives up to round-off.
 struct LinearMasterProjection {
   Vec2T<double> xc_v, xh_v, nc_v, nh_v;
   std::vector<Vec2T<double>> y_v;
@@ -321,20 +339,56 @@ struct LinearMasterProjection {
     g0 = cross(yd, nc);
     g1 = cross(yd, nh);
   }
-  /// η at x(s) along n(s), or none where project_onto_master has none.
-  std::optional<Dual2> operator()(double s) const {
+  /// η's value at x(s) along n(s), or none where project_onto_master has none.
+  [[nodiscard]] std::optional<double> eta(double s) const {
     // The values of x_c + s x_h and n_c + s n_h as Vec2T<Dual2> has them.
     const Vec2T<double> p{xc_v.x + s * xh_v.x, xc_v.y + s * xh_v.y}, d{nc_v.x + s * nh_v.x, nc_v.y + s * nh_v.y};
-    const std::optional<double> eta =
-        scalar_root<Dual2>(0.0, 3.0, MasterRay<double>(p, d, y_v), master_polish_steps(2));
-    if (!eta) return std::nullopt;
-    Dual2 g = g0;
-    g += s * g1;
-    Dual2 f = f0;
-    f += s * f1;
-    f += (s * s) * f2;
-    f += *eta * g;
-    return Dual2::implicit_root(*eta, f, g, 0.0);
+    return scalar_root<Dual2>(0.0, 3.0, MasterRay<double>(p, d, y_v), master_polish_steps(2));
+  }
+  /// Σ_q w_q η_q and Σ_q w_q s_q η_q over the Gauss points that project;
+  /// adds Σ_q w_q and Σ_q w_q s_q over the same points to sum_w, sum_ws.
+  void sums(const std::vector<LinePoint>& gauss, double& sum_w, double& sum_ws, Dual2& sum_w_eta,
+            Dual2& sum_ws_eta) const {
+    struct Weights {  // of one sum Σ c_q η_q
+      double value = 0;
+      std::array<double, 5> a{};
+      std::array<std::array<double, 5>, 2> b{};
+      void add(double c, double eta_q, double s, const std::array<double, 5>& e, double G) {
+        value += c * eta_q;
+        const double r = -c / G, to_eta = -1 / G;  // ∇η = to_eta e·∇p
+        for (std::size_t k = 0; k < 5; ++k) {
+          a[k] += r * e[k];
+          b[0][k] += (r * to_eta) * e[k];
+          b[1][k] += (r * s * to_eta) * e[k];
+        }
+      }
+    } w_eta, ws_eta;
+    // The gradients point by point, in the operations (and so the bits) of
+    // the Dual2 evaluation this replaces: ∇η = (∇F + η ∇G)(-1/G) with
+    // ∇F = (∇f0 + s ∇f1) + s² ∇f2, ∇G = ∇g0 + s ∇g1, added up as w ∇η.
+    const Eigen::Index n = std::max({f0.gradient().size(), f1.gradient().size(), f2.gradient().size(),
+                                     g0.gradient().size(), g1.gradient().size()});
+    const auto grad = [n](const Dual2& d) { return d.constant() ? Dual2::Gradient(Dual2::Gradient::Zero(n)) : d.gradient(); };
+    const Dual2::Gradient df0 = grad(f0), df1 = grad(f1), df2 = grad(f2), dg0 = grad(g0), dg1 = grad(g1);
+    Dual2::Gradient grad_w = Dual2::Gradient::Zero(n), grad_ws = grad_w;
+    for (const LinePoint& q : gauss) {
+      const std::optional<double> eta_q = eta(q.s);
+      if (!eta_q) continue;
+      sum_w += q.weight, sum_ws += q.weight * q.s;
+      const double s = q.s, G = g0.value() + s * g1.value(), to_eta = -1 / G;
+      const std::array<double, 5> e{1.0, s, s * s, *eta_q, s * *eta_q};
+      w_eta.add(q.weight, *eta_q, s, e, G);
+      ws_eta.add(q.weight * q.s, *eta_q, s, e, G);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double d_eta = (((df0[i] + df1[i] * s) + df2[i] * (s * s)) + (dg0[i] + dg1[i] * s) * *eta_q) * to_eta;
+        grad_w[i] += d_eta * q.weight;
+        grad_ws[i] += d_eta * (q.weight * q.s);
+      }
+    }
+    const std::array<const Dual2*, 5> p{&f0, &f1, &f2, &g0, &g1};
+    const std::array<const Dual2*, 2> g{&g0, &g1};
+    sum_w_eta = Dual2::combination(w_eta.value, p, w_eta.a, g, w_eta.b, n > 0 ? &grad_w : nullptr);
+    sum_ws_eta = Dual2::combination(ws_eta.value, p, ws_eta.a, g, ws_eta.b, n > 0 ? &grad_ws : nullptr);
   }
 };
 
@@ -348,8 +402,10 @@ struct LinearMasterProjection {
 ///   E_k = ∫ Φ_k η dA = c (α_k Σ w_q η_q + β_k Σ w_q ξ_q η_q),
 ///   D_k += S_k,  M_k0 = (S_k - E_k)/2,  M_k1 = (S_k + E_k)/2.
 /// Only η_q carries derivatives per point (Σ w_q and Σ w_q s_q are
-/// numbers); the sums equal integrate_overlap's up to round-off. The point
-/// x(ξ_q) and normal n(ξ_q) that η_q projects are affine in s_q too:
+/// numbers; with T = Dual2 the derivatives of Σ w_q η_q and Σ w_q s_q η_q
+/// are summed in closed form, LinearMasterProjection::sums); the sums equal
+/// integrate_overlap's up to round-off. The point x(ξ_q) and normal n(ξ_q)
+/// that η_q projects are affine in s_q too:
 /// x(ξ_q) = x(centre) + s_q half x', likewise n.
 template <class T>
 void integrate_linear_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::array<std::array<T, 3>, 3>& M) {
@@ -361,20 +417,18 @@ void integrate_linear_overlap(const Overlap<T>& o, std::array<T, 3>& D, std::arr
   const auto at = [](const Vec2T<T>& c, const Vec2T<T>& h, double s) { return Vec2T<T>{c.x + s * h.x, c.y + s * h.y}; };
   double sum_w = 0, sum_ws = 0;
   T sum_w_eta(0.0), sum_ws_eta(0.0);  // Σ w_q η_q, Σ w_q s_q η_q
-  const auto accumulate = [&](const auto& project) {
+  if constexpr (std::is_same_v<T, Dual2>) {
+    LinearMasterProjection(xc, xh, nc, nh, o.y).sums(o.gauss, sum_w, sum_ws, sum_w_eta, sum_ws_eta);
+  } else {
     for (const LinePoint& q : o.gauss) {
-      const std::optional<T> eta = project(q.s);
+      // project_onto_master<double> without its copy of y (the same root).
+      const std::optional<double> eta =
+          scalar_root<double>(0.0, 3.0, MasterRay<double>(at(xc, xh, q.s), at(nc, nh, q.s), o.y), master_polish_steps(2));
       if (!eta) continue;
       sum_w += q.weight, sum_ws += q.weight * q.s;
       add_product(sum_w_eta, T(q.weight), *eta);
       add_product(sum_ws_eta, T(q.weight * q.s), *eta);
     }
-  };
-  if constexpr (std::is_same_v<T, Dual2>) {
-    const LinearMasterProjection projection(xc, xh, nc, nh, o.y);
-    accumulate(projection);
-  } else {
-    accumulate([&](double s) { return project_onto_master<T>(at(xc, xh, s), at(nc, nh, s), o.y); });
   }
   if (sum_w == 0) return;
   std::array<T, 3> N, dN;
