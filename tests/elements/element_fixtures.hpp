@@ -3,6 +3,8 @@
 /// elements, random states and central finite differences over a Contribution.
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <random>
 #include <string>
@@ -52,6 +54,18 @@ inline std::vector<Eigen::Vector2d> distorted_element(Shape shape, unsigned seed
   for (int a = 0; a < n_nodes(shape); ++a)
     x.push_back(A * reference_node(shape, a) + shift + Eigen::Vector2d(jitter(gen), jitter(gen)));
   return x;
+}
+
+/// The mesh's coordinate table a ContinuumElement reads its reference
+/// coordinates from: node nodes[a] at X[a], the other nodes (up to the
+/// largest index) at NaN, so that reading one of them shows in the results.
+inline std::vector<Eigen::Vector2d> coordinate_table(const std::vector<int>& nodes,
+                                                     const std::vector<Eigen::Vector2d>& X) {
+  int n = 0;
+  for (const int i : nodes) n = std::max(n, i + 1);
+  std::vector<Eigen::Vector2d> table(static_cast<std::size_t>(n), Eigen::Vector2d::Constant(std::nan("")));
+  for (std::size_t a = 0; a < nodes.size(); ++a) table[static_cast<std::size_t>(nodes[a])] = X[a];
+  return table;
 }
 
 /// Random global displacement vector of size n with entries in [-amp, amp].

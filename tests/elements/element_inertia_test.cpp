@@ -14,6 +14,7 @@ struct InertiaSetup {
   DofMap dofs{std::vector<int>(4, 0)};
   LinearElastic material{1000.0, 0.3};
   MaterialData data;
+  std::vector<Eigen::Vector2d> coords = test::distorted_element(Shape::Quad4, 5);  ///< the mesh's coordinate table
   std::unique_ptr<ContinuumElement> element;
   Eigen::VectorXd v_n, a_n, u_n;
   NewmarkIncrement increment;
@@ -23,9 +24,8 @@ struct InertiaSetup {
     data.where = {"deck.inp", 3};
     std::vector<int> nodes(4);
     std::iota(nodes.begin(), nodes.end(), 0);
-    element = std::make_unique<ContinuumElement>(1, find_element_type("CPE4").value(), nodes,
-                                                 test::distorted_element(Shape::Quad4, 5), material, 1.0, dofs,
-                                                 &data);
+    element = std::make_unique<ContinuumElement>(1, find_element_type("CPE4").value(), nodes, coords, material, 1.0,
+                                                 dofs, &data);
     const int n = dofs.n_dofs();
     v_n = test::random_vector(n, 0.3, 11);
     a_n = test::random_vector(n, 2.0, 12);
@@ -95,7 +95,8 @@ TEST(ElementInertia, KeepsTheNodalMassAndHandsOutTheElementsMatrixBitwise) {
     DofMap dofs{std::vector<int>(static_cast<std::size_t>(n), 0)};
     std::vector<int> nodes(static_cast<std::size_t>(n));
     std::iota(nodes.begin(), nodes.end(), 0);
-    const ContinuumElement element(1, type, nodes, test::distorted_element(type.shape, 5), material, 1.0, dofs, &data);
+    const std::vector<Eigen::Vector2d> coords = test::distorted_element(type.shape, 5);
+    const ContinuumElement element(1, type, nodes, coords, material, 1.0, dofs, &data);
     for (const MassKind kind : {MassKind::Consistent, MassKind::Lumped}) {
       const std::string what = std::string(type.name) + (kind == MassKind::Lumped ? " lumped" : " consistent");
       Eigen::MatrixXd expected;

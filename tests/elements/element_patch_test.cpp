@@ -139,9 +139,7 @@ TEST(PatchTest, ConstantStrainIsExactForEveryElementType) {
         const std::string what = std::string(type.name) + " " + material->describe() + (nlgeom ? " NLGEOM" : " small");
         int label = 0;
         for (const auto& nodes : patch.elements) {
-          std::vector<Eigen::Vector2d> X;
-          for (int n : nodes) X.push_back(patch.coords[n]);
-          const ContinuumElement e(++label, type, nodes, X, *material, 0.3, dofs);
+          const ContinuumElement e(++label, type, nodes, patch.coords, *material, 0.3, dofs);
           LocalSystem sys;
           sys.reset(static_cast<Eigen::Index>(e.dofs().size()));
           e.evaluate(s, sys, false);

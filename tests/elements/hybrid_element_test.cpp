@@ -21,12 +21,13 @@ constexpr double kRelTol = 1e-6;  // FD agreement, relative to the largest tange
 
 struct HybridQuad {
   DofMap dofs;
+  std::vector<Eigen::Vector2d> coords = distorted_element(Shape::Quad4);  ///< the mesh's coordinate table
   std::unique_ptr<ContinuumElement> element;
   HybridQuad(const char* name, const ConstitutiveModel& material) : dofs(std::vector<int>(4, 0)) {
     const ElementType type = *find_element_type(name);
     std::vector<int> nodes(4);
     std::iota(nodes.begin(), nodes.end(), 0);
-    element = std::make_unique<ContinuumElement>(5, type, nodes, distorted_element(Shape::Quad4), material, 0.5, dofs);
+    element = std::make_unique<ContinuumElement>(5, type, nodes, coords, material, 0.5, dofs);
   }
 };
 

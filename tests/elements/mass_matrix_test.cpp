@@ -109,15 +109,16 @@ struct OneElement {
   DofMap dofs;
   LinearElastic steel{210.0, 0.3};
   MaterialData data;
+  std::vector<Eigen::Vector2d> coords;  ///< the mesh's coordinate table (the element's nodes only)
   std::unique_ptr<ContinuumElement> element;
   OneElement(const ElementType& type, std::vector<Eigen::Vector2d> X, double thickness = kThickness)
-      : dofs(std::vector<int>(X.size(), 0)) {
+      : dofs(std::vector<int>(X.size(), 0)), coords(std::move(X)) {
     data.name = "STEEL";
     data.density = kRho;
     data.where = {"deck.inp", 12};
-    std::vector<int> nodes(X.size());
+    std::vector<int> nodes(coords.size());
     std::iota(nodes.begin(), nodes.end(), 0);
-    element = std::make_unique<ContinuumElement>(5, type, nodes, std::move(X), steel, thickness, dofs, &data);
+    element = std::make_unique<ContinuumElement>(5, type, nodes, coords, steel, thickness, dofs, &data);
   }
   [[nodiscard]] Eigen::MatrixXd mass(MassKind kind) const {
     Eigen::MatrixXd M;
@@ -365,7 +366,7 @@ TEST(ElementMass, ComesFromTheMaterialDensityAndNamesAMissingOne) {
   }
   const DofMap dofs(std::vector<int>(8, 0));
   const LinearElastic steel(210.0, 0.3);
-  const ContinuumElement bare(6, cpe8, {0, 1, 2, 3, 4, 5, 6, 7}, X, steel, 1.0, dofs);
+  const ContinuumElement bare(6, cpe8, std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}, X, steel, 1.0, dofs);
   Eigen::MatrixXd M;
   EXPECT_THROW(bare.mass(MassKind::Consistent, M), ModelError);
 }

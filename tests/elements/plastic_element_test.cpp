@@ -22,12 +22,13 @@ J2Plasticity steel(J2Plasticity::Hardening h) {
 
 struct PlasticElement {
   DofMap dofs;
+  std::vector<Eigen::Vector2d> coords;  ///< the mesh's coordinate table
   std::unique_ptr<ContinuumElement> element;
   PlasticElement(const ElementType& type, const ConstitutiveModel& material)
-      : dofs(std::vector<int>(n_nodes(type.shape), 0)) {
+      : dofs(std::vector<int>(n_nodes(type.shape), 0)), coords(distorted_element(type.shape)) {
     std::vector<int> nodes(n_nodes(type.shape));
     std::iota(nodes.begin(), nodes.end(), 0);
-    element = std::make_unique<ContinuumElement>(3, type, nodes, distorted_element(type.shape), material, 0.5, dofs);
+    element = std::make_unique<ContinuumElement>(3, type, nodes, coords, material, 0.5, dofs);
   }
 };
 

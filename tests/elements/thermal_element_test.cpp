@@ -41,7 +41,8 @@ TEST(ThermalElement, TangentMatchesFiniteDifferencesUnderATemperatureField) {
       const DofMap dofs(std::vector<int>(n + 1, 0));
       std::vector<int> nodes(n);
       std::iota(nodes.begin(), nodes.end(), 1);
-      ContinuumElement e(3, type, nodes, distorted_element(type.shape), material, 0.5, dofs);
+      const std::vector<Eigen::Vector2d> coords = coordinate_table(nodes, distorted_element(type.shape));
+      ContinuumElement e(3, type, nodes, coords, material, 0.5, dofs);
       e.set_temperatures(&field);
       EXPECT_TRUE(e.residual_depends_on_time()) << e.describe();  // the thermal strain follows the temperatures
       const Eigen::VectorXd u = random_vector(dofs.n_dofs(), nlgeom ? 0.1 : 0.02, 5);
@@ -67,7 +68,7 @@ TEST(ThermalElement, UniformFieldExpandsAPlaneStressElementFreely) {
   const ElementType type = *find_element_type("CPS4");
   const DofMap dofs(std::vector<int>(4, 0));
   const std::vector<Eigen::Vector2d> x = distorted_element(type.shape);
-  ContinuumElement e(1, type, {0, 1, 2, 3}, x, material, 1, dofs);
+  ContinuumElement e(1, type, std::vector<int>{0, 1, 2, 3}, x, material, 1, dofs);
   e.set_temperatures(&field);
   const double eth = thermal_strain(TemperatureTable{{0, 400}, {1e-3, 2e-3}}, 0, 250, 20);
   Eigen::VectorXd u(8);

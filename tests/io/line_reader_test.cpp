@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "deck_test_support.hpp"
 #include "tether/io/line_reader.hpp"
@@ -75,9 +76,35 @@ TEST(Include, ResolvesPathsRelativeToTheIncludingFile) {
   ASSERT_EQ(m.n_elements(), 1);
   EXPECT_EQ(m.elements[0].type.name, "CPS4");
   EXPECT_EQ(m.node_sets.at("ALL").size(), 4u);
-  EXPECT_EQ(m.elements[0].where.file, decks_dir() + "/mesh/connectivity.inp");
-  EXPECT_EQ(m.elements[0].where.line, 1);
+  EXPECT_EQ(m.location(m.elements[0].where).file, decks_dir() + "/mesh/connectivity.inp");
+  EXPECT_EQ(m.location(m.elements[0].where).line, 1);
   EXPECT_EQ(m.heading, "Included mesh");
+}
+
+// An element keeps its deck line as an index into the model's file table and
+// a line (8 bytes, not a file name each); the messages that name it print the
+// same file:line as before: here an element of an included file, named from
+// the main deck's duplicate.
+TEST(Include, ElementsNameTheirIncludedFileAndLineInMessages) {
+  const auto dir = std::filesystem::path(TETHER_BINARY_DIR) / "tests" / "io" / "include_lines";
+  std::filesystem::create_directories(dir);
+  const std::string main = (dir / "main.inp").string(), mesh = decks_dir() + "/mesh";
+  std::ofstream(main) << "*NODE, NSET=ALL\n*INCLUDE, INPUT=" << mesh << "/nodes.inp\n*INCLUDE, INPUT=" << mesh
+                      << "/elements.inp\n*ELEMENT, TYPE=CPS4, ELSET=MORE\n1, 1, 2, 3, 4\n";
+  try {
+    (void)read_deck(main);
+    ADD_FAILURE() << "duplicate element accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, main);
+    EXPECT_EQ(e.where().line, 5);
+    EXPECT_NE(std::string(e.what()).find("duplicate element 1: element labels must be unique (it is already defined "
+                                         "at " + mesh + "/connectivity.inp:1)"),
+              std::string::npos)
+        << e.what();
+  }
+  const Model m = read_deck(decks_dir() + "/include_main.inp");
+  ASSERT_EQ(m.source_files.size(), 1u);  // only the files that elements name
+  EXPECT_EQ(m.elements[0].where.file, 0);
 }
 
 TEST(Include, RecursionIsAnErrorAtTheIncludeLine) {

@@ -53,7 +53,23 @@ TEST(LabelMap, MovesSparseLabelsIntoTheDenseArrayAsItGrows) {
 // smaller"): 115k of each at the 230k-dof Hertz deck.
 TEST(ModelMemory, ElementRecordsStaySmall) {
   EXPECT_EQ(sizeof(ElementType), 24u);
-  EXPECT_LE(sizeof(Element), 96u);
+  EXPECT_LE(sizeof(Element), 64u);  // the deck line an index and a line (a SourceLocation was 40 bytes)
+  EXPECT_EQ(sizeof(DeckLine), 8u);
+}
+
+// A DeckLine is a file index into Model::source_files and a line:
+// Model::location gives back the SourceLocation it was made from.
+TEST(ModelMemory, DeckLinesGiveBackTheirFileAndLine) {
+  Model m;
+  const DeckLine a = m.deck_line({"deck.inp", 12}), b = m.deck_line({"/some/where/mesh_of_a_long_name.inp", 3});
+  const DeckLine c = m.deck_line({"deck.inp", 40});
+  EXPECT_EQ(m.source_files, (std::vector<std::string>{"deck.inp", "/some/where/mesh_of_a_long_name.inp"}));
+  EXPECT_EQ(a.file, c.file);
+  EXPECT_EQ(m.location(a).str(), "deck.inp:12");
+  EXPECT_EQ(m.location(b).str(), "/some/where/mesh_of_a_long_name.inp:3");
+  EXPECT_EQ(m.location(c).str(), "deck.inp:40");
+  EXPECT_EQ(m.location(DeckLine{}).str(), SourceLocation{}.str());  // an element made without a deck line
+  EXPECT_EQ(m.location(m.deck_line({"", 0})).str(), "");
 }
 
 TEST(ElementType, InternedTypesAreSharedAndEqual) {

@@ -45,7 +45,9 @@ Discretization::Discretization(const Model& model) : model_(model), dofs_(model.
   for (const auto& e : model.elements) {
     if (e.section < 0) throw ModelError("element " + label_text(model.instances, e.id) + " has no section");
     const SolidSection& section = model.sections[e.section];
-    elements_.push_back(std::make_unique<ContinuumElement>(e.id, e.type, e.nodes, coordinates_of(model, e.nodes),
+    // The element reads its nodes' reference coordinates from the model's
+    // table (the model outlives the discretization and is not changed).
+    elements_.push_back(std::make_unique<ContinuumElement>(e.id, e.type, e.nodes, model.coords,
                                                            *materials_[section.material], section.thickness, dofs_,
                                                            &model.materials[section.material]));
     elements_.back()->set_name(label_text(model.instances, e.id));

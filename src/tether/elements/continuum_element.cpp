@@ -35,54 +35,56 @@ const TabulatedShapes& rule_shapes(Shape shape, QuadratureRule rule) {
 
 }  // namespace
 
-ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vector<int> node_indices,
-                                   std::vector<Eigen::Vector2d> ref_coords,
+ContinuumElement::ContinuumElement(int label, const ElementType& type, std::span<const int> node_indices,
+                                   const std::vector<Eigen::Vector2d>& node_coords,
                                    const ConstitutiveModel& material, double thickness,
                                    const DofMap& dofs, const MaterialData* material_data)
     : label_(label),
-      n_state_(material.n_state()),
       rule_(default_rule(type)),
       n_nodes_(static_cast<std::uint8_t>(n_nodes(type.shape))),
       n_points_(static_cast<std::uint8_t>(quadrature_points(rule_).size())),
       type_(&intern_element_type(type)),
+      node_coords_(node_coords.data()),
       material_(&material),
       material_data_(material_data),
       thickness_(thickness) {
   if (const std::string why = unsupported_reason(type); !why.empty())
     throw ModelError(describe() + ": " + why);
-  if (static_cast<int>(node_indices.size()) != n_nodes_ || static_cast<int>(ref_coords.size()) != n_nodes_)
+  if (static_cast<int>(node_indices.size()) != n_nodes_)
     throw ModelError(fmt::format("{}: expected {} nodes, got {}", describe(), n_nodes_, node_indices.size()));
+  for (const int node : node_indices)
+    if (node < 0 || static_cast<std::size_t>(node) >= node_coords.size())
+      throw ModelError(fmt::format("{}: node index {} outside the table of {} node coordinates", describe(), node,
+                                   node_coords.size()));
   const bool axisymmetric = type.family == Family::Axisymmetric;
   if (!axisymmetric && !(thickness > 0))
     throw ModelError(fmt::format("{}: thickness must be positive (got {:g})", describe(), thickness));
 
-  // The block of storage_: coordinates, then dofs, then nodes (operator new[]
-  // aligns it for Eigen::Vector2d; the ints follow 16-byte coordinates).
+  // The block of storage_: the dofs (x, y per node), then the nodes.
   const auto n = static_cast<std::size_t>(n_nodes_);
-  storage_ = std::make_unique_for_overwrite<std::byte[]>(coords_bytes() + 3 * n * sizeof(int));
-  std::uninitialized_copy(ref_coords.begin(), ref_coords.end(),
-                          reinterpret_cast<Eigen::Vector2d*>(storage_.get()));
-  int* ints = reinterpret_cast<int*>(storage_.get() + coords_bytes());
+  storage_ = std::make_unique_for_overwrite<int[]>(3 * n);
   for (std::size_t a = 0; a < n; ++a) {
-    ::new (ints + 2 * a) int(dofs.displacement(node_indices[a], 0));
-    ::new (ints + 2 * a + 1) int(dofs.displacement(node_indices[a], 1));
-    ::new (ints + 2 * n + a) int(node_indices[a]);
+    storage_[2 * a] = dofs.displacement(node_indices[a], 0);
+    storage_[2 * a + 1] = dofs.displacement(node_indices[a], 1);
+    storage_[2 * n + a] = node_indices[a];
   }
 
-  if (n_state_ > 0) {
+  if (const int n_state = material.n_state(); n_state > 0) {
     history_ = std::make_unique<History>();
-    const int record = kRecordState + n_state_;
+    history_->n_state = n_state;
+    const int record = kRecordState + n_state;
     history_->records.assign(static_cast<std::size_t>(n_points_ * record), 0.0);
     for (int q = 0; q < n_points_; ++q)
       material.initial_state(std::span<double>(history_->records)
                                  .subspan(static_cast<std::size_t>(q * record + kRecordState),
-                                          static_cast<std::size_t>(n_state_)));
+                                          static_cast<std::size_t>(n_state)));
     history_->committed_u.assign(static_cast<std::size_t>(2 * n_nodes_), 0.0);
   }
 
   PointGeometry g;
+  const NodeCoordinates X = reference_coords();
   for (int q = 0; q < n_points_; ++q) {
-    const double detJ = point_geometry(q, g);
+    const double detJ = point_geometry(q, X, g);
     if (!(detJ > 0))
       throw ModelError(fmt::format(
           "{}: Jacobian determinant {:.3g} <= 0 at integration point {} in the reference "
@@ -94,27 +96,50 @@ ContinuumElement::ContinuumElement(int label, const ElementType& type, std::vect
   }
 }
 
-double ContinuumElement::point_geometry(int q, PointGeometry& g) const {
+template <int NN>
+ContinuumElement::NodeCoordinates ContinuumElement::reference_coords() const {
+  NodeCoordinates X;
+  const int n = NN == Eigen::Dynamic ? n_nodes_ : NN;
+  const int* node = nodes().data();
+  for (int a = 0; a < n; ++a) X[static_cast<std::size_t>(a)] = node_coords_[node[a]];
+  return X;
+}
+
+template <int NN>
+double ContinuumElement::point_geometry(int q, const NodeCoordinates& X, PointGeometry& g) const {
   const TabulatedShapes& shapes = rule_shapes(type_->shape, rule_);
   const ShapeVector& N = shapes.N[static_cast<std::size_t>(q)];
   const ShapeGradient& dN = shapes.dN[static_cast<std::size_t>(q)];
+  const int n = NN == Eigen::Dynamic ? n_nodes_ : NN;
   Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // J(i,j) = dX_i/dxi_j
-  Eigen::Vector2d X = Eigen::Vector2d::Zero();
-  for (int a = 0; a < n_nodes_; ++a) {
-    J += ref_coords()[a] * dN.row(a);
-    X += N(a) * ref_coords()[a];
+  Eigen::Vector2d Xq = Eigen::Vector2d::Zero();
+  for (int a = 0; a < n; ++a) {
+    J += X[static_cast<std::size_t>(a)] * dN.row(a);
+    Xq += N(a) * X[static_cast<std::size_t>(a)];
   }
   const double detJ = J.determinant();
   g.N = N;
-  g.R = X.x();
-  g.Y = X.y();
+  g.R = Xq.x();
+  g.Y = Xq.y();
   const bool axisymmetric = type_->family == Family::Axisymmetric;
-  const double measure = axisymmetric ? 2 * std::numbers::pi * X.x() : thickness_;
+  const double measure = axisymmetric ? 2 * std::numbers::pi * Xq.x() : thickness_;
   g.dV = shapes.weight[static_cast<std::size_t>(q)] * detJ * measure;
-  if (detJ > 0) g.G = dN * J.inverse();  // dN/dX
-  else g.G.setZero(n_nodes_, 2);
+  if (!(detJ > 0)) {
+    g.G.setZero(n, 2);
+  } else if constexpr (NN == Eigen::Dynamic) {
+    g.G = dN * J.inverse();  // dN/dX
+  } else {  // the same products, of fixed size (the columns of a ShapeGradient are rows() apart)
+    g.G.resize(NN, 2);
+    Eigen::Map<Eigen::Matrix<double, NN, 2>>(g.G.data()).noalias() =
+        Eigen::Map<const Eigen::Matrix<double, NN, 2>>(dN.data()) * J.inverse();
+  }
   return detJ;
 }
+
+// The hybrid path (continuum_element_hybrid.cpp) and the once-per-increment
+// paths use the run-time node count.
+template ContinuumElement::NodeCoordinates ContinuumElement::reference_coords<Eigen::Dynamic>() const;
+template double ContinuumElement::point_geometry<Eigen::Dynamic>(int, const NodeCoordinates&, PointGeometry&) const;
 
 std::string ContinuumElement::describe() const {
   return name_ == nullptr ? fmt::format("element {} ({})", label_, type_->name)
@@ -132,14 +157,14 @@ void ContinuumElement::gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::Vector
 }
 
 std::span<const double> ContinuumElement::committed_state(int q) const {
-  if (n_state_ == 0) return {};
-  const int record = kRecordState + n_state_;
+  if (n_state() == 0) return {};
+  const int record = kRecordState + n_state();
   return std::span<const double>(history_->records).subspan(static_cast<std::size_t>(q * record + kRecordState),
-                                                   static_cast<std::size_t>(n_state_));
+                                                   static_cast<std::size_t>(n_state()));
 }
 
 bool ContinuumElement::committed_at(const Eigen::Ref<const Eigen::VectorXd>& ue, double total_time) const {
-  if (n_state_ == 0) return false;
+  if (n_state() == 0) return false;
   if (total_time != history_->committed_time) return false;  // a rate-dependent material differs at the same strain
   for (int i = 0; i < 2 * n_nodes_; ++i)
     if (ue(i) != history_->committed_u[static_cast<std::size_t>(i)]) return false;
@@ -200,9 +225,10 @@ void ContinuumElement::evaluate_kernel(const double* ue_ptr, const EvaluationSta
   MaterialPoint mp;
   Eigen::Matrix<double, 4, ND> B;
   PointGeometry g;
-  std::vector<double> trial(static_cast<std::size_t>(n_state_));  // discarded: evaluate() commits nothing
+  std::vector<double> trial(static_cast<std::size_t>(n_state()));  // discarded: evaluate() commits nothing
+  const NodeCoordinates X = reference_coords<NN>();
   for (int q = 0; q < n_points_; ++q) {
-    point_geometry(q, g);
+    point_geometry<NN>(q, X, g);
     const Eigen::Map<const Nodal> N(g.N.data()), Gx(g.G.data()), Gy(g.G.data() + NN);
     const double dV = g.dV, R = g.R;
     Eigen::Matrix2d H;
@@ -277,12 +303,13 @@ double ContinuumElement::thickness_stretch(const EvaluationState& s, const Eigen
   const Eigen::RowVectorXd w = N.head(n_nodes_).transpose() * extrapolation_matrix(type_->shape, rule_);
   MaterialPoint mp;
   PointGeometry g;
-  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  std::vector<double> trial(static_cast<std::size_t>(n_state()));
   double F33 = 0;
   dF33_du.setZero(2 * n_nodes_);
   try {
+    const NodeCoordinates X = reference_coords();
     for (int q = 0; q < n_points_; ++q) {
-      point_geometry(q, g);
+      point_geometry(q, X, g);
       material_point(q, g, ue.data(), s, mp, trial);
       F33 += w(q) * mp.F33;
       const Eigen::Matrix2d d = thickness_stretch_gradient(mp);  // dF33_q / dH, H_ij = sum_a u_ai G_aj
@@ -298,15 +325,16 @@ double ContinuumElement::strain_energy(const EvaluationState& s) const {
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
   const bool from_records = committed_at(ue, s.total_time);
-  const int record = kRecordState + n_state_;
+  const int record = kRecordState + n_state();
   MaterialPoint mp;
   PointGeometry g;
-  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  std::vector<double> trial(static_cast<std::size_t>(n_state()));
   double energy = 0;
   try {
     const double mean = element_mean(ue.data(), s.nlgeom);
+    const NodeCoordinates X = reference_coords();
     for (int q = 0; q < n_points_; ++q) {
-      point_geometry(q, g);
+      point_geometry(q, X, g);
       if (from_records) {
         energy += history_->records[static_cast<std::size_t>(q * record + kRecordEnergy)] * g.dV;
         continue;
@@ -321,19 +349,20 @@ double ContinuumElement::strain_energy(const EvaluationState& s) const {
 }
 
 double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
-  if (n_state_ == 0) return 0;
+  if (n_state() == 0) return 0;
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
   const bool from_records = committed_at(ue, s.total_time);
-  const int record = kRecordState + n_state_;
+  const int record = kRecordState + n_state();
   MaterialPoint mp;
   PointGeometry g;
-  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  std::vector<double> trial(static_cast<std::size_t>(n_state()));
   double total = 0;
   try {
     const double mean = element_mean(ue.data(), s.nlgeom);
+    const NodeCoordinates X = reference_coords();
     for (int q = 0; q < n_points_; ++q) {
-      point_geometry(q, g);
+      point_geometry(q, X, g);
       double density = history_->records[static_cast<std::size_t>(q * record + kRecordDissipation)];
       if (!from_records) {
         material_point(q, g, ue.data(), s, mp, trial, mean);
@@ -348,18 +377,19 @@ double ContinuumElement::plastic_dissipation(const EvaluationState& s) const {
 }
 
 double ContinuumElement::plastic_dissipation_increment(const EvaluationState& s) const {
-  if (n_state_ == 0) return 0;
+  if (n_state() == 0) return 0;
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
   if (committed_at(ue, s.total_time)) return 0;
   MaterialPoint mp;
   PointGeometry g;
-  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  std::vector<double> trial(static_cast<std::size_t>(n_state()));
   double total = 0;
   try {
     const double mean = element_mean(ue.data(), s.nlgeom);
+    const NodeCoordinates X = reference_coords();
     for (int q = 0; q < n_points_; ++q) {
-      point_geometry(q, g);
+      point_geometry(q, X, g);
       material_point(q, g, ue.data(), s, mp, trial, mean);
       total += mp.dissipation * g.dV;
     }
@@ -374,15 +404,16 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
   gather(s.u, ue);
   out.resize(n_points_);
   const bool from_records = committed_at(ue, s.total_time);
-  const int record = kRecordState + n_state_;
+  const int record = kRecordState + n_state();
   MaterialPoint mp;
   PointGeometry g;
-  std::vector<double> trial(static_cast<std::size_t>(n_state_));
+  std::vector<double> trial(static_cast<std::size_t>(n_state()));
   const auto* thermal = dynamic_cast<const ThermalModel*>(material_);  // THE (none: zero)
   try {
     const double mean = element_mean(ue.data(), s.nlgeom);
+    const NodeCoordinates X = reference_coords();
     for (int q = 0; q < n_points_; ++q) {
-      point_geometry(q, g);
+      point_geometry(q, X, g);
       material_point(q, g, ue.data(), s, mp, trial, mean);
       std::span<const double> state = trial;
       if (from_records) {  // the committed values of this very state (equal to mp's up to round-off)
@@ -393,7 +424,7 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
       }
       Eigen::Vector2d x = Eigen::Vector2d::Zero();
       for (int a = 0; a < n_nodes_; ++a)
-        x += g.N(a) * (ref_coords()[a] + Eigen::Vector2d(ue(2 * a), ue(2 * a + 1)));
+        x += g.N(a) * (X[static_cast<std::size_t>(a)] + Eigen::Vector2d(ue(2 * a), ue(2 * a + 1)));
       const Eigen::Vector4d sigma = cauchy_stress(s.nlgeom, mp);
       PointValues& pv = out[q];
       pv.x = x;
@@ -414,20 +445,21 @@ void ContinuumElement::point_values(const EvaluationState& s, std::vector<PointV
 }
 
 void ContinuumElement::commit(const EvaluationState& s) {
-  if (n_state_ == 0) return;
+  if (n_state() == 0) return;
   Eigen::VectorXd ue(2 * n_nodes_);
   gather(s.u, ue);
   if (committed_at(ue, s.total_time)) return;  // already the committed state of these displacements
-  const int record = kRecordState + n_state_;
+  const int record = kRecordState + n_state();
   std::vector<double> next(history_->records.size());
   MaterialPoint mp;
   PointGeometry g;
   try {
     const double mean = element_mean(ue.data(), s.nlgeom);
+    const NodeCoordinates X = reference_coords();
     for (int q = 0; q < n_points_; ++q) {
-      point_geometry(q, g);
+      point_geometry(q, X, g);
       double* r = next.data() + static_cast<std::ptrdiff_t>(q * record);
-      material_point(q, g, ue.data(), s, mp, std::span<double>(r + kRecordState, n_state_), mean);
+      material_point(q, g, ue.data(), s, mp, std::span<double>(r + kRecordState, n_state()), mean);
       Eigen::Map<Vec6>(r + kRecordStress) = mp.stress;
       Eigen::Map<Vec6>(r + kRecordStrain) = mp.strain;
       r[kRecordEnergy] = mp.elastic_energy;
@@ -446,20 +478,20 @@ constexpr double kHistoryTag = 7302;  ///< first value of a ContinuumElement's s
 }  // namespace
 
 void ContinuumElement::save_state(std::vector<double>& out) const {
-  if (n_state_ == 0) return;
+  if (n_state() == 0) return;
   out.push_back(kHistoryTag);
   out.push_back(n_points_);
-  out.push_back(kRecordState + n_state_);
+  out.push_back(kRecordState + n_state());
   out.insert(out.end(), history_->records.begin(), history_->records.end());
   out.insert(out.end(), history_->committed_u.begin(), history_->committed_u.end());
   out.push_back(history_->committed_time);
 }
 
 void ContinuumElement::load_state(std::span<const double>& in) {
-  if (n_state_ == 0) return;
+  if (n_state() == 0) return;
   saved_state::expect_tag(in, kHistoryTag, "continuum element with material history");
   saved_state::take_int(in, n_points_, n_points_, "number of integration points");
-  const int record = kRecordState + n_state_;
+  const int record = kRecordState + n_state();
   saved_state::take_int(in, record, record, "history record size");
   const std::size_t n = history_->records.size() + history_->committed_u.size() + 1;
   if (in.size() < n) throw std::runtime_error("its saved state is too short");
@@ -478,7 +510,9 @@ void ContinuumElement::mass(MassKind kind, Eigen::MatrixXd& out) const {
     throw ModelError(fmt::format("{}: *DENSITY missing for material {} ({})", describe(), material_data_->name,
                                  material_data_->where.str()));
   try {
-    expand_to_components(scalar_mass(kind, *type_, ref_coords(), *material_data_->density, thickness_), 2, out);
+    const NodeCoordinates X = reference_coords();
+    expand_to_components(scalar_mass(kind, *type_, std::span(X.data(), n_nodes_), *material_data_->density, thickness_),
+                         2, out);
   } catch (const ModelError& e) {
     throw ModelError(describe() + ": " + e.what());
   }

@@ -3,10 +3,10 @@
 /// supported shape, small strain or total Lagrangian finite strain.
 
 #include <Eigen/Core>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <new>
 #include <span>
 #include <string>
 #include <vector>
@@ -31,24 +31,31 @@ namespace tether {
 class ContinuumElement final : public Contribution {
  public:
   /// label: user id for messages; node_indices: mesh node indices (dofs via
-  /// DofMap::displacement), ABAQUS order; ref_coords: reference coordinates of
-  /// those nodes [length]; material: must outlive the element; thickness:
+  /// DofMap::displacement), ABAQUS order; node_coords: the mesh's table of
+  /// reference coordinates [length], indexed by node index (Model::coords): the
+  /// element reads its nodes' coordinates from it through node_indices and
+  /// keeps a pointer to it, so the table must outlive the element and not be
+  /// resized or moved (a temporary is refused at compile time); material: must
+  /// outlive the element; thickness:
   /// out-of-plane thickness [length] for plane strain/stress, ignored for
   /// axisymmetry. Throws ModelError naming the element when the node count does
-  /// not match the type, the type is unsupported, the reference Jacobian is not
+  /// not match the type, a node index is outside node_coords, the type is
+  /// unsupported, the reference Jacobian is not
   /// positive at an integration point (inverted or degenerate element, or
   /// clockwise node order), an axisymmetric point lies at r <= 0, or the
   /// thickness is not positive. material_data: the `*MATERIAL` the element is
   /// made of, read by mass() only (its density, name and deck line); must
   /// outlive the element; nullptr (or no `*DENSITY` in it) is fine for static
   /// analysis, mass() then throws.
-  ContinuumElement(int label, const ElementType& type, std::vector<int> node_indices,
-                   std::vector<Eigen::Vector2d> ref_coords, const ConstitutiveModel& material,
+  ContinuumElement(int label, const ElementType& type, std::span<const int> node_indices,
+                   const std::vector<Eigen::Vector2d>& node_coords, const ConstitutiveModel& material,
                    double thickness, const DofMap& dofs, const MaterialData* material_data = nullptr);
+  /// The element keeps a pointer into node_coords: a temporary table would dangle.
+  ContinuumElement(int, const ElementType&, std::span<const int>, std::vector<Eigen::Vector2d>&&,
+                   const ConstitutiveModel&, double, const DofMap&, const MaterialData* = nullptr) = delete;
 
   [[nodiscard]] std::span<const int> dofs() const override {
-    return {std::launder(reinterpret_cast<const int*>(storage_.get() + coords_bytes())),
-            static_cast<std::size_t>(2 * n_nodes_)};
+    return {storage_.get(), static_cast<std::size_t>(2 * n_nodes_)};
   }
 
   /// Small strain when !s.nlgeom, total Lagrangian when s.nlgeom. Throws
@@ -87,7 +94,7 @@ class ContinuumElement final : public Contribution {
   void save_state(std::vector<double>& out) const override;
   void load_state(std::span<const double>& in) override;
   /// True when the material keeps a history at the integration points.
-  [[nodiscard]] bool has_history() const { return n_state_ > 0; }
+  [[nodiscard]] bool has_history() const { return history_ != nullptr; }
   /// Plastic dissipation up to the state s [energy] (total over 2 pi for
   /// axisymmetry): the committed records' when they were committed at s.u,
   /// else theirs plus the increment to the trial state of s.u (as
@@ -176,12 +183,22 @@ class ContinuumElement final : public Contribution {
     double R = 0;     ///< X of the point (the radius for axisymmetry)
     double Y = 0;     ///< Y of the point
   };
-  /// Fills `g` for integration point q; returns det J (checked > 0 at construction).
-  double point_geometry(int q, PointGeometry& g) const;
+  /// Reference coordinates of the element's nodes [length], ABAQUS order
+  /// (the first n_nodes_ entries), gathered from the mesh's table. NN: the
+  /// node count when the caller knows it at compile time (the kernels), else
+  /// Eigen::Dynamic; the same values either way.
+  using NodeCoordinates = std::array<Eigen::Vector2d, kMaxElementNodes>;
+  template <int NN = Eigen::Dynamic>
+  [[nodiscard]] NodeCoordinates reference_coords() const;
+  /// Fills `g` for integration point q from the nodes' reference coordinates X
+  /// (reference_coords()); returns det J (checked > 0 at construction). NN as
+  /// for reference_coords: the same values, bit for bit, in fewer instructions.
+  template <int NN = Eigen::Dynamic>
+  double point_geometry(int q, const NodeCoordinates& X, PointGeometry& g) const;
   /// Local displacement vector (u_0x, u_0y, u_1x, ...).
   void gather(const Eigen::VectorXd& u, Eigen::Ref<Eigen::VectorXd> ue) const;
   /// Evaluates point q (geometry g) from local displacements ue and its
-  /// committed history; the trial state goes to `trial` (n_state_ values).
+  /// committed history; the trial state goes to `trial` (n_state() values).
   /// `mean`: for a hybrid element the element_mean() of ue (ignored otherwise).
   void material_point(int q, const PointGeometry& g, const double* ue, const EvaluationState& s, MaterialPoint& mp,
                       std::span<double> trial, double mean = 0) const;
@@ -213,42 +230,39 @@ class ContinuumElement final : public Contribution {
   static constexpr int kRecordStress = 0, kRecordStrain = 6, kRecordEnergy = 12, kRecordDissipation = 13,
                        kRecordState = 14;
 
-  /// Reference coordinates of the nodes [length], ABAQUS order.
-  [[nodiscard]] std::span<const Eigen::Vector2d> ref_coords() const {
-    return {std::launder(reinterpret_cast<const Eigen::Vector2d*>(storage_.get())),
-            static_cast<std::size_t>(n_nodes_)};
-  }
-  /// Bytes of storage_ taken by the reference coordinates (the dofs follow).
-  [[nodiscard]] std::size_t coords_bytes() const {
-    return static_cast<std::size_t>(n_nodes_) * sizeof(Eigen::Vector2d);
-  }
+  /// Material state values per integration point (0 without history).
+  [[nodiscard]] int n_state() const { return history_ == nullptr ? 0 : history_->n_state; }
 
   /// The committed records and their stamp; only for a material with history.
   struct History {
-    std::vector<double> records;      ///< n_points_ x (kRecordState + n_state_)
+    int n_state = 0;                  ///< material state values per point (> 0)
+    std::vector<double> records;      ///< n_points_ x (kRecordState + n_state)
     std::vector<double> committed_u;  ///< local displacements of the records (the stamp, with the time)
     double committed_time = 0;        ///< total time of the records (the stamp, with committed_u)
   };
 
-  // The object is kept small (about 90 bytes; one per mesh element, 115k at
-  // the 230k-dof Hertz deck): the type is shared, the name kept only when it
-  // is not the label, the per-node arrays in one block and the history only
+  // The object is kept small (88 bytes; one per mesh element, 115k at the
+  // 230k-dof Hertz deck): the type is shared, the name kept only when it is
+  // not the label, the reference coordinates read from the mesh's table, the
+  // per-node arrays in one block, and the history (with its state count) only
   // for a material that has one. See docs/performance.md, "ContinuumElement
-  // and the model's tables made smaller".
+  // and the model's tables made smaller" and "Elements read the mesh's
+  // coordinates".
   int label_;
-  int n_state_;                        ///< material state values per point
   QuadratureRule rule_;
   std::uint8_t n_nodes_;
   std::uint8_t n_points_;
   const ElementType* type_;            ///< interned (intern_element_type)
   std::unique_ptr<const std::string> name_;  ///< set_name(); null: the label
-  /// One block: n_nodes_ reference coordinates (Eigen::Vector2d), then the
-  /// 2 n_nodes_ dofs (x, y per node), then the n_nodes_ mesh node indices (int).
-  std::unique_ptr<std::byte[]> storage_;
+  /// One block: the 2 n_nodes_ dofs (x, y per node), then the n_nodes_ mesh
+  /// node indices (int).
+  std::unique_ptr<int[]> storage_;
+  /// The mesh's reference coordinates, indexed by node index (not owned).
+  const Eigen::Vector2d* node_coords_;
   const ConstitutiveModel* material_;
   const MaterialData* material_data_;  ///< for mass(); may be null
   double thickness_;
-  std::unique_ptr<History> history_;   ///< null without history (n_state_ == 0)
+  std::unique_ptr<History> history_;   ///< null without history (n_state() == 0)
   const NodalTemperatureField* temperatures_ = nullptr;  ///< nodal temperatures; null: all 0
 };
 

@@ -21,8 +21,9 @@ double ContinuumElement::element_mean(const double* ue, bool nlgeom) const {
   const bool axisymmetric = type_->family == Family::Axisymmetric;
   PointGeometry g;
   double volume = 0, current = 0;  // V; v (finite) or the integral of tr eps (small)
+  const NodeCoordinates X = reference_coords();
   for (int q = 0; q < n_points_; ++q) {
-    point_geometry(q, g);
+    point_geometry(q, X, g);
     const PointShape p{g.N, g.G, g.R, axisymmetric};
     volume += g.dV;
     if (nlgeom) {
@@ -67,15 +68,16 @@ void ContinuumElement::evaluate_hybrid_small(const double* ue, const EvaluationS
   std::array<PointGeometry, kMaxPoints> geo;
   double volume = 0;
   ElementVector b_bar = ElementVector::Zero(nd);
+  const NodeCoordinates X = reference_coords();
   for (int q = 0; q < n_points_; ++q) {
-    point_geometry(q, geo[q]);
+    point_geometry(q, X, geo[q]);
     b_bar += volumetric_row(PointShape{geo[q].N, geo[q].G, geo[q].R, axisymmetric}) * geo[q].dV;
     volume += geo[q].dV;
   }
   b_bar /= volume;
   const double mean = element_mean(ue, false);
   MaterialPoint mp;
-  std::vector<double> trial(static_cast<std::size_t>(n_state_));  // discarded: evaluate() commits nothing
+  std::vector<double> trial(static_cast<std::size_t>(n_state()));  // discarded: evaluate() commits nothing
   for (int q = 0; q < n_points_; ++q) {
     const PointGeometry& g = geo[q];
     const PointShape p{g.N, g.G, g.R, axisymmetric};
@@ -102,8 +104,9 @@ void ContinuumElement::evaluate_hybrid_finite(const double* ue, const Evaluation
   double volume = 0, current = 0;
   ElementVector dv = ElementVector::Zero(nd);  // dv/du
   ElementMatrix d2v = ElementMatrix::Zero(need_tangent ? nd : 0, need_tangent ? nd : 0);  // d^2 v/du^2
+  const NodeCoordinates X = reference_coords();
   for (int q = 0; q < n_points_; ++q) {
-    point_geometry(q, geo[q]);
+    point_geometry(q, X, geo[q]);
     const PointShape p{geo[q].N, geo[q].G, geo[q].R, axisymmetric};
     vol[q] = volume_point(p, ue);
     const double w = vol[q].J * geo[q].dV;
@@ -119,7 +122,7 @@ void ContinuumElement::evaluate_hybrid_finite(const double* ue, const Evaluation
   ElementMatrix d2ln_theta;
   if (need_tangent) d2ln_theta = d2v / current - dln_theta * dln_theta.transpose();
   MaterialPoint mp;
-  std::vector<double> trial(static_cast<std::size_t>(n_state_));  // discarded: evaluate() commits nothing
+  std::vector<double> trial(static_cast<std::size_t>(n_state()));  // discarded: evaluate() commits nothing
   for (int q = 0; q < n_points_; ++q) {
     const PointGeometry& g = geo[q];
     const PointShape p{g.N, g.G, g.R, axisymmetric};

@@ -8,6 +8,7 @@
 /// triangle, 4 on the square and 2 on the line [-1,1].
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -16,7 +17,7 @@
 namespace tether {
 
 /// Integration rules of the 2D reference elements.
-enum class QuadratureRule {
+enum class QuadratureRule : std::uint8_t {
   Triangle1,  ///< centroid, exact for degree 1
   Triangle3,  ///< interior 3-point rule, exact for degree 2
   Quad2x2,    ///< 2x2 Gauss, exact for degree 3 in each direction

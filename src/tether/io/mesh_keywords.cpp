@@ -61,7 +61,8 @@ int element_node(const Model& m, const std::string& field, const std::string& la
 void check_new_element_label(const DeckState& state, int label, const SourceLocation& at) {
   const Model& m = state.model;
   std::string before;
-  if (m.element_index.count(label)) before = m.elements[static_cast<std::size_t>(m.element_index.at(label))].where.str();
+  if (m.element_index.count(label))
+    before = m.location(m.elements[static_cast<std::size_t>(m.element_index.at(label))].where).str();
   if (state.line_index.count(label)) before = state.lines[static_cast<std::size_t>(state.line_index.at(label))].where.str();
   if (!before.empty())
     throw InputError(at, "duplicate element " + std::to_string(label) +
@@ -153,7 +154,7 @@ void handle_element(DeckState& state, const KeywordBlock& block, const Parameter
     Element e;
     e.id = parse_label(row.fields[0], row.where, "element label");
     e.type = *type;
-    e.where = row.where;
+    e.where = m.deck_line(row.where);
     for (std::size_t i = 1; i < row.fields.size(); ++i)
       e.nodes.push_back(element_node(m, row.fields[i], row.fields[0], row.where));
     check_new_element_label(state, e.id, row.where);

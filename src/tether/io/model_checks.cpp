@@ -74,8 +74,9 @@ void resolve_sections(DeckState& state) {
   }
   for (const Element& e : m.elements)
     if (e.section < 0)
-      throw InputError(e.where, "element " + label_text(m.instances, e.id) + " (" + std::string(e.type.name) +
-                                    ") has no section: expected a *SOLID SECTION whose ELSET contains it");
+      throw InputError(m.location(e.where), "element " + label_text(m.instances, e.id) + " (" +
+                                                std::string(e.type.name) +
+                                                ") has no section: expected a *SOLID SECTION whose ELSET contains it");
 }
 
 void check_materials(const Model& m) {
@@ -93,19 +94,21 @@ void check_geometry(const Model& m) {
       xmin = std::min(xmin, x.x()), xmax = std::max(xmax, x.x());
       ymin = std::min(ymin, x.y()), ymax = std::max(ymax, x.y());
       if (e.type.family == Family::Axisymmetric && x.x() < 0)
-        throw InputError(e.where, "axisymmetric element " + label_text(m.instances, e.id) + " has node " +
-                                      label_text(m.instances, m.node_ids[static_cast<std::size_t>(n)]) +
-                                      " at radius r = x < 0: expected r >= 0");
+        throw InputError(m.location(e.where), "axisymmetric element " + label_text(m.instances, e.id) +
+                                                  " has node " +
+                                                  label_text(m.instances, m.node_ids[static_cast<std::size_t>(n)]) +
+                                                  " at radius r = x < 0: expected r >= 0");
     }
     const double scale = std::max((xmax - xmin) * (xmax - xmin), (ymax - ymin) * (ymax - ymin));
     const auto dets = corner_jacobians(m, e);
     for (std::size_t c = 0; c < dets.size(); ++c)
       if (!(dets[c] > 1e-12 * scale))
-        throw InputError(e.where, "element " + label_text(m.instances, e.id) + " (" + std::string(e.type.name) +
-                                      ") is inverted or degenerate: Jacobian " + std::to_string(dets[c]) +
-                                      " <= 0 at corner node " +
-                                      label_text(m.instances, m.node_ids[static_cast<std::size_t>(e.nodes[c])]) +
-                                      " (expected corners numbered counter-clockwise and a convex shape)");
+        throw InputError(m.location(e.where), "element " + label_text(m.instances, e.id) + " (" +
+                                                  std::string(e.type.name) + ") is inverted or degenerate: Jacobian " +
+                                                  std::to_string(dets[c]) + " <= 0 at corner node " +
+                                                  label_text(m.instances,
+                                                             m.node_ids[static_cast<std::size_t>(e.nodes[c])]) +
+                                                  " (expected corners numbered counter-clockwise and a convex shape)");
   }
 }
 

@@ -27,14 +27,23 @@
 
 namespace tether {
 
+/// A deck line kept in 8 bytes: an index into Model::source_files and the
+/// 1-based line number. Model::location() turns it into the SourceLocation
+/// (file:line) that messages print. For what there are many of (elements),
+/// where a SourceLocation (a file name string each, 40 bytes) is too much.
+struct DeckLine {
+  int file = -1;  ///< index into Model::source_files; -1: no file (location() gives an empty name)
+  int line = 0;   ///< 1-based; 0: unknown
+};
+
 /// A continuum element of the mesh.
-/// (The two ints first: 96 bytes, not 104, one per mesh element.)
+/// (64 bytes, one per mesh element: the two ints side by side, the deck line as a DeckLine.)
 struct Element {
   int id = 0;                ///< user label
   int section = -1;          ///< index into Model::sections, -1 until assigned
   ElementType type;          ///< from the catalogue
   std::vector<int> nodes;    ///< node indices (not labels), ABAQUS order
-  SourceLocation where;
+  DeckLine where;            ///< the data line that defined it (Model::location(where): file:line)
 };
 
 /// An element face (edge in 2D), ABAQUS face id S1..S4 stored 0-based.
@@ -348,8 +357,27 @@ struct Model {
   }
   std::optional<RestartRead> restart_read;  ///< `*RESTART, READ`, when given
 
+  /// The files that DeckLine::file indexes (the deck and its *INCLUDEs, named
+  /// as their SourceLocations name them), each once.
+  std::vector<std::string> source_files;
+
   [[nodiscard]] int n_nodes() const { return static_cast<int>(coords.size()); }
   [[nodiscard]] int n_elements() const { return static_cast<int>(elements.size()); }
+
+  /// file:line of a DeckLine: the same SourceLocation as the one deck_line()
+  /// was given (file "" and the line for a DeckLine without a file).
+  [[nodiscard]] SourceLocation location(const DeckLine& at) const {
+    if (at.file < 0) return {std::string(), at.line};
+    return {source_files[static_cast<std::size_t>(at.file)], at.line};
+  }
+  /// `where` as a DeckLine; its file is added to source_files when new (the
+  /// search starts at the last file added: consecutive lines share a file).
+  DeckLine deck_line(const SourceLocation& where) {
+    for (std::size_t k = source_files.size(); k-- > 0;)
+      if (source_files[k] == where.file) return {static_cast<int>(k), where.line};
+    source_files.push_back(where.file);
+    return {static_cast<int>(source_files.size() - 1), where.line};
+  }
 };
 
 }  // namespace tether
