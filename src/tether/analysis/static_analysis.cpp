@@ -200,9 +200,20 @@ bool StaticAnalysis::run_step(int index, AnalysisSummary& summary) {
   std::unique_ptr<RestartState> resumed;
   if (resume_ && !resume_->step_completed && resume_->step == index + 1) resumed = std::move(resume_);
   resume_.reset();
-  const Eigen::VectorXd u_step_start =
-      resumed ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(resumed->u_step_start.data(), u_.size())) : u_;
-  StepSystem system(disc, step, make_step_loads(step, disc.dofs(), u_step_start, cload_end_, pressure_end_), u_,
+  // The unknowns at the step's start: the loads ramp from them, and the
+  // restart states saved within the step hold them. Without restart output
+  // (and not resumed) no copy is kept: u_ is the start when the loads are
+  // made, and nothing reads it later (a vector of all dofs less in memory
+  // through the step).
+  Eigen::VectorXd u_step_start;
+  if (resumed)
+    u_step_start = Eigen::Map<const Eigen::VectorXd>(resumed->u_step_start.data(), u_.size());
+  else if (step.restart_frequency > 0)
+    u_step_start = u_;
+  StepSystem system(disc, step,
+                    make_step_loads(step, disc.dofs(), u_step_start.size() > 0 ? u_step_start : u_, cload_end_,
+                                    pressure_end_),
+                    u_,
                     total_time_, SolverSettings{options_.solver, options_.condense_contact, options_.memory_budget_mb,
                                    options_.reuse_linear_bulk, options_.mortar_condensation,
                                    options_.condense_any_size},

@@ -53,10 +53,18 @@ StepSystem::StepSystem(const Discretization& discretization, const Step& step, S
     make_solver({});
   } else {
     std::vector<int> interface = condensation_interface(map);
-    assembler_ = std::make_unique<Assembler>(contributions_, std::move(map), interface, lower_triangle());
+    // The assembler takes the list (contributions() reads it there): one
+    // copy, not two; and which contributions it holds linear, before it
+    // builds its pattern.
+    const bool lower = lower_triangle();
+    std::vector<std::uint8_t> linear = settings_.reuse_linear_bulk && bulk_linear_ ? linear_flags() : std::vector<std::uint8_t>{};
+    // The inertia's tangent M / (beta dt^2) + C gamma / (beta dt) changes with the increment.
+    const bool keyed = step_.procedure == StepProcedure::ImplicitDynamic;
+    assembler_ = std::make_unique<Assembler>(std::move(contributions_), std::move(map), interface, lower,
+                                             std::move(linear), keyed);
+    contributions_ = {};
     check_constraints(discretization_, equations(), EvaluationState{u, u, 0, total_time, 0, step_.nlgeom});
     make_solver(std::move(interface));
-    if (settings_.reuse_linear_bulk && bulk_linear_) hold_linear_bulk();
   }
 
   // MUMPS here is LDLT and CHOLMOD Cholesky: both read one triangle only.
@@ -114,8 +122,11 @@ void StepSystem::make_inertia() {
 
 void StepSystem::gather_contributions() {
   const Discretization& disc = discretization_;
+  std::size_t n_contact_nodes = 0;
+  for (const auto& pair : disc.contact_pairs()) n_contact_nodes += 1 + pair->nodes().size();
+  for (const auto& pair : disc.mortar_pairs()) n_contact_nodes += 1 + pair->nodes().size();
   contributions_.reserve(disc.elements().size() + disc.constraints().size() + disc.user_constraints().size() +
-                         pressures_.size());
+                         n_contact_nodes + pressures_.size() + inertia_.size() + body_forces_->forces().size());
   for (const auto& e : disc.elements()) contributions_.push_back(e.get());
   for (const auto& c : disc.constraints()) contributions_.push_back(c.get());
   for (const auto& c : disc.user_constraints()) contributions_.push_back(c.get());
@@ -141,11 +152,10 @@ void StepSystem::gather_contributions() {
                  std::all_of(contact_end, contributions_.end(), linear);
 }
 
-void StepSystem::hold_linear_bulk() {
+std::vector<std::uint8_t> StepSystem::linear_flags() const {
   std::vector<std::uint8_t> linear(contributions_.size());
   for (std::size_t k = 0; k < contributions_.size(); ++k) linear[k] = contributions_[k]->linear_in_u(step_.nlgeom);
-  // The inertia's tangent M / (beta dt^2) + C gamma / (beta dt) changes with the increment.
-  assembler_->set_linear(std::move(linear), step_.procedure == StepProcedure::ImplicitDynamic);
+  return linear;
 }
 
 std::vector<bool> StepSystem::prescribed_dofs() {

@@ -12,6 +12,7 @@
 /// and solve. See docs/theory/procedures.md.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -77,7 +78,9 @@ class StepSystem {
   /// Everything assembled, in assembly order: elements, constraints, user
   /// constraints, each contact pair followed by its nodes, pressures, body forces, and in
   /// an implicit dynamic step the elements' inertia.
-  [[nodiscard]] const std::vector<Contribution*>& contributions() const { return contributions_; }
+  [[nodiscard]] const std::vector<Contribution*>& contributions() const {
+    return assembler_ ? assembler_->contributions() : contributions_;
+  }
   /// The load contributions (pressures, body forces): they size Newton's force scale.
   [[nodiscard]] const std::vector<const Contribution*>& load_contributions() const { return load_contributions_; }
 
@@ -129,8 +132,10 @@ class StepSystem {
   /// symmetric, and every solver the step may use reads one triangle.
   [[nodiscard]] bool lower_triangle() const;
   void make_solver(std::vector<int> interface);
-  /// Tells the assembler which contributions are linear (bulk_linear() steps only).
-  void hold_linear_bulk();
+  /// Per contribution (of contributions_, before the assembler takes them):
+  /// linear in u under the step's NLGEOM, for Assembler's `linear`
+  /// (bulk_linear() steps only).
+  [[nodiscard]] std::vector<std::uint8_t> linear_flags() const;
 
   const Discretization& discretization_;
   const Step& step_;
@@ -140,7 +145,7 @@ class StepSystem {
   NewmarkIncrement newmark_;
   std::vector<std::unique_ptr<ElementInertia>> inertia_;
   std::unique_ptr<StepBodyForces> body_forces_;
-  std::vector<Contribution*> contributions_;
+  std::vector<Contribution*> contributions_;  ///< until the assembler takes them (explicit steps: for good)
   std::vector<const Contribution*> load_contributions_;
   std::unique_ptr<Assembler> assembler_;
   std::unique_ptr<EquationMap> explicit_equations_;  ///< explicit steps' equations (no assembler_)

@@ -19,11 +19,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 Assembler::Assembler(std::vector<Contribution*> contributions, EquationMap equations,
-                     std::vector<int> reserved_block, bool lower_triangle)
+                     std::vector<int> reserved_block, bool lower_triangle, std::vector<std::uint8_t> linear,
+                     bool keyed_on_dt)
     : contributions_(std::move(contributions)), equations_(std::move(equations)),
       reserved_block_(std::move(reserved_block)), lower_(lower_triangle) {
   std::sort(reserved_block_.begin(), reserved_block_.end());
   reserved_block_.erase(std::unique(reserved_block_.begin(), reserved_block_.end()), reserved_block_.end());
+  if (!linear.empty()) assign_linear(std::move(linear), keyed_on_dt);
   build_pattern();
 }
 
@@ -52,24 +54,64 @@ int Assembler::find_position(int row, int col) const {
   return it != end && *it == row ? static_cast<int>(it - inner) : -1;
 }
 
-std::span<const int> Assembler::placed_dofs(std::size_t c) const {
+std::span<const int> Assembler::placed_dofs(std::size_t k) const {
+  const auto c = static_cast<std::size_t>(built_contributions_[k]);
   if (relocated_slot_[c] >= 0) return relocated_dofs_[static_cast<std::size_t>(relocated_slot_[c])];
-  return {built_dofs_.data() + built_offsets_[c], built_offsets_[c + 1] - built_offsets_[c]};
+  return {built_dofs_.data() + built_offsets_[k], built_offsets_[k + 1] - built_offsets_[k]};
+}
+
+void Assembler::record_built_dofs() {
+  built_contributions_.clear();
+  std::size_t total = 0;
+  for (std::size_t c = 0; c < contributions_.size(); ++c)
+    if (linear_.empty() || !linear_[c])  // held linear ones keep their dofs all step
+      built_contributions_.push_back(static_cast<int>(c)), total += contributions_[c]->dofs().size();
+  built_contributions_.shrink_to_fit();
+  built_offsets_.assign(1, 0);
+  built_offsets_.reserve(built_contributions_.size() + 1);
+  std::vector<int>().swap(built_dofs_);
+  built_dofs_.reserve(total);
+  for (int c : built_contributions_) {
+    const auto dofs = contributions_[static_cast<std::size_t>(c)]->dofs();
+    built_dofs_.insert(built_dofs_.end(), dofs.begin(), dofs.end());
+    built_offsets_.push_back(built_dofs_.size());
+  }
+}
+
+void Assembler::drop_linear_built_dofs() {
+  std::vector<int> contributions, dofs;
+  std::vector<std::size_t> offsets{0};
+  std::size_t k = 0;  // walks built_contributions_ (ascending) beside c
+  for (std::size_t c = 0; c < contributions_.size(); ++c) {
+    while (k < built_contributions_.size() && built_contributions_[k] < static_cast<int>(c)) ++k;
+    if (linear_[c]) continue;
+    // One held linear before (set_linear() again) kept its dofs: its list now is the one placed.
+    const bool built = k < built_contributions_.size() && built_contributions_[k] == static_cast<int>(c);
+    const std::span<const int> list =
+        built ? std::span<const int>(built_dofs_.data() + built_offsets_[k], built_offsets_[k + 1] - built_offsets_[k])
+              : contributions_[c]->dofs();
+    contributions.push_back(static_cast<int>(c));
+    dofs.insert(dofs.end(), list.begin(), list.end());
+    offsets.push_back(dofs.size());
+  }
+  built_contributions_ = std::move(contributions);
+  built_dofs_ = std::move(dofs);
+  built_offsets_ = std::move(offsets);
 }
 
 bool Assembler::relocate() {
   std::vector<int> changed;
-  for (std::size_t c = 0; c < contributions_.size(); ++c) {
-    if (!linear_.empty() && linear_[c]) continue;  // the same dofs all step
+  for (std::size_t k = 0; k < built_contributions_.size(); ++k) {
+    const auto c = static_cast<std::size_t>(built_contributions_[k]);
     const auto now = contributions_[c]->dofs();
-    const auto before = placed_dofs(c);
+    const auto before = placed_dofs(k);
     if (!std::equal(now.begin(), now.end(), before.begin(), before.end())) changed.push_back(static_cast<int>(c));
   }
   std::vector<std::vector<int>> placed(changed.size());
   for (std::size_t k = 0; k < changed.size(); ++k) {
     const auto dofs = contributions_[static_cast<std::size_t>(changed[k])]->dofs();
     const std::size_t m = dofs.size();
-    if (weighted_index_[static_cast<std::size_t>(changed[k])] >= 0) return false;
+    if (weighted_slot(changed[k]) >= 0) return false;
     std::vector<int>& pos = placed[k];
     pos.assign(m * m, -1);
     for (std::size_t b = 0; b < m; ++b) {
@@ -123,8 +165,8 @@ void Assembler::for_each_entry(int c, F&& f) const {
   const auto dofs = contributions_[static_cast<std::size_t>(c)]->dofs();
   const auto m = static_cast<Eigen::Index>(dofs.size());
   const int slot = relocated_slot_[static_cast<std::size_t>(c)];
-  if (slot < 0 && weighted_index_[static_cast<std::size_t>(c)] >= 0) {
-    const WeightedScatter& w = weighted_[static_cast<std::size_t>(weighted_index_[static_cast<std::size_t>(c)])];
+  if (slot < 0 && weighted_slot(c) >= 0) {
+    const WeightedScatter& w = weighted_[static_cast<std::size_t>(weighted_slot(c))];
     for (Eigen::Index e = 0; e < m * m; ++e)
       for (int k = w.start[e]; k < w.start[e + 1]; ++k) f(w.pos[k], e, w.weight[k]);
     return;
@@ -137,14 +179,21 @@ void Assembler::for_each_entry(int c, F&& f) const {
       const Eigen::Index e0 = 2 * l * m;  // columns 2l and 2l + 1
       const Eigen::Index e1 = e0 + m;
       int len = -1, diagonal = -1;
-      for (Eigen::Index k = 0; k < h; ++k) {
-        const int p = pos[l * h + k];
+      // Lower triangle: one position per pair of nodes, at packed_block(k, l):
+      // l (l + 1) / 2 + k up to k = l, then k (k + 1) / 2 + l (steps of k).
+      Eigen::Index at = lower_ ? l * (l + 1) / 2 : l * h;
+      for (Eigen::Index k = 0; k < h; at += lower_ && k >= l ? k + 1 : 1, ++k) {
+        const int p = pos[at];
         if (p < 0) continue;
         if (len < 0) {
           const int first = equations_.equation(dofs[static_cast<std::size_t>(2 * l)]);
           len = outer[first + 1] - outer[first];
           diagonal = outer[first];
         }
+        // The pair's position is that of its block below the diagonal: in
+        // column l only for that block; the other is skipped, as it was when
+        // each block had a position of its own (-1).
+        if (lower_ && static_cast<unsigned>(p - diagonal) >= static_cast<unsigned>(len)) continue;
         f(p, e0 + 2 * k, 1.0);
         f(p + 1, e0 + 2 * k + 1, 1.0);
         if (!lower_) {
@@ -167,7 +216,7 @@ void Assembler::for_each_entry(int c, F&& f) const {
     if (pos[e] >= 0) f(pos[e], e, 1.0);
 }
 
-void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
+void Assembler::assign_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
   if (linear.size() != contributions_.size())
     throw std::invalid_argument("Assembler::set_linear: one flag per contribution expected");
   linear_ = std::move(linear);
@@ -176,6 +225,11 @@ void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
     if (!linear_[c]) connecting_.push_back(static_cast<int>(c));
   keyed_on_dt_ = keyed_on_dt;
   any_nonlinear_ = std::find(linear_.begin(), linear_.end(), std::uint8_t{0}) != linear_.end();
+}
+
+void Assembler::set_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt) {
+  assign_linear(std::move(linear), keyed_on_dt);
+  drop_linear_built_dofs();
   held_ = false;
   ++revision_, ++outer_revision_, ++hold_generation_;
 }

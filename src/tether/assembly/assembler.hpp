@@ -59,8 +59,11 @@ class Assembler {
   /// values and row indices), and the held tangent multiplies vectors as the
   /// symmetric matrix it stands for. The solvers must then read one triangle
   /// (LinearSolver::factorize with `symmetric`).
+  /// `linear`, `keyed_on_dt`: as set_linear() right after construction, and
+  /// the pattern is built knowing them (the held linear contributions' dof
+  /// lists are never copied); empty: none held.
   Assembler(std::vector<Contribution*> contributions, EquationMap equations, std::vector<int> reserved_block = {},
-            bool lower_triangle = false);
+            bool lower_triangle = false, std::vector<std::uint8_t> linear = {}, bool keyed_on_dt = false);
 
   /// Replaces the equation map (prescribed set changed between steps); rebuilds the pattern.
   void set_equations(EquationMap equations);
@@ -156,6 +159,8 @@ class Assembler {
   [[nodiscard]] bool lower_triangle() const { return lower_; }
 
   [[nodiscard]] const EquationMap& equations() const { return equations_; }
+  /// The contributions, in the constructor's order.
+  [[nodiscard]] const std::vector<Contribution*>& contributions() const { return contributions_; }
   /// The tangent's structure (tangent()).
   [[nodiscard]] const SparseMatrix& pattern() const { return tangent_; }
   [[nodiscard]] int n_colours() const { return static_cast<int>(colours_.size()); }
@@ -166,6 +171,11 @@ class Assembler {
   /// Contributions scattered by 2x2 node blocks (one position per block; see build_pattern).
   [[nodiscard]] int n_blocked() const { return static_cast<int>(std::count(blocked_.begin(), blocked_.end(), 1)); }
   [[nodiscard]] int relocations() const { return relocations_; }
+  /// Scatter positions stored for the contributions placed at the last
+  /// pattern build (their memory: 4 bytes each), and the dof lists kept to
+  /// find re-paired contributions (ints; none for held linear ones).
+  [[nodiscard]] std::size_t n_positions() const { return positions_.size(); }
+  [[nodiscard]] std::size_t n_kept_dofs() const { return built_dofs_.size(); }
 
  private:
   /// Below this many contributions a colour is assembled (and the scatter
@@ -176,10 +186,30 @@ class Assembler {
   /// differs from the one last placed; false (nothing changed) when an entry
   /// is missing or a contribution is weighted.
   bool relocate();
-  /// The dof list contribution c was last placed with.
-  [[nodiscard]] std::span<const int> placed_dofs(std::size_t c) const;
+  /// set_linear() without its bookkeeping of a built pattern.
+  void assign_linear(std::vector<std::uint8_t> linear, bool keyed_on_dt);
+  /// The dof list contribution built_contributions_[k] was last placed with.
+  [[nodiscard]] std::span<const int> placed_dofs(std::size_t k) const;
+  /// At a pattern build: the dof lists of the contributions whose lists may
+  /// change (all; after set_linear() those not linear).
+  void record_built_dofs();
+  /// set_linear(): forgets the lists of the contributions now held linear.
+  void drop_linear_built_dofs();
   /// Value-array index of entry (row, col), -1 when not in the pattern.
   [[nodiscard]] int find_position(int row, int col) const;
+  /// Index of the position of nodes k and l (either order) of a blocked
+  /// contribution in a lower triangle: the pairs k <= l packed by columns.
+  [[nodiscard]] static std::size_t packed_block(std::size_t k, std::size_t l) {
+    return k <= l ? l * (l + 1) / 2 + k : k * (k + 1) / 2 + l;
+  }
+  /// Fills the packed positions `pos` of a blocked contribution over `dofs`
+  /// in a lower triangle; position(row, col) is the value index of an entry.
+  template <class Position>
+  void place_packed_blocks(std::span<const int> dofs, int* pos, const Position& position) const;
+  /// Index into weighted_ of contribution c, -1 when it scatters by positions.
+  [[nodiscard]] int weighted_slot(int c) const {
+    return weighted_index_.empty() ? -1 : weighted_index_[static_cast<std::size_t>(c)];
+  }
   /// Free equations a contribution's entries land in (through T), sorted, unique.
   void equations_of(const Contribution& c, std::vector<int>& out) const;
   /// Calls f(p, e, w) for every value-array index p that local tangent entry
@@ -239,9 +269,11 @@ class Assembler {
   /// A blocked contribution (blocked_[c], dofs in node pairs) stores one index
   /// per 2x2 block, positions_[offsets_[c] + (b/2) * (n/2) + a/2] for even a, b
   /// (see build_pattern): a quarter of the memory. With lower_, -1 for the
-  /// entries (blocks) above the diagonal.
+  /// entries above the diagonal, and a blocked contribution stores one index
+  /// per pair of nodes (packed_block), that of the pair's block below the
+  /// diagonal: 10 instead of 16 for a CPE4.
   std::vector<int> positions_;
-  std::vector<std::size_t> offsets_;
+  std::vector<std::uint32_t> offsets_;  ///< per contribution, into positions_ (size + 1)
   std::vector<std::uint8_t> blocked_;
   /// Contributions touching a dependent (eliminated) dof scatter through the
   /// map T: local entry e = b * n + a adds weight[k] * k_e to values[pos[k]]
@@ -251,7 +283,9 @@ class Assembler {
     std::vector<int> pos;
     std::vector<double> weight;
   };
-  std::vector<int> weighted_index_;  ///< per contribution: index into weighted_ or -1 (plain positions)
+  /// Per contribution: index into weighted_ or -1 (plain positions); empty
+  /// when no dof is dependent (weighted_slot()).
+  std::vector<int> weighted_index_;
   std::vector<WeightedScatter> weighted_;
   /// Contribution indices per colour; the last colour may hold contributions
   /// that found no free colour and is then assembled serially.
@@ -264,9 +298,13 @@ class Assembler {
   std::vector<std::vector<int>> relocated_dofs_;  ///< the dof lists they were placed with
   /// Dof lists at the last pattern build (a coordinating contribution such as
   /// a contact pair reports the change for the contributions it re-pairs, so
-  /// the assembler finds the changed ones by comparison).
+  /// the assembler finds the changed ones by comparison), of the
+  /// contributions built_contributions_ (ascending): all of them, or after
+  /// set_linear() those not linear (a linear one keeps its dofs all step, see
+  /// Contribution::linear_in_u; the elements' lists are not copied then).
+  std::vector<int> built_contributions_;
   std::vector<int> built_dofs_;
-  std::vector<std::size_t> built_offsets_;
+  std::vector<std::size_t> built_offsets_;  ///< per built_contributions_ entry, into built_dofs_ (size + 1)
   std::vector<int> relocated_order_;              ///< contribution indices, assembled in this order
   std::vector<int> reserved_block_;
   bool lower_ = false;  ///< the tangent is stored as its lower triangle

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 #include "tether/assembly/assembler.hpp"
@@ -32,10 +33,31 @@ void keep_lower(std::vector<int>& outer, std::vector<int>& inner) {
 
 void Assembler::equations_of(const Contribution& c, std::vector<int>& out) const {
   out.clear();
-  for (int d : c.dofs())
-    for (const EquationWeight& w : equations_.weights(d)) out.push_back(w.equation);
+  if (!equations_.has_dependents()) {  // T is the identity on the free dofs
+    for (int d : c.dofs())
+      if (const int e = equations_.equation(d); e >= 0) out.push_back(e);
+  } else {
+    for (int d : c.dofs())
+      for (const EquationWeight& w : equations_.weights(d)) out.push_back(w.equation);
+  }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+template <class Position>
+void Assembler::place_packed_blocks(std::span<const int> dofs, int* pos, const Position& position) const {
+  // Of the blocks (row k, column l) and (row l, column k) of two nodes, the
+  // one whose first equation of the row is the larger lies below the
+  // diagonal (the pairs' equations are disjoint); a node's own block is on it.
+  const std::size_t h = dofs.size() / 2;
+  for (std::size_t l = 0; l < h; ++l) {
+    const int el = equations_.equation(dofs[2 * l]);
+    if (el < 0) continue;
+    for (std::size_t k = 0; k <= l; ++k) {
+      const int ek = equations_.equation(dofs[2 * k]);
+      if (ek >= 0) pos[packed_block(k, l)] = ek >= el ? position(ek, el) : position(el, ek);
+    }
+  }
 }
 
 void Assembler::build_pattern() {
@@ -52,13 +74,7 @@ void Assembler::build_pattern() {
   relocated_.clear();
   relocated_dofs_.clear();
   relocated_order_.clear();
-  built_offsets_.assign(1, 0);
-  built_dofs_.clear();
-  for (const Contribution* c : contributions_) {
-    const auto dofs = c->dofs();
-    built_dofs_.insert(built_dofs_.end(), dofs.begin(), dofs.end());
-    built_offsets_.push_back(built_dofs_.size());
-  }
+  record_built_dofs();
 
   // 1. Rows per column, with duplicates, then sorted and unique.
   std::vector<std::int64_t> count(n + 1, 0);
@@ -121,9 +137,11 @@ void Assembler::build_pattern() {
     return true;
   };
   offsets_.assign(n_contrib + 1, 0);
-  weighted_index_.assign(n_contrib, -1);
+  std::vector<int>().swap(weighted_index_);
+  if (equations_.has_dependents()) weighted_index_.assign(n_contrib, -1);
   weighted_.clear();
   blocked_.assign(static_cast<std::size_t>(n_contrib), 0);
+  std::size_t n_positions = 0;
   for (int c = 0; c < n_contrib; ++c) {
     const auto dofs = contributions_[c]->dofs();
     const auto m = dofs.size();
@@ -135,15 +153,20 @@ void Assembler::build_pattern() {
     } else {
       blocked_[c] = in_blocks(dofs);
     }
-    offsets_[c + 1] = offsets_[c] + (weighted ? 0 : blocked_[c] ? m * m / 4 : m * m);
+    // Blocked: one position per 2x2 block, or in a lower triangle per pair of nodes (packed_block).
+    const std::size_t h = m / 2;
+    n_positions += weighted ? 0 : !blocked_[c] ? m * m : lower_ ? h * (h + 1) / 2 : h * h;
+    if (n_positions > std::numeric_limits<std::uint32_t>::max())
+      throw std::length_error("Assembler: more than 2^32 scatter positions");
+    offsets_[c + 1] = static_cast<std::uint32_t>(n_positions);
   }
-  positions_.assign(offsets_[n_contrib], -1);
+  positions_.assign(n_positions, -1);
   positions_.shrink_to_fit();
 #pragma omp parallel for schedule(dynamic, 256) if (n_contrib >= kParallelThreshold)
   for (int c = 0; c < n_contrib; ++c) {
     const auto dofs = contributions_[c]->dofs();
     const std::size_t m = dofs.size();
-    if (weighted_index_[c] >= 0) {
+    if (weighted_slot(c) >= 0) {
       WeightedScatter& w = weighted_[weighted_index_[c]];
       w.start.assign(m * m + 1, 0);
       for (std::size_t b = 0; b < m; ++b)
@@ -156,6 +179,10 @@ void Assembler::build_pattern() {
             }
           w.start[b * m + a + 1] = static_cast<int>(w.pos.size());
         }
+      continue;
+    }
+    if (blocked_[c] && lower_) {
+      place_packed_blocks(dofs, positions_.data() + offsets_[c], position);
       continue;
     }
     const std::size_t step = blocked_[c] ? 2 : 1, h = m / step;
@@ -188,7 +215,7 @@ void Assembler::build_pattern() {
   for (int c = 0; c < n_contrib; ++c) {
     const auto dofs = contributions_[c]->dofs();
     touched.assign(dofs.begin(), dofs.end());
-    if (weighted_index_[c] >= 0) {
+    if (weighted_slot(c) >= 0) {
       equations_of(*contributions_[c], eqs);
       for (int e : eqs) touched.push_back(equations_.dof(e));
     }

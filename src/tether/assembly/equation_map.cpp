@@ -16,11 +16,9 @@ constexpr double kZero = 1e-12;
 }  // namespace
 
 EquationMap::EquationMap(const std::vector<bool>& prescribed, std::vector<EliminationRow> rows)
-    : equation_(prescribed.size(), -1),
-      prescribed_(prescribed),
-      dependent_index_(prescribed.size(), -1),
-      rows_(std::move(rows)) {
+    : equation_(prescribed.size(), -1), prescribed_(prescribed), rows_(std::move(rows)) {
   const int n = static_cast<int>(prescribed.size());
+  if (!rows_.empty()) dependent_index_.assign(prescribed.size(), -1);
 
   // Eliminate row by row, keeping every expansion in terms of independent dofs.
   for (const EliminationRow& row : rows_) {
@@ -67,26 +65,22 @@ EquationMap::EquationMap(const std::vector<bool>& prescribed, std::vector<Elimin
     dependents_.push_back(std::move(dep));
   }
 
+  const auto n_prescribed = static_cast<std::size_t>(std::count(prescribed_.begin(), prescribed_.end(), true));
+  dof_.reserve(prescribed.size() - n_prescribed - dependents_.size());
   for (int d = 0; d < n; ++d) {
-    if (prescribed_[d] || dependent_index_[d] >= 0) continue;
+    if (prescribed_[d] || is_dependent(d)) continue;
     equation_[d] = static_cast<int>(dof_.size());
     dof_.push_back(d);
   }
 
-  weight_offset_.assign(n + 1, 0);
-  for (int d = 0; d < n; ++d) {
-    if (equation_[d] >= 0) {
-      weights_.push_back({equation_[d], 1.0});
-    } else if (const int k = dependent_index_[d]; k >= 0) {
-      for (const auto& [m, c] : dependents_[k].expansion)
-        if (equation_[m] >= 0) weights_.push_back({equation_[m], c});
-    }
-    weight_offset_[d + 1] = static_cast<int>(weights_.size());
+  // T's rows of the dependent dofs, in the order of dependents_.
+  if (dependents_.empty()) return;
+  weight_offset_.assign(dependents_.size() + 1, 0);
+  for (std::size_t k = 0; k < dependents_.size(); ++k) {
+    for (const auto& [m, c] : dependents_[k].expansion)
+      if (equation_[m] >= 0) weights_.push_back({equation_[m], c});
+    weight_offset_[k + 1] = static_cast<int>(weights_.size());
   }
-}
-
-std::span<const EquationWeight> EquationMap::weights(int dof) const {
-  return {weights_.data() + weight_offset_[dof], weights_.data() + weight_offset_[dof + 1]};
 }
 
 void EquationMap::update_dependents(Eigen::VectorXd& u) const {

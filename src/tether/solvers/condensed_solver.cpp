@@ -82,9 +82,7 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
     if (!interface_.empty() && (interface_.front() < 0 || static_cast<std::size_t>(interface_.back()) >= n))
       throw SolverError("condensed solver: an interface equation is outside the matrix");
     in_interface_.assign(n, 0);
-    position_.assign(n, -1);
-    for (std::size_t k = 0; k < interface_.size(); ++k)
-      in_interface_[static_cast<std::size_t>(interface_[k])] = 1, position_[static_cast<std::size_t>(interface_[k])] = static_cast<int>(k);
+    for (int e : interface_) in_interface_[static_cast<std::size_t>(e)] = 1;
     bulk_valid_ = false;
   }
   if (statistics_.gave_up || interface_.empty()) return use_fallback(a, symmetric);
@@ -134,23 +132,37 @@ void CondensedSolver::factorize(const SparseMatrix& a, bool symmetric) {
   bool mirror = symmetric;
   for (int j : interface_)
     if (a.outerIndexPtr()[j + 1] > a.outerIndexPtr()[j] && a.innerIndexPtr()[a.outerIndexPtr()[j]] < j) mirror = false;
-  for (int j : interface_)
-    for (int k = a.outerIndexPtr()[j]; k < a.outerIndexPtr()[j + 1]; ++k) {
+  // Column j's interface rows ascend, as interface_ does: their positions
+  // in it are found by one walk along it per column (no table over all
+  // equations), from j's own when the column holds no row above j (a lower
+  // triangle); the reserved block puts every later interface row in the
+  // column, so the walk mostly moves one place per entry.
+  const int* interface = interface_.data();
+  const auto m = static_cast<int>(interface_.size());
+  for (int pj = 0; pj < m; ++pj) {
+    const int j = interface[pj];
+    const int begin = a.outerIndexPtr()[j], end = a.outerIndexPtr()[j + 1];
+    int pi = begin < end && a.innerIndexPtr()[begin] >= j ? pj : 0;
+    for (int k = begin; k < end; ++k) {
       const int i = a.innerIndexPtr()[k];
       if (!in_interface_[static_cast<std::size_t>(i)]) continue;
-      const int pi = position_[static_cast<std::size_t>(i)], pj = position_[static_cast<std::size_t>(j)];
+      while (interface[pi] != i) ++pi;
       s(pi, pj) += a.valuePtr()[k];
       if (mirror && i != j) s(pj, pi) += a.valuePtr()[k];
+      ++pi;
     }
+  }
   if (!factorize_interface(std::move(s), a, symmetric)) return use_fallback(a, symmetric);
   if (reused) ++statistics_.reuses, statistics_.promised += keep;  // served by the interface system alone
 }
 
 DualElimination CondensedSolver::interface_elimination(const SparseMatrix& a) const {
   DualElimination e = choose_dual_elimination(a, dual_nodes_, &interface_);
-  const auto at = [&](int& equation) {
-    equation = position_[static_cast<std::size_t>(equation)];
-    return equation >= 0;
+  const auto at = [&](int& equation) {  // to its position in interface_; false when it is not there
+    const auto it = std::lower_bound(interface_.begin(), interface_.end(), equation);
+    if (it == interface_.end() || *it != equation) return false;
+    equation = static_cast<int>(it - interface_.begin());
+    return true;
   };
   for (int& equation : e.eliminated)
     if (!at(equation)) return {};

@@ -124,9 +124,8 @@ class CondensedSolver final : public LinearSolver {
   /// positions; empty when a named equation is outside the interface.
   [[nodiscard]] DualElimination interface_elimination(const SparseMatrix& a) const;
 
-  std::vector<int> interface_;
+  std::vector<int> interface_;      ///< ascending, unique
   std::vector<char> in_interface_;  ///< per equation (sized at the first factorize)
-  std::vector<int> position_;       ///< per equation: index in interface_, -1 in R
   std::unique_ptr<LinearSolver> fallback_;
   std::unique_ptr<MumpsSchur> bulk_;
   bool bulk_valid_ = false;       ///< bulk_ holds a factorization (of the R entries it compares against)
