@@ -13,6 +13,8 @@
 
 using namespace tether;
 using tether::testing::DenseBlock;
+using tether::testing::grid_list;
+using tether::testing::grid_prescribed;
 using tether::testing::grid_quads;
 using tether::testing::Rewiring;
 using tether::testing::Spring;
@@ -26,6 +28,23 @@ bool same_bits(const SparseMatrix& a, const SparseMatrix& b) {
          std::memcmp(a.valuePtr(), b.valuePtr(), sizeof(double) * static_cast<std::size_t>(a.nonZeros())) == 0;
 }
 
+/// Assembles `held` (springs s01, s23 and a re-pairing spring that moves at
+/// the first assembly), expects the move placed by a relocation, without a
+/// rebuild, and the tangent then equal, bit for bit, to that of a fresh
+/// assembler over s01, s23 and `twin` (a re-pairing spring like held's).
+void expect_move_placed(Assembler& held, Spring& s01, Spring& s23, Rewiring& twin) {
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(4, 0.0, 1.0), r;
+  const EvaluationState state{u, u};
+  held.assemble(state, r, true);
+  EXPECT_FALSE(held.update_connectivity(state));  // relocated, no rebuild
+  EXPECT_EQ(held.relocations(), 1);
+  held.assemble(state, r, true);
+  Assembler fresh({&s01, &s23, &twin}, EquationMap(std::vector<bool>(4, false)), {1, 2, 3});
+  fresh.update_connectivity(state);
+  fresh.assemble(state, r, true);
+  EXPECT_TRUE(same_bits(held.tangent(), fresh.tangent()));
+}
+
 }  // namespace
 
 TEST(AssemblerMemory, LowerTriangleKeepsOnePositionPerPairOfNodes) {
@@ -37,12 +56,8 @@ TEST(AssemblerMemory, LowerTriangleKeepsOnePositionPerPairOfNodes) {
   std::vector<DenseBlock> quads = grid_quads(nx, ny);
   quads.emplace_back(std::vector<int>{2 * 6, 2 * 6 + 1, 2 * 7, 2 * 7 + 1, 2 * 8, 2 * 8 + 1, 2 * 7, 2 * 7 + 1}, 9.5);
   Spring spring(2 * 12, 2 * 14, 5.0);
-  std::vector<Contribution*> list;
-  for (auto& q : quads) list.push_back(&q);
-  list.push_back(&spring);
-  std::vector<bool> prescribed(n, false);
-  prescribed[0] = prescribed[1] = true;
-  prescribed[2 * 10] = true;
+  const std::vector<Contribution*> list = grid_list(quads, spring);
+  const std::vector<bool> prescribed = grid_prescribed(n);
   Assembler full(list, EquationMap(prescribed)), lower(list, EquationMap(prescribed), {}, true);
   const auto blocked = static_cast<std::size_t>(lower.n_blocked());
   ASSERT_EQ(blocked, static_cast<std::size_t>(full.n_blocked()));
@@ -71,16 +86,7 @@ TEST(AssemblerMemory, HeldLinearContributionsKeepNoDofList) {
   EXPECT_EQ(held.n_kept_dofs(), 6u);  // before set_linear: every list
   held.set_linear({1, 1, 0}, false);
   EXPECT_EQ(held.n_kept_dofs(), 2u);  // was 6
-  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(4, 0.0, 1.0), r;
-  const EvaluationState state{u, u};
-  held.assemble(state, r, true);
-  EXPECT_FALSE(held.update_connectivity(state));  // relocated, no rebuild
-  EXPECT_EQ(held.relocations(), 1);
-  held.assemble(state, r, true);
-  Assembler fresh({&s01, &s23, &moving_too}, EquationMap(std::vector<bool>(4, false)), {1, 2, 3});
-  fresh.update_connectivity(state);
-  fresh.assemble(state, r, true);
-  EXPECT_TRUE(same_bits(held.tangent(), fresh.tangent()));
+  expect_move_placed(held, s01, s23, moving_too);
 }
 
 TEST(AssemblerMemory, AContributionNoLongerHeldLinearIsWatchedAgain) {
@@ -94,14 +100,5 @@ TEST(AssemblerMemory, AContributionNoLongerHeldLinearIsWatchedAgain) {
   EXPECT_EQ(held.n_kept_dofs(), 0u);
   held.set_linear({1, 1, 0}, false);
   EXPECT_EQ(held.n_kept_dofs(), 2u);
-  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(4, 0.0, 1.0), r;
-  const EvaluationState state{u, u};
-  held.assemble(state, r, true);
-  EXPECT_FALSE(held.update_connectivity(state));
-  EXPECT_EQ(held.relocations(), 1);
-  held.assemble(state, r, true);
-  Assembler fresh({&s01, &s23, &moving_too}, EquationMap(std::vector<bool>(4, false)), {1, 2, 3});
-  fresh.update_connectivity(state);
-  fresh.assemble(state, r, true);
-  EXPECT_TRUE(same_bits(held.tangent(), fresh.tangent()));
+  expect_move_placed(held, s01, s23, moving_too);
 }

@@ -10,6 +10,8 @@
 
 using namespace tether;
 using tether::testing::DenseBlock;
+using tether::testing::grid_list;
+using tether::testing::grid_prescribed;
 using tether::testing::grid_quads;
 using tether::testing::Rewiring;
 using tether::testing::Spring;
@@ -54,12 +56,8 @@ TEST(Assembler, NodeBlockScatterMatchesDenseAssembly) {
   const int nx = 5, ny = 3, n_nodes = nx * ny, n = 2 * n_nodes;
   std::vector<DenseBlock> quads = grid_quads(nx, ny);
   Spring spring(2 * 12, 2 * 14, 5.0);
-  std::vector<Contribution*> list;
-  for (auto& q : quads) list.push_back(&q);
-  list.push_back(&spring);
-  std::vector<bool> prescribed(n, false);
-  prescribed[0] = prescribed[1] = true;
-  prescribed[2 * 10] = true;
+  const std::vector<Contribution*> list = grid_list(quads, spring);
+  const std::vector<bool> prescribed = grid_prescribed(n);
   const EquationMap map(prescribed);
   Assembler assembler(list, map);
   EXPECT_EQ(assembler.n_blocked(), 3);
@@ -93,12 +91,8 @@ TEST(Assembler, LowerTriangleIsTheFullTangentsLowerTriangleBitForBit) {
   const int nx = 5, ny = 3, n_nodes = nx * ny, n = 2 * n_nodes;
   std::vector<DenseBlock> quads = grid_quads(nx, ny);
   Spring spring(2 * 12, 2 * 14, 5.0);
-  std::vector<Contribution*> list;
-  for (auto& q : quads) list.push_back(&q);
-  list.push_back(&spring);
-  std::vector<bool> prescribed(n, false);
-  prescribed[0] = prescribed[1] = true;
-  prescribed[2 * 10] = true;
+  const std::vector<Contribution*> list = grid_list(quads, spring);
+  const std::vector<bool> prescribed = grid_prescribed(n);
   EliminationRow tie;
   tie.terms = {{15, 2.0}, {2 * 9, -0.5}};
   tie.owner = "tie";

@@ -112,4 +112,21 @@ inline std::vector<DenseBlock> grid_quads(int nx, int ny) {
   return quads;
 }
 
+/// The contribution list of the grid tests: every quad, then the spring
+/// (pointers into `quads`: do not resize it afterwards).
+inline std::vector<Contribution*> grid_list(std::vector<DenseBlock>& quads, Spring& spring) {
+  std::vector<Contribution*> list;
+  for (auto& q : quads) list.push_back(&q);
+  list.push_back(&spring);
+  return list;
+}
+
+/// The grid tests' prescribed dofs: node 0 in x and y, node 10 in x only.
+inline std::vector<bool> grid_prescribed(int n_dofs) {
+  std::vector<bool> prescribed(static_cast<std::size_t>(n_dofs), false);
+  prescribed[0] = prescribed[1] = true;
+  prescribed[2 * 10] = true;
+  return prescribed;
+}
+
 }  // namespace tether::testing
